@@ -1,0 +1,185 @@
+"""The effect registry: which physics blocks a scene runs, and the outputs each one produces.
+
+A `Block` declares the bearing types it applies to, the scene effect that switches it on
+(`enabled_by`, or None for a block every scene of those types runs), the blocks it needs
+(`requires`), its output keys with their SI units (`outputs`), and `compute`, a pure function
+(inputs, settings, results so far) → {output key: array}. `resolve` returns, in dependency order,
+exactly the blocks a scene asks for: a block no named effect reaches is never called, so it is
+never traced or compiled.
+
+New physics plugs in by `register(Block(...))` in its own module's adapter below.
+"""
+
+import dataclasses
+from collections.abc import Callable
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+
+from . import hertz
+from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
+from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
+
+BALL_TYPES = ("deep_groove_ball", "angular_contact_ball")
+
+# ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
+ISO76_BALL_PRESSURE_LIMIT = 4.2e9  # Pa
+
+
+class SceneInputs(eqx.Module):
+    """Everything numeric a scene feeds the physics: the pytree `jax.grad` and `vmap` act on."""
+
+    bearing: BallBearing
+    operating: Operating
+    lubricant: Lubricant | None = None
+
+
+@dataclasses.dataclass(frozen=True)
+class Output:
+    """One output key: `unit` of the SI value in JSON, `display` unit of the report."""
+
+    key: str
+    unit: str
+    display: str
+    description: str
+
+
+@dataclasses.dataclass(frozen=True)
+class Block:
+    name: str
+    bearing_types: tuple[str, ...]
+    enabled_by: tuple[str, object] | None  # (effect key, value) that switches it on; None: always
+    requires: tuple[str, ...]
+    outputs: tuple[Output, ...]
+    compute: Callable[[SceneInputs, dict, dict], dict]
+
+
+REGISTRY: dict[str, Block] = {}
+
+
+def register(block: Block) -> Block:
+    """Add a block to the registry (its name must be new)."""
+    if block.name in REGISTRY:
+        raise ValueError(f"block {block.name!r} is already registered")
+    REGISTRY[block.name] = block
+    return block
+
+
+def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
+    """Blocks to run, in dependency order, and the named effects no registered block provides.
+
+    `effects` maps effect names to their scene values (false / absent means off).
+    """
+    wanted = [b for b in REGISTRY.values() if bearing_type in b.bearing_types and b.enabled_by is None]
+    provided = set()
+    for block in REGISTRY.values():
+        if bearing_type in block.bearing_types and block.enabled_by is not None:
+            effect, value = block.enabled_by
+            if effect in effects and effects[effect] == value and type(effects[effect]) is type(value):
+                wanted.append(block)
+                provided.add(effect)
+    missing = [name if value is True else f"{name} = {value!r}"
+               for name, value in effects.items() if value is not False and name not in provided]
+    ordered: list[Block] = []
+
+    def visit(block: Block, chain: tuple[str, ...]):
+        if block in ordered:
+            return
+        if block.name in chain:
+            raise ValueError(f"blocks require each other in a cycle: {' → '.join(chain + (block.name,))}")
+        for name in block.requires:
+            visit(REGISTRY[name], chain + (block.name,))
+        ordered.append(block)
+
+    for block in wanted:
+        visit(block, ())
+    return ordered, missing
+
+
+def outputs_of(blocks) -> dict[str, Output]:
+    """{key: Output} for the given blocks."""
+    return {out.key: out for block in blocks for out in block.outputs}
+
+
+# ---------------------------------------------------------------------------------------------
+# Ball bearings: raceway contact geometry and Hertz constants at the free contact angle.
+
+
+def _raceway_contact(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    bearing = inputs.bearing
+    method = settings.get("hertz", "exact")
+    angle = jnp.asarray(bearing.free_contact_angle)
+    modulus = ball_raceway_modulus(bearing)
+    out = {
+        "geometry.free_contact_angle": angle,
+        "geometry.radial_clearance": radial_clearance(bearing),
+        "geometry.groove_centre_distance": groove_curvature_centre_distance(bearing),
+        "geometry.diameter_ratio": diameter_ratio(bearing, angle),
+        "geometry.effective_modulus": modulus,
+    }
+    constants = {}
+    for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)):
+        curvature_sum, curvature_difference = curvature(bearing, angle)
+        unit = hertz.point_contact(1.0, curvature_sum, curvature_difference, modulus, method)
+        # p₀ ∝ Q^{1/3}: the load that reaches the ISO 76 limit follows from p₀ at 1 N.
+        limit = (ISO76_BALL_PRESSURE_LIMIT / unit.max_pressure) ** 3
+        constants[side] = unit.load_deflection_constant
+        out |= {
+            f"hertz.{side}.curvature_sum": curvature_sum,
+            f"hertz.{side}.curvature_difference": curvature_difference,
+            f"hertz.{side}.ellipticity": unit.ellipticity,
+            f"hertz.{side}.load_deflection_constant": unit.load_deflection_constant,
+            f"hertz.{side}.static_limit_load": limit,
+        }
+    # Both contacts in series: K_n = (K_i^{-2/3} + K_o^{-2/3})^{-3/2} (Harris eq. 7.4).
+    out["hertz.combined_load_deflection_constant"] = (
+        constants["inner"] ** (-2.0 / 3.0) + constants["outer"] ** (-2.0 / 3.0)) ** -1.5
+    return out
+
+
+def _side_outputs(side):
+    return (
+        Output(f"hertz.{side}.curvature_sum", "1/m", "1/mm", f"curvature sum Σρ, {side}"),
+        Output(f"hertz.{side}.curvature_difference", "", "", f"curvature difference F(ρ), {side}"),
+        Output(f"hertz.{side}.ellipticity", "", "", f"ellipticity κ = a/b, {side}"),
+        Output(f"hertz.{side}.load_deflection_constant", "N/m**1.5", "N/mm**1.5", f"load–deflection constant K (Q = K δ^1.5), {side}"),
+        Output(f"hertz.{side}.static_limit_load", "N", "kN", f"ball load at p0 = 4.2 GPa (ISO 76), {side}"),
+    )
+
+
+register(Block(
+    name="raceway_contact",
+    bearing_types=BALL_TYPES,
+    enabled_by=None,
+    requires=(),
+    outputs=(
+        Output("geometry.free_contact_angle", "rad", "deg", "free contact angle α0"),
+        Output("geometry.radial_clearance", "m", "um", "diametral radial clearance Gr"),
+        Output("geometry.groove_centre_distance", "m", "mm", "groove curvature centre distance (fi+fo−1)Dw"),
+        Output("geometry.diameter_ratio", "", "", "γ = Dw cos α0 / dm"),
+        Output("geometry.effective_modulus", "Pa", "GPa", "effective modulus E' of ball and ring"),
+        *_side_outputs("inner"),
+        *_side_outputs("outer"),
+        Output("hertz.combined_load_deflection_constant", "N/m**1.5", "N/mm**1.5",
+               "combined constant Kn, inner and outer in series"),
+    ),
+    compute=_raceway_contact,
+))
+
+
+def evaluate(blocks, settings: dict) -> Callable[[SceneInputs], dict]:
+    """The pure function inputs → {output key: array} that runs exactly `blocks` in order."""
+
+    def run(inputs: SceneInputs) -> dict:
+        results: dict = {}
+        for block in blocks:
+            results |= block.compute(inputs, settings, results)
+        return results
+
+    return run
+
+
+def compiled(blocks, settings: dict, inputs: SceneInputs):
+    """`jax.jit` of `evaluate(...)`, compiled ahead of time for `inputs` (the compile is timed by the caller)."""
+    return jax.jit(evaluate(blocks, settings)).lower(inputs).compile()

@@ -1,0 +1,247 @@
+"""Parameter pytrees: materials, lubricants, ball bearings, operating points.
+
+Every physical number is a float64 array leaf (so `jax.grad` reaches it); counts and choices are
+static fields. Validation runs at construction on concrete values and raises `ValueError` naming
+the parameter and its allowed range; inside `jit`/`vmap` (traced values) it is skipped.
+
+Conventions (fixed for every block and output):
+
+* SI units inside: m, N, Pa, rad, rad/s, kg/m³, Pa·s.
+* z is the bearing axis; x and y are radial. The outer ring is fixed; loads
+  [Fx, Fy, Fz, Mx, My] act on the inner ring; moments and rotations are right-handed about x, y.
+* Ball azimuth ψ is measured from +x towards +y.
+* Displacement [δx, δy, δz, θx, θy] of the inner ring is measured from the position where the
+  rings are concentric and every ball just touches both raceways at its free contact angle.
+"""
+
+import math
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+BALL_BEARING_KINDS = ("deep_groove_ball", "angular_contact_ball")
+
+
+def _as_float(value):
+    """Float64 array leaf; traced values pass through untouched."""
+    if isinstance(value, jax.core.Tracer):
+        return value
+    return np.asarray(value, dtype=np.float64)
+
+
+def _is_concrete(value) -> bool:
+    return not isinstance(value, jax.core.Tracer)
+
+
+def check_range(name: str, value, *, low=None, high=None, low_open=True, high_open=True, unit="", why=""):
+    """Raise ValueError unless every element of `value` is finite and within (low, high).
+
+    `low_open`/`high_open` choose strict or inclusive bounds; `unit` and `why` (the reason for a
+    bound) are only for the message.
+    Traced values are not checked (validation happens at construction on concrete inputs).
+    """
+    if value is None or not _is_concrete(value):
+        return
+    array = np.asarray(value, dtype=np.float64)
+    lo = "" if low is None else f"{'>' if low_open else '≥'} {low:g}{unit}"
+    hi = "" if high is None else f"{'<' if high_open else '≤'} {high:g}{unit}"
+    allowed = " and ".join(part for part in (lo, hi) if part) or "finite"
+    if why:
+        allowed += f" ({why})"
+    shown = np.array2string(array, precision=6) if array.ndim else f"{float(array):g}"
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{name} must be a finite number ({allowed}), got {shown}")
+    too_low = low is not None and np.any(array <= low if low_open else array < low)
+    too_high = high is not None and np.any(array >= high if high_open else array > high)
+    if too_low or too_high:
+        raise ValueError(f"{name} must be {allowed}, got {shown}{unit}")
+
+
+class Material(eqx.Module):
+    """Isotropic elastic solid."""
+
+    elastic_modulus: np.ndarray = eqx.field(converter=_as_float)  # E [Pa]
+    poisson_ratio: np.ndarray = eqx.field(converter=_as_float)  # ν [-]
+    density: np.ndarray = eqx.field(converter=_as_float)  # ρ [kg/m³]
+    name: str = eqx.field(static=True, default="custom")
+
+    def __check_init__(self):
+        check_range("material.elastic_modulus", self.elastic_modulus, low=0.0, unit=" Pa")
+        check_range("material.poisson_ratio", self.poisson_ratio, low=-1.0, high=0.5)
+        check_range("material.density", self.density, low=0.0, unit=" kg/m^3")
+
+
+# AISI 52100 / GCr15 through-hardened bearing steel (Harris & Kotzalas vol. 1, table 6.x;
+# 208 GPa reproduces seed 002's a = 9.234 mm within 0.3 %).
+BEARING_STEEL = Material(208e9, 0.3, 7830.0, name="bearing_steel")
+# Hot-isostatically pressed silicon nitride for hybrid bearings (typical catalogue values).
+SILICON_NITRIDE = Material(310e9, 0.26, 3200.0, name="silicon_nitride")
+MATERIALS = {"bearing_steel": BEARING_STEEL, "52100": BEARING_STEEL, "gcr15": BEARING_STEEL,
+             "silicon_nitride": SILICON_NITRIDE}
+
+
+class Lubricant(eqx.Module):
+    """Newtonian lubricant at its operating temperature."""
+
+    viscosity: np.ndarray = eqx.field(converter=_as_float)  # dynamic viscosity η₀ [Pa·s]
+    pressure_viscosity: np.ndarray = eqx.field(converter=_as_float)  # α [1/Pa]
+    density: np.ndarray = eqx.field(converter=_as_float)  # ρ₀ [kg/m³]
+    name: str = eqx.field(static=True, default="custom")
+
+    def __check_init__(self):
+        check_range("lubricant.viscosity", self.viscosity, low=0.0, unit=" Pa*s")
+        check_range("lubricant.pressure_viscosity", self.pressure_viscosity, low=0.0, low_open=False, unit=" 1/Pa")
+        check_range("lubricant.density", self.density, low=0.0, unit=" kg/m^3")
+
+
+def wooster_pressure_viscosity(viscosity):
+    """Pressure–viscosity coefficient α [1/Pa] of a mineral oil from its viscosity η₀ [Pa·s].
+
+    Wooster's correlation α = (0.6 + 0.965 log₁₀ η₀[cP]) × 1e-8 Pa⁻¹ (Stachowiak & Batchelor,
+    *Engineering Tribology*, eq. 2.8). A rough estimate: replace it with supplier data.
+    """
+    return (0.6 + 0.965 * math.log10(viscosity * 1e3)) * 1e-8
+
+
+ISO_VG_GRADES = (32, 46, 68, 100, 150, 220)
+MINERAL_OIL_DENSITY = 870.0  # kg/m³ at 40 °C, typical paraffinic mineral oil
+
+
+def iso_vg_oil(grade: int) -> Lubricant:
+    """Mineral oil of ISO viscosity grade `grade` at 40 °C.
+
+    η₀ = ν₄₀ ρ with ν₄₀ = grade mm²/s (ISO 3448 mid-point), ρ = 870 kg/m³; α from Wooster.
+    """
+    if grade not in ISO_VG_GRADES:
+        raise ValueError(f"lubricant.preset ISO VG grade must be one of {ISO_VG_GRADES}, got {grade}")
+    viscosity = grade * 1e-6 * MINERAL_OIL_DENSITY
+    return Lubricant(viscosity, wooster_pressure_viscosity(viscosity), MINERAL_OIL_DENSITY, name=f"iso_vg_{grade}")
+
+
+LUBRICANTS = {f"iso_vg_{grade}": iso_vg_oil(grade) for grade in ISO_VG_GRADES}
+
+
+class BallBearing(eqx.Module):
+    """Geometry and materials of a deep-groove or angular-contact ball bearing.
+
+    Use `ball_bearing(...)` to build one from a groove radius or ratio and a contact angle or a
+    radial clearance; the fields hold the canonical set.
+    """
+
+    ball_diameter: np.ndarray = eqx.field(converter=_as_float)  # D_w [m]
+    pitch_diameter: np.ndarray = eqx.field(converter=_as_float)  # d_m [m]
+    inner_groove_ratio: np.ndarray = eqx.field(converter=_as_float)  # f_i = r_i / D_w [-]
+    outer_groove_ratio: np.ndarray = eqx.field(converter=_as_float)  # f_o = r_o / D_w [-]
+    free_contact_angle: np.ndarray = eqx.field(converter=_as_float)  # α₀ [rad]
+    ball_material: Material
+    ring_material: Material
+    ball_count: int = eqx.field(static=True)
+    kind: str = eqx.field(static=True, default="angular_contact_ball")
+    bore: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
+    outer_diameter: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
+    dynamic_load_rating: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
+
+    def __check_init__(self):
+        if self.kind not in BALL_BEARING_KINDS:
+            raise ValueError(f"bearing.type must be one of {BALL_BEARING_KINDS}, got {self.kind!r}")
+        if not isinstance(self.ball_count, int) or isinstance(self.ball_count, bool) or self.ball_count < 3:
+            raise ValueError(f"bearing.balls must be an integer ≥ 3, got {self.ball_count!r}")
+        check_range("bearing.ball_diameter", self.ball_diameter, low=0.0, unit=" m")
+        check_range("bearing.pitch_diameter", self.pitch_diameter, low=0.0, unit=" m")
+        check_range("bearing.inner_groove_ratio", self.inner_groove_ratio, low=0.5, high=1.0, high_open=False)
+        check_range("bearing.outer_groove_ratio", self.outer_groove_ratio, low=0.5, high=1.0, high_open=False)
+        check_range("bearing.contact_angle", self.free_contact_angle, low=0.0, high=math.pi / 2, low_open=False, unit=" rad")
+        check_range("bearing.dynamic_load_rating", self.dynamic_load_rating, low=0.0, unit=" N")
+        if _is_concrete(self.ball_diameter) and _is_concrete(self.pitch_diameter):
+            largest = float(self.pitch_diameter) * math.sin(math.pi / self.ball_count)
+            check_range("bearing.ball_diameter", self.ball_diameter, low=0.0, high=largest, unit=" m",
+                        why="pitch_diameter·sin(π/balls), so that the balls fit on the pitch circle")
+        for name in ("bore", "outer_diameter"):
+            check_range(f"bearing.{name}", getattr(self, name), low=0.0, unit=" m")
+        if self.bore is not None and _is_concrete(self.bore):
+            check_range("bearing.bore", self.bore, low=0.0,
+                        high=float(self.pitch_diameter - self.ball_diameter), unit=" m", why="pitch_diameter − ball_diameter")
+        if self.outer_diameter is not None and _is_concrete(self.outer_diameter):
+            check_range("bearing.outer_diameter", self.outer_diameter,
+                        low=float(self.pitch_diameter + self.ball_diameter), unit=" m", why="pitch_diameter + ball_diameter")
+
+
+def groove_curvature_centre_distance(bearing: BallBearing):
+    """Distance B·D_w = (f_i + f_o − 1) D_w [m] between the two groove curvature centres."""
+    return (bearing.inner_groove_ratio + bearing.outer_groove_ratio - 1.0) * bearing.ball_diameter
+
+
+def radial_clearance(bearing: BallBearing):
+    """Diametral radial clearance G_r = 2 B D_w (1 − cos α₀) [m] (Harris eq. 2.14)."""
+    return 2.0 * groove_curvature_centre_distance(bearing) * (1.0 - jnp.cos(bearing.free_contact_angle))
+
+
+def ball_bearing(
+    *,
+    ball_diameter,
+    pitch_diameter,
+    balls: int,
+    kind: str = "angular_contact_ball",
+    inner_groove_ratio=None,
+    outer_groove_ratio=None,
+    inner_groove_radius=None,
+    outer_groove_radius=None,
+    contact_angle=None,
+    radial_clearance=None,
+    ball_material: Material = BEARING_STEEL,
+    ring_material: Material = BEARING_STEEL,
+    bore=None,
+    outer_diameter=None,
+    dynamic_load_rating=None,
+) -> BallBearing:
+    """Build a `BallBearing` from the quantities a drawing gives (SI units).
+
+    Give each groove as a ratio f = r/D_w or a radius r [m], and either the free contact angle
+    α₀ [rad] or the diametral radial clearance G_r [m]; then cos α₀ = 1 − G_r/(2(f_i + f_o − 1)D_w)
+    (Harris eq. 2.14; seed 002). Raises ValueError naming the offending parameter.
+    """
+    check_range("bearing.ball_diameter", ball_diameter, low=0.0, unit=" m")
+    for side, ratio, radius in (("inner", inner_groove_ratio, inner_groove_radius),
+                                ("outer", outer_groove_ratio, outer_groove_radius)):
+        if (ratio is None) == (radius is None):
+            raise ValueError(f"bearing: give exactly one of {side}_groove_ratio and {side}_groove_radius")
+        if radius is not None:
+            check_range(f"bearing.{side}_groove_radius", radius, low=0.5 * float(ball_diameter), unit=" m", why="the ball radius")
+    fi = inner_groove_ratio if inner_groove_ratio is not None else inner_groove_radius / ball_diameter
+    fo = outer_groove_ratio if outer_groove_ratio is not None else outer_groove_radius / ball_diameter
+    if (contact_angle is None) == (radial_clearance is None):
+        raise ValueError("bearing: give exactly one of contact_angle and radial_clearance")
+    if radial_clearance is not None:
+        check_range("bearing.inner_groove_ratio", fi, low=0.5, high=1.0, high_open=False)
+        check_range("bearing.outer_groove_ratio", fo, low=0.5, high=1.0, high_open=False)
+        distance = (fi + fo - 1.0) * ball_diameter
+        check_range("bearing.radial_clearance", radial_clearance, low=0.0, high=2.0 * float(distance),
+                    low_open=False, unit=" m", why="2 (f_i + f_o − 1) D_w")
+        contact_angle = np.arccos(1.0 - radial_clearance / (2.0 * distance))
+    return BallBearing(
+        ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, inner_groove_ratio=fi,
+        outer_groove_ratio=fo, free_contact_angle=contact_angle, ball_material=ball_material,
+        ring_material=ring_material, ball_count=balls, kind=kind, bore=bore,
+        outer_diameter=outer_diameter, dynamic_load_rating=dynamic_load_rating,
+    )
+
+
+class Operating(eqx.Module):
+    """Operating point: ring speeds and the load on the inner ring (outer ring fixed in space)."""
+
+    inner_speed: np.ndarray = eqx.field(converter=_as_float)  # ω_i [rad/s]
+    outer_speed: np.ndarray = eqx.field(converter=_as_float)  # ω_o [rad/s]
+    force: np.ndarray = eqx.field(converter=_as_float)  # [Fx, Fy, Fz] [N]
+    moment: np.ndarray = eqx.field(converter=_as_float)  # [Mx, My] [N·m]
+
+    def __check_init__(self):
+        check_range("operating.inner_speed", self.inner_speed, unit=" rad/s")
+        check_range("operating.outer_speed", self.outer_speed, unit=" rad/s")
+        check_range("operating.force", self.force, unit=" N")
+        check_range("operating.moment", self.moment, unit=" N*m")
+        for name, size in (("force", 3), ("moment", 2)):
+            value = getattr(self, name)
+            if _is_concrete(value) and np.shape(value)[-1:] != (size,):
+                raise ValueError(f"operating.{name} must have {size} components, got shape {np.shape(value)}")

@@ -1,0 +1,49 @@
+"""Plots of a run (matplotlib, Agg backend): one figure per scene, chosen by its main block."""
+
+import jax
+import jax.numpy as jnp
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from . import hertz  # noqa: E402
+from .raceway_contact import ball_raceway_modulus, inner_curvature, outer_curvature  # noqa: E402
+
+
+def plot_hertz_load_curves(result, figure):
+    """Peak pressure and approach of the inner and outer contacts against ball load (free angle)."""
+    bearing = result.model.inputs.bearing
+    method = result.model.settings.get("hertz", "exact")
+    limit = max(result.values["hertz.inner.static_limit_load"], result.values["hertz.outer.static_limit_load"])
+    loads = jnp.linspace(0.0, float(limit), 200)
+    modulus = ball_raceway_modulus(bearing)
+    pressure_axis, approach_axis = figure.subplots(1, 2)
+    for side, curvature, style in (("inner", inner_curvature, "-"), ("outer", outer_curvature, "--")):
+        curvature_sum, difference = curvature(bearing, bearing.free_contact_angle)
+        contact = jax.vmap(lambda q: hertz.point_contact(q, curvature_sum, difference, modulus, method))(loads)
+        pressure_axis.plot(loads / 1e3, contact.max_pressure / 1e9, style, label=f"{side} raceway")
+        approach_axis.plot(loads / 1e3, contact.approach * 1e6, style, label=f"{side} raceway")
+    pressure_axis.axhline(4.2, color="grey", lw=0.8)
+    pressure_axis.text(0.02 * float(limit) / 1e3, 4.25, "ISO 76 limit 4.2 GPa", fontsize=8)
+    pressure_axis.set(xlabel="ball load Q [kN]", ylabel="peak pressure p0 [GPa]", title="Hertz peak pressure")
+    approach_axis.set(xlabel="ball load Q [kN]", ylabel="approach δ [µm]", title="Hertz approach")
+    for axis in (pressure_axis, approach_axis):
+        axis.grid(alpha=0.3)
+        axis.legend()
+    figure.suptitle(f"{result.model.scene.title}: contacts at the free contact angle")
+
+
+# Block name → plot; the last block of a run that has one draws the figure.
+PLOTS = {"raceway_contact": plot_hertz_load_curves}
+
+
+def save_plot(result, path: str) -> None:
+    """Draw the plot of the run's main block into `path` (PNG, PDF or SVG by extension)."""
+    plotters = [PLOTS[block.name] for block in result.model.blocks if block.name in PLOTS]
+    if not plotters:
+        raise ValueError("--plot: this scene has nothing to plot yet")
+    figure = plt.figure(figsize=(11, 4.5), layout="constrained")
+    plotters[-1](result, figure)
+    figure.savefig(path, dpi=120)
+    plt.close(figure)

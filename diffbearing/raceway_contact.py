@@ -1,0 +1,49 @@
+"""Ball–raceway contact geometry: curvature sums and Hertz constants of the two contacts.
+
+physics.md §1 (Harris & Kotzalas vol. 1, eqs. 2.27–2.34), with γ = D_w cos α / d_m:
+
+    inner: Σρ_i = (1/D_w)(4 − 1/f_i + 2γ/(1−γ)),  F_i = (1/f_i + 2γ/(1−γ)) / (4 − 1/f_i + 2γ/(1−γ))
+    outer: Σρ_o = (1/D_w)(4 − 1/f_o − 2γ/(1+γ)),  F_o = (1/f_o − 2γ/(1+γ)) / (4 − 1/f_o − 2γ/(1+γ))
+
+Functions take the bearing pytree first, so `jax.grad(f)(bearing, ...)` reaches its geometry.
+"""
+
+import jax.numpy as jnp
+
+from .hertz import effective_modulus, load_deflection_constant
+from .params import BallBearing
+
+
+def diameter_ratio(bearing: BallBearing, contact_angle):
+    """γ = D_w cos α / d_m [-] at contact angle α [rad]."""
+    return bearing.ball_diameter * jnp.cos(contact_angle) / bearing.pitch_diameter
+
+
+def inner_curvature(bearing: BallBearing, contact_angle):
+    """(Σρ_i [1/m], F(ρ)_i [-]) of the ball–inner-raceway contact at contact angle α [rad]."""
+    gamma = diameter_ratio(bearing, contact_angle)
+    raceway = 2.0 * gamma / (1.0 - gamma)
+    total = 4.0 - 1.0 / bearing.inner_groove_ratio + raceway
+    return total / bearing.ball_diameter, (1.0 / bearing.inner_groove_ratio + raceway) / total
+
+
+def outer_curvature(bearing: BallBearing, contact_angle):
+    """(Σρ_o [1/m], F(ρ)_o [-]) of the ball–outer-raceway contact at contact angle α [rad]."""
+    gamma = diameter_ratio(bearing, contact_angle)
+    raceway = 2.0 * gamma / (1.0 + gamma)
+    total = 4.0 - 1.0 / bearing.outer_groove_ratio - raceway
+    return total / bearing.ball_diameter, (1.0 / bearing.outer_groove_ratio - raceway) / total
+
+
+def ball_raceway_modulus(bearing: BallBearing):
+    """Effective modulus E' [Pa] of the ball against a ring (`hertz.effective_modulus`)."""
+    ball, ring = bearing.ball_material, bearing.ring_material
+    return effective_modulus(ball.elastic_modulus, ball.poisson_ratio, ring.elastic_modulus, ring.poisson_ratio)
+
+
+def contact_constants(bearing: BallBearing, inner_contact_angle, outer_contact_angle, method="exact"):
+    """Hertz load–deflection constants (K_i, K_o) [N/m^1.5] in Q = K δ^{3/2} at the given angles [rad]."""
+    modulus = ball_raceway_modulus(bearing)
+    inner = load_deflection_constant(*inner_curvature(bearing, inner_contact_angle), modulus, method)
+    outer = load_deflection_constant(*outer_curvature(bearing, outer_contact_angle), modulus, method)
+    return inner, outer

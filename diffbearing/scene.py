@@ -1,0 +1,192 @@
+"""Scenes: read a TOML scene, apply overrides, build the parameter pytrees, assemble the model.
+
+`load_scene(path, overrides)` → `Scene` (validated, SI); `build_model(scene)` → `Model` with the
+inputs pytree and exactly the blocks the scene's effects call for; `run_model(model)` compiles
+and runs it, timing both.
+"""
+
+import copy
+import dataclasses
+import importlib.resources
+import time
+import tomllib
+from pathlib import Path
+
+import jax
+import numpy as np
+
+from . import effects as effect_registry
+from .params import (BEARING_STEEL, LUBRICANTS, MATERIALS, Lubricant, Material, Operating, ball_bearing,
+                     wooster_pressure_viscosity)
+from .schema import lookup, validate
+
+DEFAULT_SCENE = "seed001_aero_acbb.toml"
+
+
+@dataclasses.dataclass(frozen=True)
+class Scene:
+    """A validated scene: `values` maps dotted keys to SI values; `sweep` is the raw [sweep] table."""
+
+    title: str
+    values: dict
+    sweep: dict | None
+    source: str
+
+    @property
+    def bearing_type(self) -> str:
+        return self.values["bearing.type"]
+
+    def table(self, name: str) -> dict:
+        """{key: value} of one table ("effects", "fidelity", ...)."""
+        prefix = name + "."
+        return {k[len(prefix):]: v for k, v in self.values.items() if k.startswith(prefix)}
+
+
+def parse_override(text: str) -> tuple[str, object]:
+    """'dotted.key=VALUE' → (key, value); VALUE is a TOML value, or else taken as a string."""
+    key, sep, raw = text.partition("=")
+    key = key.strip()
+    if not sep or not key:
+        raise ValueError(f"--set expects dotted.key=VALUE, got {text!r}")
+    try:
+        value = tomllib.loads(f"value = {raw}")["value"]
+    except tomllib.TOMLDecodeError:
+        value = raw.strip()
+    return key, value
+
+
+def apply_overrides(document: dict, overrides) -> dict:
+    """A copy of a parsed scene with each (dotted key, value) set; unknown keys raise ValueError."""
+    document = copy.deepcopy(document)
+    for key, value in overrides:
+        lookup(key)
+        table, _, name = key.rpartition(".")
+        target = document.setdefault(table, {}) if table else document
+        target[name] = value
+    return document
+
+
+def read_document(path: str | None) -> tuple[dict, str]:
+    """Parsed TOML of a scene file (the built-in default when `path` is None) and its name."""
+    if path is None:
+        text = importlib.resources.files("diffbearing.scenes").joinpath(DEFAULT_SCENE).read_text()
+        source = f"built-in example ({DEFAULT_SCENE})"
+    else:
+        file = Path(path)
+        if not file.is_file():
+            raise ValueError(f"scene file not found: {path}")
+        text, source = file.read_text(), str(file)
+    try:
+        return tomllib.loads(text), source
+    except tomllib.TOMLDecodeError as error:
+        raise ValueError(f"{source}: not valid TOML ({error})") from None
+
+
+def load_scene(path: str | None = None, overrides=()) -> Scene:
+    """Read, override and validate a scene; `overrides` holds 'dotted.key=VALUE' strings."""
+    document, source = read_document(path)
+    document = apply_overrides(document, [parse_override(text) for text in overrides])
+    values = validate(document)
+    sweep = document.get("sweep")
+    return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source)
+
+
+def _material(values: dict, prefix: str, default: Material) -> Material:
+    preset = values.get(f"material.{prefix}preset")
+    base = MATERIALS[preset] if preset else default
+    explicit = {name: values[f"material.{name}"] for name in ("elastic_modulus", "poisson_ratio", "density")
+                if f"material.{name}" in values and not prefix}
+    if not explicit:
+        return base
+    return Material(explicit.get("elastic_modulus", base.elastic_modulus),
+                    explicit.get("poisson_ratio", base.poisson_ratio),
+                    explicit.get("density", base.density), name="custom")
+
+
+def _lubricant(values: dict) -> Lubricant | None:
+    if not any(key.startswith("lubricant.") for key in values):
+        return None
+    base = LUBRICANTS[values["lubricant.preset"]] if "lubricant.preset" in values else None
+    viscosity = values.get("lubricant.viscosity", base.viscosity if base else None)
+    if viscosity is None:
+        raise ValueError("missing required key: one of 'lubricant.preset', 'lubricant.viscosity'")
+    alpha = values.get("lubricant.pressure_viscosity",
+                       base.pressure_viscosity if base else wooster_pressure_viscosity(viscosity))
+    density = values.get("lubricant.density", base.density if base else 870.0)
+    return Lubricant(viscosity, alpha, density, name=base.name if base else "custom")
+
+
+def build_inputs(scene: Scene) -> effect_registry.SceneInputs:
+    """Parameter pytrees of a ball-bearing scene (ValueError names any bad value)."""
+    v = scene.values
+    if scene.bearing_type not in effect_registry.BALL_TYPES:
+        raise NotImplementedError(f"bearing.type = {scene.bearing_type!r} is not available yet "
+                                  "(roller bearings come with the roller-contact and EHL issues)")
+    ring = _material(v, "", BEARING_STEEL)
+    bearing = ball_bearing(
+        kind=scene.bearing_type,
+        ball_diameter=v["bearing.ball_diameter"], pitch_diameter=v["bearing.pitch_diameter"],
+        balls=v["bearing.balls"],
+        inner_groove_ratio=v.get("bearing.inner_groove_ratio"),
+        outer_groove_ratio=v.get("bearing.outer_groove_ratio"),
+        inner_groove_radius=v.get("bearing.inner_groove_radius"),
+        outer_groove_radius=v.get("bearing.outer_groove_radius"),
+        contact_angle=v.get("bearing.contact_angle"), radial_clearance=v.get("bearing.radial_clearance"),
+        ball_material=_material(v, "ball_", ring), ring_material=ring,
+        bore=v.get("bearing.bore"), outer_diameter=v.get("bearing.outer_diameter"),
+        dynamic_load_rating=v.get("bearing.dynamic_load_rating"),
+    )
+    operating = Operating(
+        inner_speed=v.get("operating.inner_speed", 0.0), outer_speed=v.get("operating.outer_speed", 0.0),
+        force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
+    )
+    return effect_registry.SceneInputs(bearing=bearing, operating=operating, lubricant=_lubricant(v))
+
+
+@dataclasses.dataclass
+class Model:
+    """A scene assembled: its inputs pytree and the blocks to run, in order."""
+
+    scene: Scene
+    inputs: effect_registry.SceneInputs
+    blocks: list
+    settings: dict
+    not_implemented: list
+
+    @property
+    def outputs(self) -> dict:
+        return effect_registry.outputs_of(self.blocks)
+
+    def function(self):
+        """The pure function inputs → {output key: array} (jit, vmap and grad it freely)."""
+        return effect_registry.evaluate(self.blocks, self.settings)
+
+
+def build_model(scene: Scene) -> Model:
+    """Assemble the model of a scene: only the blocks its effects name (and what they require)."""
+    if scene.sweep:
+        raise NotImplementedError("[sweep] tables are not available yet (they come with the ball-bearing issue)")
+    inputs = build_inputs(scene)
+    blocks, missing = effect_registry.resolve(scene.bearing_type, scene.table("effects"))
+    return Model(scene=scene, inputs=inputs, blocks=blocks, settings=scene.table("fidelity"), not_implemented=missing)
+
+
+@dataclasses.dataclass
+class RunResult:
+    """Outputs of one run (NumPy arrays, SI) with compile and run times [s]."""
+
+    model: Model
+    values: dict
+    compile_s: float
+    run_s: float
+
+
+def run_model(model: Model) -> RunResult:
+    """Compile (timed), then run (timed, excluding compilation) the model on its inputs."""
+    start = time.perf_counter()
+    executable = effect_registry.compiled(model.blocks, model.settings, model.inputs)
+    compile_s = time.perf_counter() - start
+    start = time.perf_counter()
+    values = jax.block_until_ready(executable(model.inputs))
+    run_s = time.perf_counter() - start
+    return RunResult(model, {key: np.asarray(value) for key, value in values.items()}, compile_s, run_s)

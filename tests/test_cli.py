@@ -1,0 +1,134 @@
+"""The `diffbearing` command: runs, JSON, --set, plots, and one-line errors with exit code 2."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from diffbearing import cli, effects
+from diffbearing.scene import build_model, load_scene, run_model
+
+
+def run_cli(capsys, *arguments):
+    code = cli.main(list(arguments))
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+def test_default_run_prints_report(capsys):
+    code, out, err = run_cli(capsys, "run")
+    assert code == 0, err
+    assert "Aero-engine angular-contact ball bearing, seed 001" in out
+    assert "free contact angle α0" in out and "deg" in out
+    assert "load–deflection constant K" in out and "N/mm^1.5" in out
+
+
+def test_json_has_documented_keys_in_si(capsys, tmp_path):
+    path = tmp_path / "out.json"
+    code, _, err = run_cli(capsys, "run", "--json", str(path))
+    assert code == 0, err
+    document = json.loads(path.read_text())
+    assert document["geometry"]["free_contact_angle"] == pytest.approx(np.radians(25), rel=1e-14)
+    assert document["geometry"]["radial_clearance"] == pytest.approx(2 * 0.98e-3 * (1 - np.cos(np.radians(25))), rel=1e-12)
+    assert set(document["hertz"]["inner"]) == {"curvature_sum", "curvature_difference", "ellipticity",
+                                              "load_deflection_constant", "static_limit_load"}
+    assert document["timing"]["compile_s"] > 0 and document["timing"]["run_s"] > 0
+
+
+def test_set_overrides_values(capsys, tmp_path):
+    path = tmp_path / "out.json"
+    code, _, err = run_cli(capsys, "run", "--set", "bearing.contact_angle=30 deg", "--set",
+                           'operating.force=["0 N", "0 N", "5 kN"]', "--set", "effects.gyroscopic=false",
+                           "--json", str(path))
+    assert code == 0, err
+    document = json.loads(path.read_text())
+    assert document["geometry"]["free_contact_angle"] == pytest.approx(np.radians(30), rel=1e-14)
+    assert "gyroscopic" not in document["not_computed"]
+
+
+def test_plot_is_written(capsys, tmp_path):
+    path = tmp_path / "plot.png"
+    code, _, err = run_cli(capsys, "run", "--plot", str(path))
+    assert code == 0, err
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize("override, named", [
+    ("bearing.pitch_diameter=97.5 N", "bearing.pitch_diameter: '97.5 N' is not a length"),
+    ("bearing.ball_diamter=3", "unknown key 'bearing.ball_diamter' (did you mean 'bearing.ball_diameter'?)"),
+    ("bearing.balls=2", "bearing.balls must be an integer ≥ 3"),
+    ("bearing.inner_groove_radius=13 mm", "bearing.inner_groove_radius must be > 0.014 m"),
+    ("bearing.ball_diameter=nan", "bearing.ball_diameter must be a finite number"),
+    ("bearing.ball_diameter=-28 mm", "bearing.ball_diameter must be > 0 m"),
+    ("bearing.pitch_diameter=150 mm", "so that the balls fit on the pitch circle"),
+    ("effects.film=\"sommerfeld\"", "effects.film: expected one of"),
+    ("operating.force=[1, 2]", "operating.force: expected a list of 3 force values"),
+    ("bearing.type=\"thrust\"", "bearing.type: expected one of"),
+])
+def test_bad_input_exits_2_naming_the_key(capsys, override, named):
+    code, out, err = run_cli(capsys, "run", "--set", override)
+    assert code == 2
+    assert named in err
+    assert err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_missing_required_key_and_unknown_table(capsys, tmp_path):
+    scene = tmp_path / "scene.toml"
+    scene.write_text('[bearing]\ntype = "deep_groove_ball"\nball_diameter = "10 mm"\npitch_diameter = "50 mm"\n'
+                     'balls = 9\ninner_groove_ratio = 0.52\nouter_groove_ratio = 0.53\n')
+    code, _, err = run_cli(capsys, "run", str(scene))
+    assert code == 2 and "missing required key: one of 'bearing.contact_angle', 'bearing.radial_clearance'" in err
+    scene.write_text('[bearings]\ntype = "deep_groove_ball"\n')
+    code, _, err = run_cli(capsys, "run", str(scene))
+    assert code == 2 and "unknown table '[bearings]' (did you mean '[bearing]'?)" in err
+    code, _, err = run_cli(capsys, "run", str(tmp_path / "absent.toml"))
+    assert code == 2 and "scene file not found" in err
+
+
+def test_shared_seed002_scene_runs(capsys, shared_scenes):
+    code, out, err = run_cli(capsys, "run", str(shared_scenes / "seed002_6411E.toml"))
+    assert code == 0, err
+    assert "9.2248" in out  # α0 [deg] from the 28 µm clearance (paper: 9.23°)
+
+
+def test_effects_not_named_are_never_traced(monkeypatch):
+    """A block is called (hence traced) only when the scene names its effect."""
+    calls = []
+
+    def spy(inputs, settings, results):
+        calls.append(1)
+        return {"spy.value": inputs.bearing.ball_diameter * 2}
+
+    block = effects.Block("spy", effects.BALL_TYPES, ("stiffness", True), ("raceway_contact",),
+                          (effects.Output("spy.value", "m", "mm", "spy"),), spy)
+    monkeypatch.setitem(effects.REGISTRY, "spy", block)
+    off = run_model(build_model(load_scene(overrides=["effects.stiffness=false"])))
+    assert calls == [] and "spy.value" not in off.values
+    on = run_model(build_model(load_scene(overrides=["effects.stiffness=true"])))
+    assert calls == [1] and on.values["spy.value"] == pytest.approx(0.056)
+    assert [b.name for b in on.model.blocks] == ["raceway_contact", "spy"]
+
+
+def test_float32_is_refused():
+    code = ("import jax\nfrom diffbearing import point_contact\n"
+            "try:\n    point_contact(1.0, 100.0, 0.5, 2e11)\nexcept RuntimeError as e:\n    print(e)\n")
+    output = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert "diffbearing needs float64" in output
+
+
+def test_console_script_exit_code(tmp_path):
+    completed = subprocess.run([sys.executable, "-m", "diffbearing.cli", "run", "--set", "bearing.balls=1"],
+                               capture_output=True, text=True)
+    assert completed.returncode == 2
+    assert completed.stderr.strip() == "diffbearing: error: bearing.balls must be an integer ≥ 3, got 1"
+
+
+def test_readme_documents_every_output_key():
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    for block in effects.REGISTRY.values():
+        for output in block.outputs:
+            assert f"`{output.key}`" in readme, output.key
