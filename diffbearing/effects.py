@@ -2,8 +2,11 @@
 
 A `Block` declares the bearing types it applies to, the scene effect that switches it on
 (`enabled_by`, or None for a block every scene of those types runs), the blocks it needs
-(`requires`), its output keys with their SI units (`outputs`), and `compute`, a pure function
-(inputs, settings, results so far) → {output key: array}. `resolve` returns, in dependency order,
+(`requires`), the effects it reads as options (`uses`, e.g. centrifugal force inside the
+equilibrium), its output keys with their SI units (`outputs`; an output tied to an effect is
+produced only when that effect is on), and `compute`, a pure function
+(inputs, settings, results so far) → {output key: array}; `settings` holds the scene's
+`effects` and `fidelity` tables. `resolve` returns, in dependency order,
 exactly the blocks a scene asks for: a block no named effect reaches is never called, so it is
 never traced or compiled.
 
@@ -17,7 +20,7 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from . import hertz
+from . import ball_equilibrium, hertz
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
 
@@ -43,6 +46,7 @@ class Output:
     unit: str
     display: str
     description: str
+    effect: str | None = None  # produced only when this effect is on
 
 
 @dataclasses.dataclass(frozen=True)
@@ -53,6 +57,7 @@ class Block:
     requires: tuple[str, ...]
     outputs: tuple[Output, ...]
     compute: Callable[[SceneInputs, dict, dict], dict]
+    uses: tuple[str, ...] = ()
 
 
 REGISTRY: dict[str, Block] = {}
@@ -72,7 +77,7 @@ def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
     `effects` maps effect names to their scene values (false / absent means off).
     """
     wanted = [b for b in REGISTRY.values() if bearing_type in b.bearing_types and b.enabled_by is None]
-    provided = set()
+    provided = {effect for b in REGISTRY.values() if bearing_type in b.bearing_types for effect in b.uses}
     for block in REGISTRY.values():
         if bearing_type in block.bearing_types and block.enabled_by is not None:
             effect, value = block.enabled_by
@@ -97,9 +102,10 @@ def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
     return ordered, missing
 
 
-def outputs_of(blocks) -> dict[str, Output]:
-    """{key: Output} for the given blocks."""
-    return {out.key: out for block in blocks for out in block.outputs}
+def outputs_of(blocks, effects: dict | None = None) -> dict[str, Output]:
+    """{key: Output} the given blocks produce (with `effects`, only those whose effect is on)."""
+    return {out.key: out for block in blocks for out in block.outputs
+            if effects is None or out.effect is None or effects.get(out.effect, False) is True}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -108,7 +114,7 @@ def outputs_of(blocks) -> dict[str, Output]:
 
 def _raceway_contact(inputs: SceneInputs, settings: dict, results: dict) -> dict:
     bearing = inputs.bearing
-    method = settings.get("hertz", "exact")
+    method = settings["fidelity"].get("hertz", "exact")
     angle = jnp.asarray(bearing.free_contact_angle)
     modulus = ball_raceway_modulus(bearing)
     out = {
@@ -180,6 +186,92 @@ def evaluate(blocks, settings: dict) -> Callable[[SceneInputs], dict]:
     return run
 
 
+_COMPILED: dict = {}
+
+
 def compiled(blocks, settings: dict, inputs: SceneInputs):
-    """`jax.jit` of `evaluate(...)`, compiled ahead of time for `inputs` (the compile is timed by the caller)."""
-    return jax.jit(evaluate(blocks, settings)).lower(inputs).compile()
+    """(`jax.jit` of `evaluate(...)` compiled ahead of time for `inputs`, whether it was cached).
+
+    Compiled models are kept per process, keyed by the blocks, the settings and the structure,
+    shapes and dtypes of the inputs: a second run of the same model with other numbers reuses it.
+    """
+    leaves, treedef = jax.tree.flatten(inputs)
+    key = (tuple(b.name for b in blocks), repr(sorted((k, sorted(v.items())) for k, v in settings.items())),
+           treedef, tuple((jnp.shape(x), jnp.result_type(x)) for x in leaves))
+    if key in _COMPILED:
+        return _COMPILED[key], True
+    executable = jax.jit(evaluate(blocks, settings)).lower(inputs).compile()
+    _COMPILED[key] = executable
+    return executable, False
+
+
+# ---------------------------------------------------------------------------------------------
+# Ball bearings: quasi-static equilibrium (always), stiffness (effect "stiffness").
+
+
+def ball_model(settings: dict) -> "ball_equilibrium.BallModel":
+    """The static model options a scene's effects and fidelity tables select."""
+    effects, fidelity = settings["effects"], settings["fidelity"]
+    return ball_equilibrium.BallModel(
+        centrifugal=effects.get("centrifugal", False) is True,
+        gyroscopic=effects.get("gyroscopic", False) is True,
+        race_control=fidelity.get("race_control", "outer"),
+        hertz_method=fidelity.get("hertz", "exact"),
+        hertz_constants=fidelity.get("hertz_constants", "contact_angle"),
+    )
+
+
+def _equilibrium(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    model = ball_model(settings)
+    solution = ball_equilibrium.solve_equilibrium(inputs.bearing, inputs.operating, model)
+    out = {"displacement": solution.displacement, "converged": solution.converged, "residual": solution.residual}
+    return out | ball_equilibrium.ball_results(solution.displacement, inputs.bearing, inputs.operating, model)
+
+
+def _ball_outputs(side):
+    return (
+        Output(f"balls.{side}.load", "N", "kN", f"contact load Q, {side}"),
+        Output(f"balls.{side}.contact_angle", "rad", "deg", f"contact angle α, {side}"),
+        Output(f"balls.{side}.max_pressure", "Pa", "GPa", f"peak Hertz pressure p0, {side}"),
+        Output(f"balls.{side}.semi_major_axis", "m", "mm", f"contact semi-major axis a, {side}"),
+        Output(f"balls.{side}.semi_minor_axis", "m", "mm", f"contact semi-minor axis b, {side}"),
+    )
+
+
+register(Block(
+    name="equilibrium",
+    bearing_types=BALL_TYPES,
+    enabled_by=None,
+    requires=("raceway_contact",),
+    uses=("centrifugal", "gyroscopic"),
+    outputs=(
+        Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]"),
+        Output("converged", "", "", "the equilibrium solver converged"),
+        Output("residual", "", "", "largest scaled residual of ring and ball equations"),
+        Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x"),
+        *_ball_outputs("inner"),
+        *_ball_outputs("outer"),
+        Output("balls.orbital_speed", "rad/s", "rpm", "orbital (cage) speed ω_m"),
+        Output("balls.spin_speed", "rad/s", "rpm", "ball spin speed ω_R about its own axis"),
+        Output("balls.centrifugal_force", "N", "N", "centrifugal force F_c", effect="centrifugal"),
+        Output("balls.gyroscopic_moment", "N*m", "N*m", "gyroscopic moment M_g", effect="gyroscopic"),
+    ),
+    compute=_equilibrium,
+))
+
+
+def _stiffness(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    matrix = ball_equilibrium.stiffness_matrix(results["displacement"], inputs.bearing, inputs.operating,
+                                           ball_model(settings))
+    return {"stiffness": matrix}
+
+
+register(Block(
+    name="stiffness",
+    bearing_types=BALL_TYPES,
+    enabled_by=("stiffness", True),
+    requires=("equilibrium",),
+    outputs=(Output("stiffness", "N/m, N/rad, N*m/m, N*m/rad", "",
+                    "5×5 stiffness K = dF/dΔ, balls re-equilibrated (jacfwd through the implicit solve)"),),
+    compute=_stiffness,
+))

@@ -67,14 +67,16 @@ def ellipticity(curvature_difference):
     Hamrock–Brewe start u₀ = (2/π) ln((1+F)/(1−F)); the derivative comes from the implicit
     function theorem, dκ/dF = 1 / (dF/dκ), in forward and reverse mode.
     """
-    log_ellipticity = (4.0 / jnp.pi) * jnp.arctanh(curvature_difference)
-    for _ in range(_ELLIPTICITY_NEWTON_STEPS):
+    def newton_step(_, log_ellipticity):
         value, slope = jax.jvp(
             _curvature_difference_of_log_ellipticity,
             (log_ellipticity,),
             (jnp.ones_like(log_ellipticity),),
         )
-        log_ellipticity = log_ellipticity - (value - curvature_difference) / slope
+        return log_ellipticity - (value - curvature_difference) / slope
+
+    start = (4.0 / jnp.pi) * jnp.arctanh(curvature_difference)
+    log_ellipticity = jax.lax.fori_loop(0, _ELLIPTICITY_NEWTON_STEPS, newton_step, start)
     return jnp.exp(log_ellipticity)
 
 

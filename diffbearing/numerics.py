@@ -32,3 +32,8 @@ def positive_power(x, exponent):
 def safe_sqrt(x):
     """`sqrt(max(x, 0))` with a zero gradient at x ≤ 0 instead of inf/NaN."""
     return positive_power(x, 0.5)
+
+
+def safe_norm(x, axis=None):
+    """Euclidean norm with a zero (not NaN) gradient at x = 0."""
+    return safe_sqrt(jnp.sum(x * x, axis=axis))

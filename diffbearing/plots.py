@@ -14,7 +14,7 @@ from .raceway_contact import ball_raceway_modulus, inner_curvature, outer_curvat
 def plot_hertz_load_curves(result, figure):
     """Peak pressure and approach of the inner and outer contacts against ball load (free angle)."""
     bearing = result.model.inputs.bearing
-    method = result.model.settings.get("hertz", "exact")
+    method = result.model.settings["fidelity"].get("hertz", "exact")
     limit = max(result.values["hertz.inner.static_limit_load"], result.values["hertz.outer.static_limit_load"])
     loads = jnp.linspace(0.0, float(limit), 200)
     modulus = ball_raceway_modulus(bearing)

@@ -53,19 +53,58 @@ def _header(result) -> list[str]:
     ]
 
 
+def _displacement_lines(displacement) -> list[str]:
+    d = np.asarray(displacement)
+    return ["", "Inner-ring displacement (from the just-touching position at the free contact angle)",
+            f"  δx = {d[0] * 1e6:.3f} µm, δy = {d[1] * 1e6:.3f} µm, δz = {d[2] * 1e6:.3f} µm, "
+            f"θx = {d[3] * 1e3:.4f} mrad, θy = {d[4] * 1e3:.4f} mrad"]
+
+
+def _stiffness_lines(matrix) -> list[str]:
+    k = np.asarray(matrix)
+    names = ["x", "y", "z", "θx", "θy"]
+    lines = ["", "Stiffness K = dF/dΔ (balls re-equilibrated; rows F: N, M: N·m; columns δ: µm, θ: mrad)",
+             "  " + " " * 6 + "".join(f"{'∂/∂' + n:>13}" for n in names)]
+    scale = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # per µm and per mrad
+    row_names = ["Fx", "Fy", "Fz", "Mx", "My"]
+    for i in range(5):
+        lines.append(f"  {row_names[i]:<6}" + "".join(f"{k[i, j] * scale[j]:>13.5g}" for j in range(5)))
+    return lines
+
+
+def _ball_table_lines(result, outputs) -> list[str]:
+    keys = [key for key in outputs if key.startswith("balls.") and key in result.values]
+    if not keys:
+        return []
+    short = {"balls.azimuth": "ψ", "balls.inner.load": "Qi", "balls.inner.contact_angle": "αi",
+             "balls.inner.max_pressure": "p0i", "balls.outer.load": "Qo", "balls.outer.contact_angle": "αo",
+             "balls.outer.max_pressure": "p0o", "balls.orbital_speed": "ωm", "balls.centrifugal_force": "Fc",
+             "balls.gyroscopic_moment": "Mg"}
+    shown = [key for key in short if key in keys]
+    header = "".join(f"{short[k] + ' [' + _unit_label(outputs[k].display) + ']':>12}" for k in shown)
+    lines = ["", "Balls (load distribution; semi-axes and spin speed in --json)", "   #" + header]
+    columns = [to_display(result.values[k], outputs[k].unit, outputs[k].display) for k in shown]
+    for j in range(len(columns[0])):
+        lines.append(f"  {j:>2}" + "".join(f"{_format_number(c[j]):>12}" for c in columns))
+    return lines
+
+
 def format_report(result) -> str:
-    """The text report of a run: header, one aligned table per output group, notes, timing."""
+    """The text report of a run: header, aligned tables per output group, notes, timing."""
     lines = _header(result)
     outputs = result.model.outputs
+    values = result.values
     sections: dict[str, dict[str, dict]] = {}
     for key, out in outputs.items():
+        if key not in values or key.startswith("balls.") or key in ("displacement", "stiffness", "converged", "residual"):
+            continue
         parts = key.split(".")
         if len(parts) == 3 and parts[1] in ("inner", "outer"):
             section, column, row = parts[0], parts[1], parts[2]
         else:
             section, column, row = parts[0], "value", ".".join(parts[1:])
         entry = sections.setdefault(section, {}).setdefault(row, {"out": out})
-        entry[column] = result.values[key]
+        entry[column] = values[key]
     for section, rows in sections.items():
         lines += ["", section.replace("_", " ").capitalize()]
         scalar_rows = [row for row in rows.values() if "value" in row]
@@ -81,6 +120,14 @@ def format_report(result) -> str:
                 label = out.description.removesuffix(", inner")
                 cells = [_format(to_display(row[c], out.unit, out.display)) if c in row else "" for c in ("inner", "outer")]
                 lines.append(f"  {label:<48}" + "".join(f"{cell:>16}" for cell in cells) + f"  {_unit_label(out.display)}")
+    if "displacement" in values:
+        lines += _displacement_lines(values["displacement"])
+    if "stiffness" in values:
+        lines += _stiffness_lines(values["stiffness"])
+    lines += _ball_table_lines(result, outputs)
+    if "converged" in values:
+        state = "converged" if bool(values["converged"]) else "DID NOT CONVERGE"
+        lines += ["", f"Equilibrium solver: {state} (largest scaled residual {float(values['residual']):.1e})"]
     if result.model.not_implemented:
         lines += ["", "Not computed (effect not available yet): " + ", ".join(result.model.not_implemented)]
     lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s * 1e3:.2f} ms (after compilation)"]

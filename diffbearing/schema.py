@@ -89,6 +89,9 @@ SCHEMA: dict[str, dict[str, Key]] = {
     },
     "fidelity": {
         "hertz": Key("choice", choices=("exact", "brewe_hamrock", "hamrock_brewe")),
+        "race_control": Key("choice", choices=("outer", "inner"), doc="raceway control hypothesis of the ball kinematics"),
+        "hertz_constants": Key("choice", choices=("contact_angle", "free_contact_angle"),
+                               doc="Hertz constants of the ball contacts at their current angle or at α0"),
         "grid": Key("integers"),
         "tolerance": Key("number"),
     },

@@ -1,0 +1,415 @@
+"""Quasi-static 5-DOF ball bearing: load distribution, contact angles and stiffness at speed.
+
+Model (physics.md §2, seed 001; Jones 1960, Harris & Kotzalas vol. 2 ch. 3). The outer ring is
+fixed; the inner ring moves by Δ = [δx, δy, δz, θx, θy] from the position where the rings are
+concentric and every ball just touches both raceways at the free contact angle α₀. In the plane of
+ball j (azimuth ψ_j from +x), with the outer groove curvature centre as origin, axial coordinate
+first and radial (outward) second:
+
+    inner groove curvature centre  A = (B D_w sin α₀ + δz + R_i (θx sin ψ − θy cos ψ),
+                                        B D_w cos α₀ + δx cos ψ + δy sin ψ)
+    B D_w = (f_i + f_o − 1) D_w,  R_i = d_m/2 + (f_i − 1/2) D_w cos α₀
+    ball centre X:  δ_o = |X| − (f_o − ½)D_w,  δ_i = |A − X| − (f_i − ½)D_w
+    tan α_o = X₁/X₂,  tan α_i = (A₁ − X₁)/(A₂ − X₂),  Q = K(α) max(δ, 0)^{3/2}  (Hertz, exact K(α))
+    ball equilibrium (Harris eqs. 3.23–3.24 with raceway control factors λ_i, λ_o):
+        Q_i sin α_i − Q_o sin α_o − (M_g/D_w)(λ_i cos α_i − λ_o cos α_o) = 0
+        Q_i cos α_i − Q_o cos α_o + (M_g/D_w)(λ_i sin α_i − λ_o sin α_o) + F_c = 0
+    ring equilibrium: [Fx, Fy, Fz, Mx, My] = Σ_j Q_i [cos α_i cos ψ, cos α_i sin ψ, sin α_i,
+                                                      R_i sin α_i sin ψ, −R_i sin α_i cos ψ]
+
+Sign conventions: moments and rotations right-handed about x and y; an inner-ring rotation θx
+moves the groove centre at azimuth ψ axially by R_i θx sin ψ. A deep-groove ball that is pushed the
+other way takes a negative contact angle on the opposite shoulder; angular-contact bearings are
+modelled with the same full groove (their low shoulder is not a separate limit).
+
+Solution (physics.md §7): each ball's two equations are solved per ball (vmap, 2×2 Newton) for a
+given Δ; `ball_positions` carries the implicit-function derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ,
+so the ring force F(Δ) has exact total derivatives and the stiffness K = dF/dΔ (balls
+re-equilibrated) is `jax.jacfwd(ring_force)`. The ring problem starts from the static solution,
+found by minimising the convex elastic energy Σ (2/5) K_n max(|A| − B D_w, 0)^{5/2} − F·Δ (no
+initial guess needed, zero stiffness at the start is fine), then `optimistix.root_find`
+(Levenberg–Marquardt, implicit adjoint) adds the speed terms and the contact-angle dependence of
+the Hertz constants.
+"""
+
+import dataclasses
+import functools
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+import lineax as lx
+import optimistix as optx
+
+from . import hertz, kinematics
+from .numerics import positive_power, require_float64, safe_norm
+from .params import BallBearing, Operating, groove_curvature_centre_distance
+from .raceway_contact import ball_raceway_modulus, contact_constants, inner_curvature, outer_curvature
+from .solvers import minimise_convex
+
+BALL_NEWTON_MAX_STEPS = 40
+BALL_POSITION_TOLERANCE = 1e-13  # × D_w: step size at which the per-ball Newton stops
+FREE_APPROACH = 1e-12  # × D_w: below this total approach a ball at standstill is taken as free
+DISPLACEMENT_SCALE = 1e-5  # m: the unit of the scaled ring unknowns (10 µm, 10 µm / R_i rad)
+RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled ring residual and ball residuals are below
+
+# Newton on the scaled ring residual from the static solution (optimistix; implicit adjoint).
+# The least-squares (pseudo-inverse) linear solve keeps a singular Jacobian finite: at zero load or
+# with every inner contact open the step is zero instead of NaN.
+RING_SOLVER = optx.Newton(rtol=1e-11, atol=1e-11, linear_solver=lx.AutoLinearSolver(well_posed=False))
+# The static energy is only the start for Newton: a gradient of 1e-8 (scaled) is close enough, and
+# the energy's rounding error stops Armijo's test from resolving much less.
+STATIC_GRADIENT_TOLERANCE = 1e-8
+
+
+@dataclasses.dataclass(frozen=True)
+class BallModel:
+    """Static model options: speed effects, raceway control, Hertz fidelity level."""
+
+    centrifugal: bool = False
+    gyroscopic: bool = False
+    race_control: str = "outer"
+    hertz_method: str = "exact"
+    # "contact_angle": Hertz constants at each contact's current angle (Jones, Harris);
+    # "free_contact_angle": fixed at α₀ (simpler codes; the static force field is then exactly
+    # the gradient of an energy, so the stiffness at standstill is exactly symmetric).
+    hertz_constants: str = "contact_angle"
+
+    @property
+    def speed_effects(self) -> bool:
+        return self.centrifugal or self.gyroscopic
+
+
+def ball_azimuths(bearing: BallBearing):
+    """ψ_j = 2π j / Z [rad], ball 0 on +x."""
+    return 2.0 * jnp.pi * jnp.arange(bearing.ball_count) / bearing.ball_count
+
+
+def inner_groove_radius_of_centres(bearing: BallBearing):
+    """R_i = d_m/2 + (f_i − ½) D_w cos α₀ [m], the moment arm of the inner contact forces."""
+    return 0.5 * bearing.pitch_diameter + (bearing.inner_groove_ratio - 0.5) * bearing.ball_diameter * jnp.cos(
+        bearing.free_contact_angle)
+
+
+def inner_groove_centres(bearing: BallBearing, displacement):
+    """(Z, 2) positions (axial, radial) of the inner groove curvature centres [m] (module docstring)."""
+    psi = ball_azimuths(bearing)
+    distance = groove_curvature_centre_distance(bearing)
+    arm = inner_groove_radius_of_centres(bearing)
+    dx, dy, dz, tx, ty = (displacement[i] for i in range(5))
+    axial = distance * jnp.sin(bearing.free_contact_angle) + dz + arm * (tx * jnp.sin(psi) - ty * jnp.cos(psi))
+    radial = distance * jnp.cos(bearing.free_contact_angle) + dx * jnp.cos(psi) + dy * jnp.sin(psi)
+    return jnp.stack([axial, radial], axis=-1)
+
+
+def hertz_constants(bearing: BallBearing, inner_angle, outer_angle, model: BallModel):
+    """(K_i, K_o) [N/m^1.5] at the contact angles, or at α₀ (`model.hertz_constants`)."""
+    if model.hertz_constants == "free_contact_angle":
+        angle = bearing.free_contact_angle
+        return tuple(jnp.broadcast_to(k, jnp.shape(inner_angle))
+                     for k in contact_constants(bearing, angle, angle, model.hertz_method))
+    return contact_constants(bearing, inner_angle, outer_angle, model.hertz_method)
+
+
+def _groove_offsets(bearing: BallBearing):
+    """((f_i − ½) D_w, (f_o − ½) D_w) [m]: ball-centre distance from each groove centre at zero load."""
+    return ((bearing.inner_groove_ratio - 0.5) * bearing.ball_diameter,
+            (bearing.outer_groove_ratio - 0.5) * bearing.ball_diameter)
+
+
+def static_positions(bearing: BallBearing, centres, model: BallModel):
+    """(Z, 2) ball centres without speed effects: on the line of groove centres, the total approach
+    split so that K_i δ_i^{3/2} = K_o δ_o^{3/2} (both contacts at the same angle)."""
+    inner_offset, outer_offset = _groove_offsets(bearing)
+    length = jnp.linalg.norm(centres, axis=-1)
+    angle = jnp.arctan2(centres[..., 0], centres[..., 1])
+    total = length - groove_curvature_centre_distance(bearing)
+    k_inner, k_outer = hertz_constants(bearing, angle, angle, model)
+    outer_approach = total / (1.0 + (k_outer / k_inner) ** (2.0 / 3.0))
+    return centres / length[..., None] * (outer_offset + outer_approach)[..., None]
+
+
+def ball_state(bearing: BallBearing, operating: Operating, centres, positions, model: BallModel, constants=None):
+    """Per-ball contact and kinematic state for ball centres `positions` (Z, 2); SI units.
+
+    `constants` = (K_i, K_o) overrides the Hertz constants at the actual contact angles (the per-ball
+    Newton holds them fixed within a step; the converged state always uses the exact ones).
+    """
+    inner_offset, outer_offset = _groove_offsets(bearing)
+    to_inner = centres - positions
+    outer_approach = jnp.linalg.norm(positions, axis=-1) - outer_offset
+    inner_approach = jnp.linalg.norm(to_inner, axis=-1) - inner_offset
+    outer_angle = jnp.arctan2(positions[..., 0], positions[..., 1])
+    inner_angle = jnp.arctan2(to_inner[..., 0], to_inner[..., 1])
+    if constants is None:
+        constants = hertz_constants(bearing, inner_angle, outer_angle, model)
+    k_inner, k_outer = constants
+    ratio = bearing.ball_diameter / bearing.pitch_diameter
+    relative_speed = operating.inner_speed - operating.outer_speed
+    orbital, spin, beta = kinematics.ball_speeds(relative_speed, inner_angle, outer_angle, ratio, model.race_control)
+    orbital = orbital + operating.outer_speed
+    state = dict(
+        inner_approach=inner_approach, outer_approach=outer_approach,
+        inner_angle=inner_angle, outer_angle=outer_angle,
+        inner_load=hertz.hertz_load(inner_approach, k_inner), outer_load=hertz.hertz_load(outer_approach, k_outer),
+        orbital_speed=orbital, spin_speed=spin, pitch_angle=beta,
+    )
+    density = bearing.ball_material.density
+    state["centrifugal_force"] = (kinematics.centrifugal_force(density, bearing.ball_diameter, bearing.pitch_diameter,
+                                                               orbital) if model.centrifugal else jnp.zeros_like(orbital))
+    state["gyroscopic_moment"] = (kinematics.gyroscopic_moment(density, bearing.ball_diameter, orbital, spin, beta)
+                                  if model.gyroscopic else jnp.zeros_like(orbital))
+    return state
+
+
+def ball_residual(positions, centres, bearing: BallBearing, operating: Operating, model: BallModel, constants=None):
+    """(Z, 2) force residual [N] of each ball's equilibrium (module docstring), axial then radial."""
+    s = ball_state(bearing, operating, centres, positions, model, constants)
+    lam_inner, lam_outer = (0.0, 2.0) if model.race_control == "outer" else (2.0, 0.0)
+    gyro = s["gyroscopic_moment"] / bearing.ball_diameter
+    ai, ao = s["inner_angle"], s["outer_angle"]
+    axial = (s["inner_load"] * jnp.sin(ai) - s["outer_load"] * jnp.sin(ao)
+             - gyro * (lam_inner * jnp.cos(ai) - lam_outer * jnp.cos(ao)))
+    radial = (s["inner_load"] * jnp.cos(ai) - s["outer_load"] * jnp.cos(ao)
+              + gyro * (lam_inner * jnp.sin(ai) - lam_outer * jnp.sin(ao)) + s["centrifugal_force"])
+    return jnp.stack([axial, radial], axis=-1)
+
+
+def _free_balls(bearing: BallBearing, operating: Operating, centres):
+    """Balls touching neither raceway at standstill: their equilibrium is indeterminate (no force at all).
+
+    A ball whose total approach is below `FREE_APPROACH` D_w (it would carry < 1e-10 N) counts as
+    free too, so that rounding at exact contact cannot leave a singular 2×2 system.
+    """
+    approach = jnp.linalg.norm(centres, axis=-1) - groove_curvature_centre_distance(bearing)
+    standstill = (operating.inner_speed == 0.0) & (operating.outer_speed == 0.0)
+    return (approach <= FREE_APPROACH * bearing.ball_diameter) & standstill
+
+
+def _masked_residual(positions, centres, bearing, operating, model, free, reference, constants=None):
+    """Ball residual, with a free ball's indeterminate equations replaced by X = X_static (scaled)."""
+    scale = hertz_scale(bearing, model)
+    residual = ball_residual(positions, centres, bearing, operating, model, constants)
+    return jnp.where(free[:, None], (positions - reference) * scale, residual)
+
+
+def hertz_scale(bearing: BallBearing, model: BallModel):
+    """K_n(α₀) × 1 µm^{1/2} [N/m]: the stiffness scale used to weigh a free ball's placeholder equation."""
+    k_inner, k_outer = contact_constants(bearing, bearing.free_contact_angle, bearing.free_contact_angle,
+                                         model.hertz_method)
+    combined = (k_inner ** (-2.0 / 3.0) + k_outer ** (-2.0 / 3.0)) ** -1.5
+    return combined * 1e-3
+
+
+def _ball_jacobians(positions, centres, bearing, operating, model, free, reference, constants=None):
+    """(Z, 2, 2) ∂g/∂X of every ball. Ball j's residual depends on X_j alone, so two JVPs with the
+    same unit tangent on every ball give the two columns of all 2×2 blocks at once. With fixed
+    `constants` the Hertz constants' (weak) dependence on the contact angles is left out."""
+    def residual(x):
+        return _masked_residual(x, centres, bearing, operating, model, free, reference, constants)
+
+    columns = [jax.jvp(residual, (positions,), (jnp.zeros_like(positions).at[:, k].set(1.0),))[1] for k in range(2)]
+    return jnp.stack(columns, axis=-1)
+
+
+def _speed_start(bearing, operating, centres, model):
+    """Start for the per-ball Newton: the static split, with a ball whose inner contact is open
+    pressed onto the outer raceway by its centrifugal force along the line of groove centres."""
+    static = static_positions(bearing, centres, model)
+    if not model.centrifugal:
+        return static
+    state = ball_state(bearing, operating, centres, static, model)
+    _, k_outer = hertz_constants(bearing, state["outer_angle"], state["outer_angle"], model)
+    pressed = (state["centrifugal_force"] / k_outer) ** (2.0 / 3.0)
+    _, outer_offset = _groove_offsets(bearing)
+    approach = jnp.maximum(state["outer_approach"], pressed)
+    direction = static / jnp.linalg.norm(static, axis=-1, keepdims=True)
+    return direction * (outer_offset + approach)[:, None]
+
+
+@functools.partial(jax.custom_jvp, nondiff_argnums=(3,))
+def ball_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+    """(Z, 2) ball centres [m] in equilibrium with speed effects, for inner-ring displacement Δ.
+
+    Newton per ball from `_speed_start` until the largest step is below `BALL_POSITION_TOLERANCE` D_w
+    (at most `BALL_NEWTON_MAX_STEPS`; the ring solver checks the ball residuals); the derivative follows from
+    the implicit function theorem on each ball's 2×2 system (custom JVP; reverse mode by transposition).
+    """
+    centres = inner_groove_centres(bearing, displacement)
+    free = _free_balls(bearing, operating, centres)
+    reference = static_positions(bearing, centres, model)
+    limit = 0.05 * bearing.ball_diameter
+    tolerance = BALL_POSITION_TOLERANCE * bearing.ball_diameter
+
+    def newton_step(carry):
+        positions, _, count = carry
+        to_inner = centres - positions
+        constants = jax.lax.stop_gradient(hertz_constants(
+            bearing, jnp.arctan2(to_inner[..., 0], to_inner[..., 1]),
+            jnp.arctan2(positions[..., 0], positions[..., 1]), model))
+        residual = _masked_residual(positions, centres, bearing, operating, model, free, reference, constants)
+        jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free, reference, constants)
+        step = jnp.linalg.solve(jacobian, residual[..., None])[..., 0]
+        # keep a step within a tenth of the ball radius: Hertz's δ^{3/2} can throw a far Newton step
+        length = jnp.linalg.norm(step, axis=-1, keepdims=True)
+        step = step * jnp.minimum(1.0, limit / jnp.maximum(length, 1e-300))
+        return positions - step, jnp.max(jnp.abs(step)), count + 1
+
+    def not_converged(carry):
+        _, largest_step, count = carry
+        return (largest_step > tolerance) & (count < BALL_NEWTON_MAX_STEPS)
+
+    start = _speed_start(bearing, operating, centres, model)
+    positions, _, _ = jax.lax.while_loop(not_converged, newton_step, (start, jnp.inf, 0))
+    return positions
+
+
+@ball_positions.defjvp
+def _ball_positions_jvp(model, primals, tangents):
+    displacement, bearing, operating = primals
+    positions = ball_positions(displacement, bearing, operating, model)
+
+    def residual_of_inputs(d, b, o):
+        centres = inner_groove_centres(b, d)
+        free = _free_balls(b, o, centres)
+        reference = jax.lax.stop_gradient(static_positions(b, centres, model))
+        return _masked_residual(positions, centres, b, o, model, free, reference)
+
+    _, residual_dot = jax.jvp(residual_of_inputs, primals, tangents)
+    centres = inner_groove_centres(bearing, displacement)
+    free = _free_balls(bearing, operating, centres)
+    reference = static_positions(bearing, centres, model)
+    jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free, reference)
+    return positions, -jnp.linalg.solve(jacobian, residual_dot[..., None])[..., 0]
+
+
+def equilibrium_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+    """Ball centres (Z, 2) [m] for displacement Δ: static split, or per-ball solve with speed effects."""
+    if model.speed_effects:
+        return ball_positions(displacement, bearing, operating, model)
+    return static_positions(bearing, inner_groove_centres(bearing, displacement), model)
+
+
+def ring_force(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+    """[Fx, Fy, Fz, Mx, My] [N, N·m] the balls exert against an inner-ring displacement Δ.
+
+    In equilibrium it equals the applied load; its Jacobian is the stiffness matrix.
+    """
+    centres = inner_groove_centres(bearing, displacement)
+    positions = equilibrium_positions(displacement, bearing, operating, model)
+    s = ball_state(bearing, operating, centres, positions, model)
+    psi = ball_azimuths(bearing)
+    load, angle = s["inner_load"], s["inner_angle"]
+    arm = inner_groove_radius_of_centres(bearing)
+    axial = load * jnp.sin(angle)
+    return jnp.stack([
+        jnp.sum(load * jnp.cos(angle) * jnp.cos(psi)),
+        jnp.sum(load * jnp.cos(angle) * jnp.sin(psi)),
+        jnp.sum(axial),
+        arm * jnp.sum(axial * jnp.sin(psi)),
+        -arm * jnp.sum(axial * jnp.cos(psi)),
+    ])
+
+
+def _scales(bearing: BallBearing, operating: Operating, model: BallModel):
+    """Unknown scale s (Δ = s·y), residual weights w (moments to forces) and load scale [N]."""
+    arm = inner_groove_radius_of_centres(bearing)
+    unknown = DISPLACEMENT_SCALE * jnp.array([1.0, 1.0, 1.0, 0.0, 0.0]) + jnp.array([0, 0, 0, 1.0, 1.0]) * (
+        DISPLACEMENT_SCALE / arm)
+    weight = jnp.array([1.0, 1.0, 1.0, 0.0, 0.0]) + jnp.array([0, 0, 0, 1.0, 1.0]) / arm
+    applied = jnp.concatenate([operating.force, operating.moment])
+    # a characteristic contact load (K_n × (10 µm)^{3/2}) keeps the scale positive at zero load
+    characteristic = hertz_scale(bearing, model) * 1e3 * DISPLACEMENT_SCALE**1.5
+    return unknown, weight, safe_norm(applied * weight) + characteristic
+
+
+def _static_energy(y, args):
+    """Scaled potential of the static problem with K_n(α₀): Σ (2/5) K_n δ^{5/2} − F·Δ (convex in Δ)."""
+    bearing, operating, combined, unknown, load_scale = args
+    displacement = unknown * y
+    centres = inner_groove_centres(bearing, displacement)
+    approach = jnp.linalg.norm(centres, axis=-1) - groove_curvature_centre_distance(bearing)
+    applied = jnp.concatenate([operating.force, operating.moment])
+    energy = 0.4 * combined * jnp.sum(positive_power(approach, 2.5)) - jnp.dot(applied, displacement)
+    return energy / (load_scale * DISPLACEMENT_SCALE)
+
+
+def _ring_residual(y, args):
+    """Scaled ring residual (ring force − applied load) · w / load scale, for optimistix."""
+    bearing, operating, model, unknown, weight, load_scale = args
+    applied = jnp.concatenate([operating.force, operating.moment])
+    return (ring_force(unknown * y, bearing, operating, model) - applied) * weight / load_scale
+
+
+class Equilibrium(eqx.Module):
+    """Solution of the ring problem: displacement Δ [m, rad] and how it was reached."""
+
+    displacement: jax.Array
+    converged: jax.Array  # bool
+    residual: jax.Array  # max of the scaled ring residual and the relative ball residuals [-]
+    static_steps: jax.Array
+    steps: jax.Array
+
+
+def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> Equilibrium:
+    """Inner-ring displacement Δ in equilibrium with the applied load; needs no initial guess.
+
+    Differentiable with respect to every array leaf of `bearing` and `operating` (implicit adjoint,
+    forward and reverse mode). At a singular stiffness (zero load, or a direction the bearing does
+    not resist) the adjoint uses a least-squares pseudo-inverse: finite, not a true derivative.
+    """
+    require_float64()
+    unknown, weight, load_scale = _scales(bearing, operating, model)
+    static_y, _, static_steps = minimise_convex(
+        _static_energy, jnp.zeros(5), (bearing, operating, hertz_scale(bearing, model) * 1e3, unknown, load_scale),
+        gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
+    static_y = jax.lax.stop_gradient(static_y)
+    args = (bearing, operating, model, unknown, weight, load_scale)
+    solution = optx.root_find(
+        _ring_residual, RING_SOLVER, static_y, args,
+        max_steps=100, throw=False,
+        adjoint=optx.ImplicitAdjoint(linear_solver=lx.AutoLinearSolver(well_posed=False)),
+    )
+    y = solution.value
+    ring_residual = jnp.max(jnp.abs(_ring_residual(y, args)))
+    displacement = unknown * y
+    residual = ring_residual
+    if model.speed_effects:
+        centres = inner_groove_centres(bearing, displacement)
+        positions = ball_positions(displacement, bearing, operating, model)
+        s = ball_state(bearing, operating, centres, positions, model)
+        ball = ball_residual(positions, centres, bearing, operating, model)
+        free = _free_balls(bearing, operating, centres)
+        size = s["inner_load"] + s["outer_load"] + s["centrifugal_force"] + load_scale * 1e-6
+        residual = jnp.maximum(residual, jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size)))
+    residual = jax.lax.stop_gradient(residual)
+    converged = residual < RESIDUAL_TOLERANCE
+    return Equilibrium(displacement, converged, residual, static_steps, solution.stats["num_steps"])
+
+
+def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):
+    """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated (exact, jacfwd)."""
+    return jax.jacfwd(ring_force)(displacement, bearing, operating, model)
+
+
+def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> dict:
+    """Per-ball loads, contact angles, Hertz contact sizes and pressures, kinematics at Δ (SI)."""
+    centres = inner_groove_centres(bearing, displacement)
+    positions = equilibrium_positions(displacement, bearing, operating, model)
+    s = ball_state(bearing, operating, centres, positions, model)
+    modulus = ball_raceway_modulus(bearing)
+    out = {"balls.azimuth": ball_azimuths(bearing)}
+    for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)):
+        load, angle = s[f"{side}_load"], s[f"{side}_angle"]
+        contact = hertz.point_contact(load, *curvature(bearing, angle), modulus, model.hertz_method)
+        out |= {f"balls.{side}.load": load, f"balls.{side}.contact_angle": angle,
+                f"balls.{side}.max_pressure": contact.max_pressure,
+                f"balls.{side}.semi_major_axis": contact.semi_major_axis,
+                f"balls.{side}.semi_minor_axis": contact.semi_minor_axis}
+    out["balls.orbital_speed"] = s["orbital_speed"]
+    out["balls.spin_speed"] = s["spin_speed"]
+    if model.centrifugal:
+        out["balls.centrifugal_force"] = s["centrifugal_force"]
+    if model.gyroscopic:
+        out["balls.gyroscopic_moment"] = s["gyroscopic_moment"]
+    return out
