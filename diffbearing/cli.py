@@ -24,9 +24,14 @@ def _parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     arguments = _parser().parse_args(argv)
+    import os
+
     import jax
 
     jax.config.update("jax_enable_x64", True)
+    # compiled models persist between runs (a second run of the same scene skips compilation)
+    cache = os.environ.get("JAX_COMPILATION_CACHE_DIR", os.path.join(os.path.expanduser("~"), ".cache", "diffbearing"))
+    jax.config.update("jax_compilation_cache_dir", cache)
     from .report import format_report, write_json
     from .scene import build_model, load_scene, run_model
 

@@ -20,7 +20,7 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from . import ball_equilibrium, hertz
+from . import ball_equilibrium, hertz, life
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
 
@@ -274,4 +274,35 @@ register(Block(
     outputs=(Output("stiffness", "N/m, N/rad, N*m/m, N*m/rad", "",
                     "5×5 stiffness K = dF/dΔ, balls re-equilibrated (jacfwd through the implicit solve)"),),
     compute=_stiffness,
+))
+
+
+def _life(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    bearing = inputs.bearing
+    computed = life.basic_dynamic_load_rating(bearing)
+    rating = computed if bearing.dynamic_load_rating is None else bearing.dynamic_load_rating
+    load = life.equivalent_dynamic_load(bearing, inputs.operating.force)
+    return {
+        "life.basic_dynamic_load_rating": rating,
+        "life.iso281_load_rating": computed,
+        "life.equivalent_load": load,
+        "life.L10": life.basic_rating_life(rating, load),
+        "life.L10r": life.reference_rating_life(bearing, rating, results["balls.inner.load"],
+                                                results["balls.outer.load"]),
+    }
+
+
+register(Block(
+    name="life",
+    bearing_types=BALL_TYPES,
+    enabled_by=("life", True),
+    requires=("equilibrium",),
+    outputs=(
+        Output("life.basic_dynamic_load_rating", "N", "kN", "C_r used (the scene's, else ISO 281)"),
+        Output("life.iso281_load_rating", "N", "kN", "C_r by ISO 281 from the geometry"),
+        Output("life.equivalent_load", "N", "kN", "ISO 281 equivalent load P = X Fr + Y Fa"),
+        Output("life.L10", "1e6 rev", "1e6 rev", "ISO 281 basic rating life L10 = (C/P)^3"),
+        Output("life.L10r", "1e6 rev", "1e6 rev", "ISO/TS 16281 reference rating life L10r"),
+    ),
+    compute=_life,
 ))

@@ -31,8 +31,8 @@ def _as_float(value):
     return np.asarray(value, dtype=np.float64)
 
 
-def _is_concrete(value) -> bool:
-    return not isinstance(value, jax.core.Tracer)
+def _is_concrete(*values) -> bool:
+    return not any(isinstance(value, jax.core.Tracer) for value in values)
 
 
 def check_range(name: str, value, *, low=None, high=None, low_open=True, high_open=True, unit="", why=""):
@@ -154,16 +154,16 @@ class BallBearing(eqx.Module):
         check_range("bearing.outer_groove_ratio", self.outer_groove_ratio, low=0.5, high=1.0, high_open=False)
         check_range("bearing.contact_angle", self.free_contact_angle, low=0.0, high=math.pi / 2, low_open=False, unit=" rad")
         check_range("bearing.dynamic_load_rating", self.dynamic_load_rating, low=0.0, unit=" N")
-        if _is_concrete(self.ball_diameter) and _is_concrete(self.pitch_diameter):
+        if _is_concrete(self.ball_diameter, self.pitch_diameter):
             largest = float(self.pitch_diameter) * math.sin(math.pi / self.ball_count)
             check_range("bearing.ball_diameter", self.ball_diameter, low=0.0, high=largest, unit=" m",
                         why="pitch_diameter·sin(π/balls), so that the balls fit on the pitch circle")
         for name in ("bore", "outer_diameter"):
             check_range(f"bearing.{name}", getattr(self, name), low=0.0, unit=" m")
-        if self.bore is not None and _is_concrete(self.bore):
+        if self.bore is not None and _is_concrete(self.bore, self.pitch_diameter, self.ball_diameter):
             check_range("bearing.bore", self.bore, low=0.0,
                         high=float(self.pitch_diameter - self.ball_diameter), unit=" m", why="pitch_diameter − ball_diameter")
-        if self.outer_diameter is not None and _is_concrete(self.outer_diameter):
+        if self.outer_diameter is not None and _is_concrete(self.outer_diameter, self.pitch_diameter, self.ball_diameter):
             check_range("bearing.outer_diameter", self.outer_diameter,
                         low=float(self.pitch_diameter + self.ball_diameter), unit=" m", why="pitch_diameter + ball_diameter")
 
@@ -207,7 +207,7 @@ def ball_bearing(
                                 ("outer", outer_groove_ratio, outer_groove_radius)):
         if (ratio is None) == (radius is None):
             raise ValueError(f"bearing: give exactly one of {side}_groove_ratio and {side}_groove_radius")
-        if radius is not None:
+        if radius is not None and _is_concrete(radius, ball_diameter):
             check_range(f"bearing.{side}_groove_radius", radius, low=0.5 * float(ball_diameter), unit=" m", why="the ball radius")
     fi = inner_groove_ratio if inner_groove_ratio is not None else inner_groove_radius / ball_diameter
     fo = outer_groove_ratio if outer_groove_ratio is not None else outer_groove_radius / ball_diameter
@@ -217,9 +217,10 @@ def ball_bearing(
         check_range("bearing.inner_groove_ratio", fi, low=0.5, high=1.0, high_open=False)
         check_range("bearing.outer_groove_ratio", fo, low=0.5, high=1.0, high_open=False)
         distance = (fi + fo - 1.0) * ball_diameter
-        check_range("bearing.radial_clearance", radial_clearance, low=0.0, high=2.0 * float(distance),
-                    low_open=False, unit=" m", why="2 (f_i + f_o − 1) D_w")
-        contact_angle = np.arccos(1.0 - radial_clearance / (2.0 * distance))
+        if _is_concrete(distance):
+            check_range("bearing.radial_clearance", radial_clearance, low=0.0, high=2.0 * float(distance),
+                        low_open=False, unit=" m", why="2 (f_i + f_o − 1) D_w")
+        contact_angle = jnp.arccos(1.0 - radial_clearance / (2.0 * distance))
     return BallBearing(
         ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, inner_groove_ratio=fi,
         outer_groove_ratio=fo, free_contact_angle=contact_angle, ball_material=ball_material,

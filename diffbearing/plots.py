@@ -3,6 +3,7 @@
 import jax
 import jax.numpy as jnp
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -34,6 +35,32 @@ def plot_hertz_load_curves(result, figure):
     figure.suptitle(f"{result.model.scene.title}: contacts at the free contact angle")
 
 
+def plot_sweep_stiffness(result, figure):
+    """Diagonal stiffness against the first swept quantity (scalar sweeps) or the point index."""
+    from .report import SI_OF_DIMENSION, SWEEP_DISPLAY, to_display
+    from .schema import lookup
+
+    key, values = next(iter(result.sweep_axes.items()))
+    dimension = lookup(key).dimension
+    if np.ndim(values) == 1 and dimension in SWEEP_DISPLAY:
+        x = to_display(values, SI_OF_DIMENSION[dimension], SWEEP_DISPLAY[dimension])
+        label = f"{key} [{SWEEP_DISPLAY[dimension]}]"
+    else:
+        x, label = np.arange(len(values)), f"{key} (point)"
+    stiffness = np.asarray(result.values["stiffness"]).reshape((len(values), -1, 5, 5))[:, 0]
+    translation, rotation = figure.subplots(1, 2)
+    for i, name in enumerate(("Kxx", "Kyy", "Kzz")):
+        translation.plot(x, stiffness[:, i, i] * 1e-6, label=name)
+    for i, name in ((3, "Kθxθx"), (4, "Kθyθy")):
+        rotation.plot(x, stiffness[:, i, i] * 1e-3, label=name)
+    translation.set(xlabel=label, ylabel="stiffness [N/µm]", title="translational stiffness")
+    rotation.set(xlabel=label, ylabel="stiffness [N·m/mrad]", title="tilting stiffness")
+    for axis in (translation, rotation):
+        axis.grid(alpha=0.3)
+        axis.legend()
+    figure.suptitle(result.model.scene.title)
+
+
 # Block name → plot; the last block of a run that has one draws the figure.
 PLOTS = {"raceway_contact": plot_hertz_load_curves}
 
@@ -41,6 +68,8 @@ PLOTS = {"raceway_contact": plot_hertz_load_curves}
 def save_plot(result, path: str) -> None:
     """Draw the plot of the run's main block into `path` (PNG, PDF or SVG by extension)."""
     plotters = [PLOTS[block.name] for block in result.model.blocks if block.name in PLOTS]
+    if result.sweep_axes:
+        plotters = [plot_sweep_stiffness] if "stiffness" in result.values else []
     if not plotters:
         raise ValueError("--plot: this scene has nothing to plot yet")
     figure = plt.figure(figsize=(11, 4.5), layout="constrained")

@@ -11,15 +11,17 @@ _ANGULAR_SPEED_DISPLAY = ("rad/s", "rpm")
 
 def to_display(value, unit: str, display: str):
     """Convert an SI value (scalar or array) from `unit` to the `display` unit."""
-    if unit == display:
+    if unit == display or not display:
         return np.asarray(value)
     return np.asarray(registry().Quantity(np.asarray(value, dtype=float), unit).to(display).magnitude)
 
 
 def _format_number(value) -> str:
     value = float(value)
-    if value == 0 or 1e-3 <= abs(value) < 1e6:
-        return f"{value:.4g}" if abs(value) >= 1e3 else f"{value:.5g}"
+    if value == 0 or 1e-3 <= abs(value) < 1e3:
+        return f"{value:.5g}"
+    if 1e3 <= abs(value) < 1e6:
+        return f"{value:.1f}" if abs(value) < 1e4 else f"{value:.0f}"
     return f"{value:.4e}"
 
 
@@ -89,8 +91,69 @@ def _ball_table_lines(result, outputs) -> list[str]:
     return lines
 
 
+# display units of swept keys, by schema dimension
+SWEEP_DISPLAY = {"length": "mm", "angular_speed": "rpm", "force": "kN", "moment": "N*m", "angle": "deg",
+                 "pressure": "GPa"}
+SI_OF_DIMENSION = {"length": "m", "angular_speed": "rad/s", "force": "N", "moment": "N*m", "angle": "rad",
+                   "pressure": "Pa"}
+
+
+def _swept_cells(key, values) -> tuple[str, list[str]]:
+    from .schema import lookup
+
+    dimension = lookup(key).dimension
+    display = SWEEP_DISPLAY.get(dimension)
+    shown = to_display(values, SI_OF_DIMENSION[dimension], display) if display else np.asarray(values)
+    cells = [("[" + ", ".join(_format_number(x) for x in np.ravel(v)) + "]") if np.ndim(v) else _format_number(v)
+             for v in shown]
+    return f"{key} [{_unit_label(display or '')}]", cells
+
+
+def format_sweep_report(result) -> str:
+    """Report of a sweep: one row per grid point with the swept values and the key results."""
+    lines = _header(result)
+    axes = result.sweep_axes
+    shape = tuple(len(v) for v in axes.values())
+    grid = f"{' × '.join(str(n) for n in shape)} = " if len(shape) > 1 else ""
+    lines += ["", f"Sweep over {grid}{int(np.prod(shape))} points ({', '.join(axes)}), one vmapped batch"]
+    grids = np.meshgrid(*[np.arange(n) for n in shape], indexing="ij")
+    flat_index = [g.ravel() for g in grids]
+    columns = []
+    for k, (key, values) in enumerate(axes.items()):
+        header, cells = _swept_cells(key, values)
+        columns.append((header, [cells[i] for i in flat_index[k]]))
+    values = {key: np.reshape(value, (-1,) + np.shape(value)[len(shape):]) for key, value in result.values.items()}
+    if "converged" in values:
+        columns.append(("converged", ["yes" if c else "NO" for c in values["converged"]]))
+    if "stiffness" in values:
+        for i, name in enumerate(("Kxx", "Kyy", "Kzz")):
+            columns.append((f"{name} [N/µm]", [_format_number(k[i, i] * 1e-6) for k in values["stiffness"]]))
+    if "displacement" in values:
+        columns.append(("δz [µm]", [_format_number(d[2] * 1e6) for d in values["displacement"]]))
+    if "balls.inner.max_pressure" in values:
+        columns.append(("max p0i [GPa]", [_format_number(p.max() / 1e9) for p in values["balls.inner.max_pressure"]]))
+    if "life.L10r" in values:
+        columns.append(("L10r [1e6 rev]", [_format_number(x) for x in values["life.L10r"]]))
+    widths = [max(len(h), *(len(c) for c in cells)) + 2 for h, cells in columns]
+    lines.append("  " + "".join(f"{h:>{w}}" for (h, _), w in zip(columns, widths)))
+    rows = len(columns[0][1])
+    shown = list(range(rows)) if rows <= 40 else list(range(20)) + [None] + list(range(rows - 20, rows))
+    for row in shown:
+        if row is None:
+            lines.append(f"  … {rows - 40} more rows in --json …")
+            continue
+        lines.append("  " + "".join(f"{cells[row]:>{w}}" for (_, cells), w in zip(columns, widths)))
+    if "converged" in values and not np.all(values["converged"]):
+        lines.append(f"  {int(np.sum(~values['converged'].astype(bool)))} points DID NOT CONVERGE")
+    lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s:.3f} s for {rows} points "
+              f"({result.run_s / rows * 1e3:.2f} ms per point, after compilation)"]
+    return "\n".join(lines)
+
+
 def format_report(result) -> str:
     """The text report of a run: header, aligned tables per output group, notes, timing."""
+    if result.sweep_axes:
+        return format_sweep_report(result)
     lines = _header(result)
     outputs = result.model.outputs
     values = result.values
@@ -152,6 +215,8 @@ def json_document(result) -> dict:
     flat["timing.compile_s"] = result.compile_s
     flat["timing.run_s"] = result.run_s
     document = {"title": result.model.scene.title, **nest(flat)}
+    if result.sweep_axes:
+        document["sweep"] = {key: np.asarray(values).tolist() for key, values in result.sweep_axes.items()}
     document["not_computed"] = list(result.model.not_implemented)
     return document
 

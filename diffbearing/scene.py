@@ -118,13 +118,17 @@ def _lubricant(values: dict) -> Lubricant | None:
 
 def build_inputs(scene: Scene) -> effect_registry.SceneInputs:
     """Parameter pytrees of a ball-bearing scene (ValueError names any bad value)."""
-    v = scene.values
     if scene.bearing_type not in effect_registry.BALL_TYPES:
         raise NotImplementedError(f"bearing.type = {scene.bearing_type!r} is not available yet "
                                   "(roller bearings come with the roller-contact and EHL issues)")
+    return inputs_from_values(scene.values)
+
+
+def inputs_from_values(v: dict) -> effect_registry.SceneInputs:
+    """Parameter pytrees from {dotted key: SI value}; values may be JAX tracers (sweeps under vmap)."""
     ring = _material(v, "", BEARING_STEEL)
     bearing = ball_bearing(
-        kind=scene.bearing_type,
+        kind=v["bearing.type"],
         ball_diameter=v["bearing.ball_diameter"], pitch_diameter=v["bearing.pitch_diameter"],
         balls=v["bearing.balls"],
         inner_groove_ratio=v.get("bearing.inner_groove_ratio"),
@@ -164,9 +168,11 @@ class Model:
 
 def build_model(scene: Scene) -> Model:
     """Assemble the model of a scene: only the blocks its effects name (and what they require)."""
-    if scene.sweep:
-        raise NotImplementedError("[sweep] tables are not available yet (they come with the ball-bearing issue)")
     inputs = build_inputs(scene)
+    if scene.sweep:
+        from .sweep import sweep_axes
+
+        sweep_axes(scene.sweep)  # bad [sweep] entries fail here, before any compilation
     blocks, missing = effect_registry.resolve(scene.bearing_type, scene.table("effects"))
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing)
@@ -180,10 +186,16 @@ class RunResult:
     values: dict
     compile_s: float  # 0 when the compiled model was reused from an earlier run in this process
     run_s: float
+    sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a sweep
 
 
-def run_model(model: Model) -> RunResult:
-    """Compile (timed; reused when cached), then run (timed, excluding compilation) the model."""
+def run_model(model: Model, progress: bool = True) -> RunResult:
+    """Compile (timed; reused when cached), then run (timed, excluding compilation) the model;
+    a scene with a [sweep] table runs as one vmapped batch (see sweep.py)."""
+    if model.scene.sweep:
+        from .sweep import run_sweep, sweep_axes
+
+        return run_sweep(model, sweep_axes(model.scene.sweep), progress=progress)
     start = time.perf_counter()
     executable, cached = effect_registry.compiled(model.blocks, model.settings, model.inputs)
     compile_s = 0.0 if cached else time.perf_counter() - start

@@ -1,0 +1,113 @@
+"""Sweeps: a scene's [sweep] table evaluated as one batch under `jax.vmap`, in chunks.
+
+    [sweep]
+    "operating.inner_speed" = { start = "0 rpm", stop = "20000 rpm", num = 201 }
+    "operating.force" = [["0 N", "0 N", "5 kN"], ["0 N", "0 N", "10 kN"]]
+
+Each entry is {start, stop, num} (scalars, or vectors interpolated componentwise) or an explicit
+list; several entries form a grid (first key = first axis). Each point's parameter pytrees are
+built inside the vmapped function from the swept SI values, so any numeric key can be swept; keys
+that change array shapes (`bearing.balls`) or choices cannot. The batch runs in chunks of
+`CHUNK` points through one compiled function (a tqdm bar counts the chunks); with several JAX
+devices each chunk is sharded over them along the batch axis (`jax.sharding`). Output arrays gain
+the grid's leading axes.
+"""
+
+import itertools
+import time
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+from jax.sharding import Mesh, NamedSharding, PartitionSpec
+from tqdm import tqdm
+
+from . import effects as effect_registry
+from .schema import convert, lookup
+
+CHUNK = 64
+
+
+def sweep_axes(sweep: dict) -> dict[str, np.ndarray]:
+    """{dotted key: (n, ...) SI values} of a [sweep] table; ValueError names a bad entry."""
+    axes = {}
+    for key, spec in sweep.items():
+        entry = lookup(key)
+        if entry.kind not in ("quantity", "quantities", "number"):
+            raise ValueError(f"sweep.{key}: only numeric values can be swept (this key is {entry.kind})")
+        if isinstance(spec, dict):
+            unknown = set(spec) - {"start", "stop", "num"}
+            if unknown or not {"start", "stop", "num"} <= set(spec):
+                raise ValueError(f"sweep.{key}: expected {{start, stop, num}}, got keys {sorted(spec)}")
+            num = spec["num"]
+            if isinstance(num, bool) or not isinstance(num, int) or num < 1:
+                raise ValueError(f"sweep.{key}.num must be an integer ≥ 1, got {num!r}")
+            start = np.asarray(convert(key, spec["start"]), dtype=float)
+            stop = np.asarray(convert(key, spec["stop"]), dtype=float)
+            axes[key] = np.linspace(start, stop, num)
+        elif isinstance(spec, list) and spec:
+            axes[key] = np.asarray([convert(key, item) for item in spec], dtype=float)
+        else:
+            raise ValueError(f"sweep.{key}: expected {{start, stop, num}} or a non-empty list, got {spec!r}")
+    return axes
+
+
+def grid_points(axes: dict) -> tuple[tuple[int, ...], dict[str, np.ndarray]]:
+    """(grid shape, {key: (N, ...) values}) of the full grid, first key slowest."""
+    shape = tuple(len(values) for values in axes.values())
+    index = np.array(list(itertools.product(*(range(n) for n in shape)))).reshape(-1, len(shape))
+    return shape, {key: values[index[:, k]] for k, (key, values) in enumerate(axes.items())}
+
+
+def _check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
+    """Validate the parameters at every corner of the grid (ValueError names the parameter)."""
+    for corner in itertools.product(*[(values[0], values[-1]) for values in axes.values()]):
+        values = dict(scene_values)
+        for key, value in zip(axes, corner):
+            values[key] = value.tolist() if np.ndim(value) else float(value)
+        inputs_from_values(values)
+
+
+def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
+    """Evaluate `model` over the grid `axes`; returns a scene.RunResult with batched values."""
+    from .scene import RunResult, inputs_from_values
+
+    _check_corners(model.scene.values, axes, inputs_from_values)
+    shape, points = grid_points(axes)
+    count = int(np.prod(shape))
+    devices = jax.devices()
+    chunk = max(len(devices), min(chunk, count))
+    chunk = -(-chunk // len(devices)) * len(devices)  # a multiple of the device count
+    evaluate = effect_registry.evaluate(model.blocks, model.settings)
+    base = dict(model.scene.values)
+
+    def point(swept):
+        values = dict(base)
+        values.update(swept)
+        return evaluate(inputs_from_values(values))
+
+    batched = jax.jit(jax.vmap(point))
+    sharding = NamedSharding(Mesh(np.array(devices), ("batch",)), PartitionSpec("batch")) if len(devices) > 1 else None
+
+    def chunk_inputs(start):
+        stop = min(start + chunk, count)
+        pad = chunk - (stop - start)
+        arrays = {key: jnp.asarray(np.concatenate([v[start:stop], np.repeat(v[stop - 1:stop], pad, axis=0)]))
+                  for key, v in points.items()}
+        return jax.device_put(arrays, sharding) if sharding is not None else arrays, stop - start
+
+    first, _ = chunk_inputs(0)
+    start_time = time.perf_counter()
+    executable = batched.lower(first).compile()
+    compile_s = time.perf_counter() - start_time
+    pieces = []
+    run_start = time.perf_counter()
+    starts = range(0, count, chunk)
+    for start in tqdm(starts, desc="sweep", unit="chunk", disable=not progress or len(starts) < 2):
+        arrays, valid = chunk_inputs(start)
+        out = jax.block_until_ready(executable(arrays))
+        pieces.append({key: np.asarray(value)[:valid] for key, value in out.items()})
+    run_s = time.perf_counter() - run_start
+    values = {key: np.concatenate([p[key] for p in pieces]).reshape(shape + pieces[0][key].shape[1:])
+              for key in pieces[0]}
+    return RunResult(model, values, compile_s, run_s, sweep_axes=axes)
