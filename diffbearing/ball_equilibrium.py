@@ -44,7 +44,8 @@ import optimistix as optx
 from . import hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
 from .params import BallBearing, Operating, groove_curvature_centre_distance
-from .raceway_contact import ball_raceway_modulus, contact_constants, inner_curvature, outer_curvature
+from .raceway_contact import (ball_raceway_modulus, contact_constant_table, contact_constants, inner_curvature,
+                              outer_curvature, table_constants)
 from .solvers import minimise_convex
 
 BALL_NEWTON_MAX_STEPS = 40
@@ -103,12 +104,27 @@ def inner_groove_centres(bearing: BallBearing, displacement):
 
 
 def hertz_constants(bearing: BallBearing, inner_angle, outer_angle, model: BallModel):
-    """(K_i, K_o) [N/m^1.5] at the contact angles, or at α₀ (`model.hertz_constants`)."""
+    """(K_i, K_o) [N/m^1.5] at the contact angles, or at α₀ (`model.hertz_constants`).
+
+    Inside the solvers the bearing carries a Chebyshev table of K(α) (`with_constant_table`);
+    without one each contact's constant is solved exactly.
+    """
     if model.hertz_constants == "free_contact_angle":
         angle = bearing.free_contact_angle
         return tuple(jnp.broadcast_to(k, jnp.shape(inner_angle))
                      for k in contact_constants(bearing, angle, angle, model.hertz_method))
+    if bearing.contact_constant_table is not None:
+        return table_constants(bearing.contact_constant_table, inner_angle, outer_angle)
     return contact_constants(bearing, inner_angle, outer_angle, model.hertz_method)
+
+
+def with_constant_table(bearing: BallBearing, model: BallModel) -> BallBearing:
+    """The bearing with a fresh Chebyshev table of its Hertz constants for `model`'s fidelity level."""
+    table = None
+    if model.hertz_constants == "contact_angle":
+        table = contact_constant_table(eqx.tree_at(lambda b: b.contact_constant_table, bearing, None,
+                                                   is_leaf=lambda x: x is None), model.hertz_method)
+    return eqx.tree_at(lambda b: b.contact_constant_table, bearing, table, is_leaf=lambda x: x is None)
 
 
 def _groove_offsets(bearing: BallBearing):
@@ -359,6 +375,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     not resist) the adjoint uses a least-squares pseudo-inverse: finite, not a true derivative.
     """
     require_float64()
+    bearing = with_constant_table(bearing, model)
     unknown, weight, load_scale = _scales(bearing, operating, model)
     static_y, _, static_steps = minimise_convex(
         _static_energy, jnp.zeros(5), (bearing, operating, hertz_scale(bearing, model) * 1e3, unknown, load_scale),
@@ -389,11 +406,12 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):
     """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated (exact, jacfwd)."""
-    return jax.jacfwd(ring_force)(displacement, bearing, operating, model)
+    return jax.jacfwd(ring_force)(displacement, with_constant_table(bearing, model), operating, model)
 
 
 def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> dict:
     """Per-ball loads, contact angles, Hertz contact sizes and pressures, kinematics at Δ (SI)."""
+    bearing = with_constant_table(bearing, model)
     centres = inner_groove_centres(bearing, displacement)
     positions = equilibrium_positions(displacement, bearing, operating, model)
     s = ball_state(bearing, operating, centres, positions, model)

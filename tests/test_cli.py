@@ -118,7 +118,7 @@ def test_effects_not_named_are_never_traced(monkeypatch):
     assert calls == [] and "stiffness" not in off.values
     on = run_model(build_model(load_scene(overrides=["effects.stiffness=true"])))
     assert calls == [1] and on.values["stiffness"].shape == (5, 5)
-    assert [b.name for b in on.model.blocks] == ["raceway_contact", "equilibrium", "stiffness"]
+    assert [b.name for b in on.model.blocks] == ["raceway_contact", "equilibrium", "stiffness", "life"]
 
 
 def test_speed_effect_outputs_only_when_named():
