@@ -339,28 +339,50 @@ def _scales(bearing: BallBearing, operating: Operating, model: BallModel):
     return unknown, weight, safe_norm(applied * weight) + characteristic
 
 
+def _controls(operating: Operating):
+    """(free, offset): which unknowns are solved (1) or prescribed (0), and the prescribed displacement.
+
+    With `operating.axial_displacement` the axial displacement δz is held fixed (preload by
+    displacement); otherwise every component follows from the applied load.
+    """
+    if operating.axial_displacement is None:
+        return jnp.ones(5), jnp.zeros(5)
+    return jnp.array([1.0, 1.0, 0.0, 1.0, 1.0]), jnp.zeros(5).at[2].set(operating.axial_displacement)
+
+
+def _displacement(y, unknown, operating):
+    free, offset = _controls(operating)
+    return unknown * y * free + offset
+
+
 def _static_energy(y, args):
-    """Scaled potential of the static problem with K_n(α₀): Σ (2/5) K_n δ^{5/2} − F·Δ (convex in Δ)."""
+    """Scaled potential of the static problem with K_n(α₀): Σ (2/5) K_n δ^{5/2} − F·Δ (convex in Δ);
+    a prescribed component contributes ½ y² (so its unknown stays 0)."""
     bearing, operating, combined, unknown, load_scale = args
-    displacement = unknown * y
+    free, _ = _controls(operating)
+    displacement = _displacement(y, unknown, operating)
     centres = inner_groove_centres(bearing, displacement)
     approach = jnp.linalg.norm(centres, axis=-1) - groove_curvature_centre_distance(bearing)
-    applied = jnp.concatenate([operating.force, operating.moment])
+    applied = jnp.concatenate([operating.force, operating.moment]) * free
     energy = 0.4 * combined * jnp.sum(positive_power(approach, 2.5)) - jnp.dot(applied, displacement)
-    return energy / (load_scale * DISPLACEMENT_SCALE)
+    return energy / (load_scale * DISPLACEMENT_SCALE) + 0.5 * jnp.sum((1.0 - free) * y**2)
 
 
 def _ring_residual(y, args):
-    """Scaled ring residual (ring force − applied load) · w / load scale, for optimistix."""
+    """Scaled ring residual (ring force − applied load) · w / load scale, for optimistix; a prescribed
+    component's equation is replaced by its unknown (= 0)."""
     bearing, operating, model, unknown, weight, load_scale = args
+    free, _ = _controls(operating)
     applied = jnp.concatenate([operating.force, operating.moment])
-    return (ring_force(unknown * y, bearing, operating, model) - applied) * weight / load_scale
+    residual = (ring_force(_displacement(y, unknown, operating), bearing, operating, model) - applied) * weight / load_scale
+    return jnp.where(free > 0, residual, y)
 
 
 class Equilibrium(eqx.Module):
     """Solution of the ring problem: displacement Δ [m, rad] and how it was reached."""
 
     displacement: jax.Array
+    force: jax.Array  # [Fx, Fy, Fz, Mx, My] the balls exert: the applied load, and Fz under displacement control
     converged: jax.Array  # bool
     residual: jax.Array  # max of the scaled ring residual and the relative ball residuals [-]
     static_steps: jax.Array
@@ -369,6 +391,9 @@ class Equilibrium(eqx.Module):
 
 def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> Equilibrium:
     """Inner-ring displacement Δ in equilibrium with the applied load; needs no initial guess.
+
+    With `operating.axial_displacement` set, δz is prescribed (preload by displacement) and the
+    axial force is an output (`Equilibrium.force[2]`).
 
     Differentiable with respect to every array leaf of `bearing` and `operating` (implicit adjoint,
     forward and reverse mode). At a singular stiffness (zero load, or a direction the bearing does
@@ -389,7 +414,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     )
     y = solution.value
     ring_residual = jnp.max(jnp.abs(_ring_residual(y, args)))
-    displacement = unknown * y
+    displacement = _displacement(y, unknown, operating)
     residual = ring_residual
     if model.speed_effects:
         centres = inner_groove_centres(bearing, displacement)
@@ -401,7 +426,8 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
         residual = jnp.maximum(residual, jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size)))
     residual = jax.lax.stop_gradient(residual)
     converged = residual < RESIDUAL_TOLERANCE
-    return Equilibrium(displacement, converged, residual, static_steps, solution.stats["num_steps"])
+    force = ring_force(displacement, bearing, operating, model)
+    return Equilibrium(displacement, force, converged, residual, static_steps, solution.stats["num_steps"])
 
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):

@@ -224,7 +224,8 @@ def ball_model(settings: dict) -> "ball_equilibrium.BallModel":
 def _equilibrium(inputs: SceneInputs, settings: dict, results: dict) -> dict:
     model = ball_model(settings)
     solution = ball_equilibrium.solve_equilibrium(inputs.bearing, inputs.operating, model)
-    out = {"displacement": solution.displacement, "converged": solution.converged, "residual": solution.residual}
+    out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
+           "residual": solution.residual}
     return out | ball_equilibrium.ball_results(solution.displacement, inputs.bearing, inputs.operating, model)
 
 
@@ -246,6 +247,7 @@ register(Block(
     uses=("centrifugal", "gyroscopic"),
     outputs=(
         Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]"),
+        Output("force", "N, N*m", "", "load the balls carry [Fx, Fy, Fz, Mx, My] (Fz follows under axial_displacement)"),
         Output("converged", "", "", "the equilibrium solver converged"),
         Output("residual", "", "", "largest scaled residual of ring and ball equations"),
         Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x"),

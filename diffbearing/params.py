@@ -239,6 +239,9 @@ class Operating(eqx.Module):
     outer_speed: np.ndarray = eqx.field(converter=_as_float)  # ω_o [rad/s]
     force: np.ndarray = eqx.field(converter=_as_float)  # [Fx, Fy, Fz] [N]
     moment: np.ndarray = eqx.field(converter=_as_float)  # [Mx, My] [N·m]
+    # Preload by axial displacement: δz [m] held fixed (Fz must be 0; the axial force follows).
+    axial_displacement: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v),
+                                                      default=None)
 
     def __check_init__(self):
         check_range("operating.inner_speed", self.inner_speed, unit=" rad/s")
@@ -249,3 +252,7 @@ class Operating(eqx.Module):
             value = getattr(self, name)
             if _is_concrete(value) and np.shape(value)[-1:] != (size,):
                 raise ValueError(f"operating.{name} must have {size} components, got shape {np.shape(value)}")
+        check_range("operating.axial_displacement", self.axial_displacement, unit=" m")
+        if self.axial_displacement is not None and _is_concrete(self.force) and np.any(np.asarray(self.force)[..., 2] != 0):
+            raise ValueError("operating.force: Fz must be 0 with operating.axial_displacement "
+                             "(the axial force follows from the prescribed displacement)")

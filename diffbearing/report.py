@@ -159,7 +159,8 @@ def format_report(result) -> str:
     values = result.values
     sections: dict[str, dict[str, dict]] = {}
     for key, out in outputs.items():
-        if key not in values or key.startswith("balls.") or key in ("displacement", "stiffness", "converged", "residual"):
+        if key not in values or key.startswith("balls.") or key in ("displacement", "force", "stiffness", "converged",
+                                                                     "residual"):
             continue
         parts = key.split(".")
         if len(parts) == 3 and parts[1] in ("inner", "outer"):
@@ -185,6 +186,8 @@ def format_report(result) -> str:
                 lines.append(f"  {label:<48}" + "".join(f"{cell:>16}" for cell in cells) + f"  {_unit_label(out.display)}")
     if "displacement" in values:
         lines += _displacement_lines(values["displacement"])
+    if result.model.inputs.operating.axial_displacement is not None and "force" in values:
+        lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
     if "stiffness" in values:
         lines += _stiffness_lines(values["stiffness"])
     lines += _ball_table_lines(result, outputs)

@@ -143,6 +143,7 @@ def inputs_from_values(v: dict) -> effect_registry.SceneInputs:
     operating = Operating(
         inner_speed=v.get("operating.inner_speed", 0.0), outer_speed=v.get("operating.outer_speed", 0.0),
         force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
+        axial_displacement=v.get("operating.axial_displacement"),
     )
     return effect_registry.SceneInputs(bearing=bearing, operating=operating, lubricant=_lubricant(v))
 

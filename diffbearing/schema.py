@@ -76,6 +76,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "force": Key("quantities", "force", length=3, doc="[Fx, Fy, Fz] on the inner ring"),
         "moment": Key("quantities", "moment", length=2, doc="[Mx, My] on the inner ring"),
         "oil_layer": _q("length", "inlet oil supply layer"),
+        "axial_displacement": _q("length", "preload by axial displacement: δz held fixed, Fz must be 0"),
     },
     "effects": {
         "centrifugal": Key("boolean"),

@@ -209,3 +209,29 @@ def test_constant_table_reproduces_exact_hertz_constants(make):
     slope_exact = jax.vmap(jax.grad(lambda a: contact_constants(bearing, a, a)[0]))(angle[1:-1])
     slope_table = jax.vmap(jax.grad(lambda a: table_constants(table, a, a)[0]))(angle[1:-1])
     np.testing.assert_allclose(slope_table, slope_exact, atol=1e-9 * float(jnp.max(jnp.abs(slope_exact))))
+
+
+def test_preload_by_axial_displacement_inverts_preload_by_force(solve):
+    """Solve with Fz = 6 kN, then prescribe the δz found: the axial force returned is 6 kN and the
+    other components are unchanged (displacement control is the inverse of force control)."""
+    bearing = deep_groove_6411E(0.0)
+    by_force, _, _ = solve(bearing, Operating(3000 * RPM, 0.0, [4e3, 1e3, 6e3], [50.0, 0.0]))
+    prescribed = Operating(3000 * RPM, 0.0, [4e3, 1e3, 0.0], [50.0, 0.0],
+                           axial_displacement=by_force.displacement[2])
+    by_displacement = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))(bearing, prescribed)
+    assert bool(by_displacement.converged)
+    np.testing.assert_allclose(by_displacement.force, [4e3, 1e3, 6e3, 50.0, 0.0], rtol=1e-8, atol=1e-6)
+    np.testing.assert_allclose(by_displacement.displacement, by_force.displacement, rtol=1e-8, atol=1e-14)
+
+
+def test_inner_raceway_control_converges_and_balances():
+    """Inner-raceway control (gyroscopic moment reacted at the inner contact) at 12000 r/min: the
+    ball equations and the ring balance hold, and the outer contact angles differ from outer control."""
+    bearing = build_inputs(load_scene()).bearing
+    operating = Operating(12000 * RPM, 0.0, [15e3, 18e3, 35e3], [100.0, 300.0])
+    inner = BallModel(centrifugal=True, gyroscopic=True, race_control="inner")
+    solution = jax.jit(lambda b, o: solve_equilibrium(b, o, inner))(bearing, operating)
+    assert bool(solution.converged)
+    np.testing.assert_allclose(solution.force, [15e3, 18e3, 35e3, 100.0, 300.0], rtol=1e-9)
+    outer = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))(bearing, operating)
+    assert not np.allclose(solution.displacement, outer.displacement, rtol=1e-6)
