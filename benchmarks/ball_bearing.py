@@ -1,6 +1,6 @@
 """Quasi-static ball bearing: diffbearing (JAX) against the classical NumPy/SciPy solution.
 
-    python benchmarks/ball_bearing.py [--cases 1000] [--scipy-cases 8] [--repeats 5]
+    python benchmarks/ball_bearing.py [--cases 1000] [--scipy-cases 8] [--repeats 15]
 
 Seed 001 bearing (built-in example, d_m = 252 mm) at 1500 r/min, centrifugal and gyroscopic
 effects on. Measured in one run on one machine:
@@ -59,7 +59,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--cases", type=int, default=1000)
     parser.add_argument("--scipy-cases", type=int, default=8)
-    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--repeats", type=int, default=15)
     args = parser.parse_args()
 
     scene = load_scene(overrides=["operating.inner_speed=1500 rpm"])
