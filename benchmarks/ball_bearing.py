@@ -23,15 +23,14 @@ from pathlib import Path
 import jax
 
 jax.config.update("jax_enable_x64", True)
-import jax.numpy as jnp  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).parent))
 from scipy_ball_bearing import ClassicalBallBearing  # noqa: E402
+from timing import median_time  # noqa: E402
 
 from diffbearing import effects  # noqa: E402
 from diffbearing.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix  # noqa: E402
-from diffbearing.params import Operating  # noqa: E402
 from diffbearing.scene import build_model, load_scene  # noqa: E402
 from diffbearing.sweep import run_sweep  # noqa: E402
 
@@ -39,14 +38,6 @@ RESULTS = Path(__file__).parent / "results"
 MODEL = BallModel(centrifugal=True, gyroscopic=True)
 SPEED = 1500 * np.pi / 30
 
-
-def median_time(function, repeats):
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        jax.block_until_ready(function())
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def sweep_forces(cases):

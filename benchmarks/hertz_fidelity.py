@@ -13,6 +13,7 @@ compile time apart. Writes benchmarks/results/hertz_fidelity.{md,png}.
 import argparse
 import platform
 import statistics
+import sys
 import time
 from pathlib import Path
 
@@ -27,6 +28,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.optimize import brentq  # noqa: E402
 from scipy.special import ellipe, ellipk  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).parent))
+from timing import median_time  # noqa: E402
 
 from diffbearing import hertz  # noqa: E402
 
@@ -50,14 +54,6 @@ def scipy_point_contact(load, curvature_sum, difference):
     approach = k_int * (9 / (2 * e_int * radius) * (load / (np.pi * kappa * MODULUS)) ** 2) ** (1 / 3)
     return a, b, approach, 3 * load / (2 * np.pi * a * b)
 
-
-def median_time(function, repeats):
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        jax.block_until_ready(function())
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def main():

@@ -3,6 +3,13 @@
 Enable float64 before use: ``jax.config.update("jax_enable_x64", True)``.
 """
 
+from .ball_equilibrium import (
+    BallModel as BallModel,
+    ball_results as ball_results,
+    ring_force as ring_force,
+    solve_equilibrium as solve_equilibrium,
+    stiffness_matrix as stiffness_matrix,
+)
 from .elliptic import complete_elliptic_integrals as complete_elliptic_integrals
 from .hertz import (
     LineContact as LineContact,
@@ -15,6 +22,17 @@ from .hertz import (
     line_contact_approach_palmgren as line_contact_approach_palmgren,
     load_deflection_constant as load_deflection_constant,
     point_contact as point_contact,
+)
+from .life import (
+    basic_dynamic_load_rating as basic_dynamic_load_rating,
+    basic_rating_life as basic_rating_life,
+    equivalent_dynamic_load as equivalent_dynamic_load,
+    reference_rating_life as reference_rating_life,
+)
+from .load_distribution import (
+    load_zone_parameter as load_zone_parameter,
+    sjovall_integrals as sjovall_integrals,
+    stribeck_max_ball_load as stribeck_max_ball_load,
 )
 from .params import (
     BEARING_STEEL as BEARING_STEEL,
@@ -33,3 +51,4 @@ from .raceway_contact import (
     outer_curvature as outer_curvature,
 )
 from .scene import build_model as build_model, load_scene as load_scene, run_model as run_model
+from .sweep import run_sweep as run_sweep

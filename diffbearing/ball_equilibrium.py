@@ -211,8 +211,8 @@ def _masked_residual(positions, centres, bearing, operating, model, free, refere
 
 def hertz_scale(bearing: BallBearing, model: BallModel):
     """K_n(α₀) × 1 µm^{1/2} [N/m]: the stiffness scale used to weigh a free ball's placeholder equation."""
-    k_inner, k_outer = contact_constants(bearing, bearing.free_contact_angle, bearing.free_contact_angle,
-                                         model.hertz_method)
+    angle = jnp.asarray(bearing.free_contact_angle)
+    k_inner, k_outer = hertz_constants(bearing, angle, angle, model)
     combined = (k_inner ** (-2.0 / 3.0) + k_outer ** (-2.0 / 3.0)) ** -1.5
     return combined * 1e-3
 
