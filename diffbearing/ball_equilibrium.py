@@ -11,7 +11,7 @@ first and radial (outward) second:
     B D_w = (f_i + f_o − 1) D_w,  R_i = d_m/2 + (f_i − 1/2) D_w cos α₀
     ball centre X:  δ_o = |X| − (f_o − ½)D_w,  δ_i = |A − X| − (f_i − ½)D_w
     tan α_o = X₁/X₂,  tan α_i = (A₁ − X₁)/(A₂ − X₂),  Q = K(α) max(δ, 0)^{3/2}  (Hertz, exact K(α))
-    ball equilibrium (Harris eqs. 3.23–3.24 with raceway control factors λ_i, λ_o):
+    ball equilibrium (Harris & Kotzalas vol. 2, ch. 3, raceway control factors λ_i, λ_o):
         Q_i sin α_i − Q_o sin α_o − (M_g/D_w)(λ_i cos α_i − λ_o cos α_o) = 0
         Q_i cos α_i − Q_o cos α_o + (M_g/D_w)(λ_i sin α_i − λ_o sin α_o) + F_c = 0
     ring equilibrium: [Fx, Fy, Fz, Mx, My] = Σ_j Q_i [cos α_i cos ψ, cos α_i sin ψ, sin α_i,

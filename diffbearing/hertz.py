@@ -10,7 +10,7 @@ Harris & Kotzalas, *Rolling Bearing Analysis* 5th ed., vol. 1, ch. 6):
   solves (Johnson, Contact Mechanics, eq. 4.39 rearranged)
       F(ρ) = ((κ² + 1) 𝓔 − 2 𝓚) / ((κ² − 1) 𝓔) = 1 − 2 (1 − m) ((𝓚 − 𝓔)/m) / 𝓔.
   The right-hand form has no 0/0 at κ = 1 (see elliptic.py).
-* then, for a normal load Q [N] (Hamrock–Brewe 1983, eqs. 3–9; Harris eq. 6.36–6.41):
+* then, for a normal load Q [N] (Hamrock & Brewe 1983; Harris & Kotzalas vol. 1, ch. 6):
       a = (6 κ² 𝓔 Q R / (π E'))^{1/3},   b = (6 𝓔 Q R / (π κ E'))^{1/3},
       δ = 𝓚 (9/(2 𝓔 R) · (Q/(π κ E'))²)^{1/3},   p₀ = 3Q / (2π a b),
       Q = K_c δ^{3/2} with K_c = π κ E' √(2 𝓔 R / (9 𝓚³)).
@@ -43,7 +43,7 @@ _ELLIPTICITY_NEWTON_STEPS = 6
 
 
 def effective_modulus(modulus_1, poisson_1, modulus_2, poisson_2):
-    """Effective elastic modulus E' = 2/((1−ν₁²)/E₁ + (1−ν₂²)/E₂) [Pa] (Hamrock eq. 8.xx)."""
+    """Effective elastic modulus E' = 2/((1−ν₁²)/E₁ + (1−ν₂²)/E₂) [Pa] (E' = 2E* of Johnson, Contact Mechanics, §4.2)."""
     return 2.0 / ((1.0 - poisson_1**2) / modulus_1 + (1.0 - poisson_2**2) / modulus_2)
 
 
@@ -104,7 +104,7 @@ def ellipticity_and_integrals(curvature_difference, method="exact"):
         elliptic_k = 1.5277 + 0.6023 * jnp.log(radius_ratio)
         return kappa, elliptic_k, elliptic_e
     if method == "hamrock_brewe":
-        # Hamrock & Brewe (1983), J. Lubr. Technol. 105(2):171–177, eqs. 6–8.
+        # Hamrock & Brewe (1983), J. Lubr. Technol. 105(2):171–177.
         kappa = radius_ratio ** (2.0 / jnp.pi)
         elliptic_e = 1.0 + (jnp.pi / 2.0 - 1.0) / radius_ratio
         elliptic_k = jnp.pi / 2.0 + (jnp.pi / 2.0 - 1.0) * jnp.log(radius_ratio)
@@ -126,7 +126,7 @@ class PointContact(eqx.Module):
 def load_deflection_constant(curvature_sum, curvature_difference, effective_modulus, method="exact"):
     """Hertz load–deflection constant K_c [N/m^1.5] in Q = K_c δ^{3/2}.
 
-    K_c = π κ E' √(2 𝓔 R / (9 𝓚³)), R = 1/Σρ (Harris eq. 6.43, Hamrock–Brewe 1983 eq. 9).
+    K_c = π κ E' √(2 𝓔 R / (9 𝓚³)), R = 1/Σρ (from δ and Q above; Harris & Kotzalas vol. 1, ch. 6).
     Arguments: Σρ [1/m], F(ρ) [-], E' [Pa]; `method` as in `ellipticity_and_integrals`.
     """
     kappa, elliptic_k, elliptic_e = ellipticity_and_integrals(curvature_difference, method)
@@ -182,7 +182,7 @@ class LineContact(eqx.Module):
 def line_contact(load_per_length, radius, effective_modulus):
     """Hertz line contact of two cylinders (plane strain).
 
-    b = √(8 w R / (π E')),  p₀ = √(w E' / (2π R))  (Hamrock eq. 8.xx; Johnson eq. 4.43).
+    b = √(8 w R / (π E')),  p₀ = √(w E' / (2π R))  (Johnson, Contact Mechanics, eq. 4.43, with E* = E'/2).
 
     Args:
         load_per_length: w [N/m], ≥ 0.
@@ -198,7 +198,7 @@ def line_contact(load_per_length, radius, effective_modulus):
 def line_contact_approach_palmgren(load, length):
     """Approach δ [m] of a steel roller line contact, Palmgren's δ = 3.84e-5 Q^0.9 / l^0.8.
 
-    Palmgren's empirical formula (Harris & Kotzalas eq. 6.52) in mm and N for steel on steel
+    Palmgren's empirical formula (Harris & Kotzalas vol. 1, ch. 6) in mm and N for steel on steel
     (E ≈ 207 GPa, ν = 0.3); valid for steel only. Args: Q [N] ≥ 0, effective length l [m].
     """
     return 3.84e-5 * positive_power(load, 0.9) / (length * 1e3) ** 0.8 * 1e-3

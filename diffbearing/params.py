@@ -73,8 +73,8 @@ class Material(eqx.Module):
         check_range("material.density", self.density, low=0.0, unit=" kg/m^3")
 
 
-# AISI 52100 / GCr15 through-hardened bearing steel (Harris & Kotzalas vol. 1, table 6.x;
-# 208 GPa reproduces seed 002's a = 9.234 mm within 0.3 %).
+# AISI 52100 / GCr15 through-hardened bearing steel: E = 208 GPa, ν = 0.3 (handbook values lie at
+# 205–210 GPa; 208 GPa reproduces seed 002's a = 9.234 mm within 0.3 %), ρ = 7830 kg/m³.
 BEARING_STEEL = Material(208e9, 0.3, 7830.0, name="bearing_steel")
 # Hot-isostatically pressed silicon nitride for hybrid bearings (typical catalogue values).
 SILICON_NITRIDE = Material(310e9, 0.26, 3200.0, name="silicon_nitride")
@@ -100,7 +100,7 @@ def wooster_pressure_viscosity(viscosity):
     """Pressure–viscosity coefficient α [1/Pa] of a mineral oil from its viscosity η₀ [Pa·s].
 
     Wooster's correlation α = (0.6 + 0.965 log₁₀ η₀[cP]) × 1e-8 Pa⁻¹ (Stachowiak & Batchelor,
-    *Engineering Tribology*, eq. 2.8). A rough estimate: replace it with supplier data.
+    *Engineering Tribology*, ch. 2). A rough estimate: replace it with supplier data.
     """
     return (0.6 + 0.965 * math.log10(viscosity * 1e3)) * 1e-8
 
@@ -177,7 +177,7 @@ def groove_curvature_centre_distance(bearing: BallBearing):
 
 
 def radial_clearance(bearing: BallBearing):
-    """Diametral radial clearance G_r = 2 B D_w (1 − cos α₀) [m] (Harris eq. 2.14)."""
+    """Diametral radial clearance G_r = 2 B D_w (1 − cos α₀) [m] (Harris & Kotzalas vol. 1, ch. 2; physics.md §3)."""
     return 2.0 * groove_curvature_centre_distance(bearing) * (1.0 - jnp.cos(bearing.free_contact_angle))
 
 
@@ -203,7 +203,7 @@ def ball_bearing(
 
     Give each groove as a ratio f = r/D_w or a radius r [m], and either the free contact angle
     α₀ [rad] or the diametral radial clearance G_r [m]; then cos α₀ = 1 − G_r/(2(f_i + f_o − 1)D_w)
-    (Harris eq. 2.14; seed 002). Raises ValueError naming the offending parameter.
+    (Harris & Kotzalas vol. 1, ch. 2; seed 002). Raises ValueError naming the offending parameter.
     """
     check_range("bearing.ball_diameter", ball_diameter, low=0.0, unit=" m")
     for side, ratio, radius in (("inner", inner_groove_ratio, inner_groove_radius),
