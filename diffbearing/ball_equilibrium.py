@@ -120,10 +120,7 @@ def hertz_constants(bearing: BallBearing, inner_angle, outer_angle, model: BallM
 
 def with_constant_table(bearing: BallBearing, model: BallModel) -> BallBearing:
     """The bearing with a fresh Chebyshev table of its Hertz constants for `model`'s fidelity level."""
-    table = None
-    if model.hertz_constants == "contact_angle":
-        table = contact_constant_table(eqx.tree_at(lambda b: b.contact_constant_table, bearing, None,
-                                                   is_leaf=lambda x: x is None), model.hertz_method)
+    table = contact_constant_table(bearing, model.hertz_method) if model.hertz_constants == "contact_angle" else None
     return eqx.tree_at(lambda b: b.contact_constant_table, bearing, table, is_leaf=lambda x: x is None)
 
 
@@ -167,6 +164,7 @@ def ball_state(bearing: BallBearing, operating: Operating, centres, positions, m
     state = dict(
         inner_approach=inner_approach, outer_approach=outer_approach,
         inner_angle=inner_angle, outer_angle=outer_angle,
+        inner_constant=k_inner, outer_constant=k_outer,
         inner_load=hertz.hertz_load(inner_approach, k_inner), outer_load=hertz.hertz_load(outer_approach, k_outer),
         orbital_speed=orbital, spin_speed=spin, pitch_angle=beta,
     )
@@ -202,27 +200,38 @@ def _free_balls(bearing: BallBearing, operating: Operating, centres):
     return (approach <= FREE_APPROACH * bearing.ball_diameter) & standstill
 
 
-def _masked_residual(positions, centres, bearing, operating, model, free, reference, constants=None):
-    """Ball residual, with a free ball's indeterminate equations replaced by X = X_static (scaled)."""
-    scale = hertz_scale(bearing, model)
-    residual = ball_residual(positions, centres, bearing, operating, model, constants)
-    return jnp.where(free[:, None], (positions - reference) * scale, residual)
-
-
-def hertz_scale(bearing: BallBearing, model: BallModel):
-    """K_n(α₀) × 1 µm^{1/2} [N/m]: the stiffness scale used to weigh a free ball's placeholder equation."""
+def free_contact_constant(bearing: BallBearing, model: BallModel):
+    """K_n(α₀) [N/m^1.5]: both contacts in series at the free contact angle."""
     angle = jnp.asarray(bearing.free_contact_angle)
-    k_inner, k_outer = hertz_constants(bearing, angle, angle, model)
-    combined = (k_inner ** (-2.0 / 3.0) + k_outer ** (-2.0 / 3.0)) ** -1.5
-    return combined * 1e-3
+    return hertz.combined_load_deflection_constant(*hertz_constants(bearing, angle, angle, model))
 
 
-def _ball_jacobians(positions, centres, bearing, operating, model, free, reference, constants=None):
+class _FreeBalls(eqx.Module):
+    """Balls touching neither raceway at standstill, and the placeholder equation X = X_static that
+    replaces their indeterminate ones, weighted by K_n(α₀) × 1 µm^{1/2} [N/m]."""
+
+    mask: jax.Array
+    reference: jax.Array
+    scale: jax.Array
+
+
+def _free_ball_equations(bearing, operating, centres, model):
+    return _FreeBalls(_free_balls(bearing, operating, centres), static_positions(bearing, centres, model),
+                      free_contact_constant(bearing, model) * 1e-3)
+
+
+def _masked_residual(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None):
+    """Ball residual, with a free ball's indeterminate equations replaced by X = X_static (scaled)."""
+    residual = ball_residual(positions, centres, bearing, operating, model, constants)
+    return jnp.where(free.mask[:, None], (positions - free.reference) * free.scale, residual)
+
+
+def _ball_jacobians(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None):
     """(Z, 2, 2) ∂g/∂X of every ball. Ball j's residual depends on X_j alone, so two JVPs with the
     same unit tangent on every ball give the two columns of all 2×2 blocks at once. With fixed
     `constants` the Hertz constants' (weak) dependence on the contact angles is left out."""
     def residual(x):
-        return _masked_residual(x, centres, bearing, operating, model, free, reference, constants)
+        return _masked_residual(x, centres, bearing, operating, model, free, constants)
 
     columns = [jax.jvp(residual, (positions,), (jnp.zeros_like(positions).at[:, k].set(1.0),))[1] for k in range(2)]
     return jnp.stack(columns, axis=-1)
@@ -235,8 +244,7 @@ def _speed_start(bearing, operating, centres, model):
     if not model.centrifugal:
         return static
     state = ball_state(bearing, operating, centres, static, model)
-    _, k_outer = hertz_constants(bearing, state["outer_angle"], state["outer_angle"], model)
-    pressed = (state["centrifugal_force"] / k_outer) ** (2.0 / 3.0)
+    pressed = (state["centrifugal_force"] / state["outer_constant"]) ** (2.0 / 3.0)
     _, outer_offset = _groove_offsets(bearing)
     approach = jnp.maximum(state["outer_approach"], pressed)
     direction = static / jnp.linalg.norm(static, axis=-1, keepdims=True)
@@ -252,8 +260,7 @@ def ball_positions(displacement, bearing: BallBearing, operating: Operating, mod
     the implicit function theorem on each ball's 2×2 system (custom JVP; reverse mode by transposition).
     """
     centres = inner_groove_centres(bearing, displacement)
-    free = _free_balls(bearing, operating, centres)
-    reference = static_positions(bearing, centres, model)
+    free = _free_ball_equations(bearing, operating, centres, model)
     limit = 0.05 * bearing.ball_diameter
     tolerance = BALL_POSITION_TOLERANCE * bearing.ball_diameter
 
@@ -263,8 +270,8 @@ def ball_positions(displacement, bearing: BallBearing, operating: Operating, mod
         constants = jax.lax.stop_gradient(hertz_constants(
             bearing, jnp.arctan2(to_inner[..., 0], to_inner[..., 1]),
             jnp.arctan2(positions[..., 0], positions[..., 1]), model))
-        residual = _masked_residual(positions, centres, bearing, operating, model, free, reference, constants)
-        jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free, reference, constants)
+        residual = _masked_residual(positions, centres, bearing, operating, model, free, constants)
+        jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free, constants)
         step = jnp.linalg.solve(jacobian, residual[..., None])[..., 0]
         # keep a step within a tenth of the ball radius: Hertz's δ^{3/2} can throw a far Newton step
         length = jnp.linalg.norm(step, axis=-1, keepdims=True)
@@ -285,17 +292,15 @@ def _ball_positions_jvp(model, primals, tangents):
     displacement, bearing, operating = primals
     positions = ball_positions(displacement, bearing, operating, model)
 
+    centres = inner_groove_centres(bearing, displacement)
+    free = _free_ball_equations(bearing, operating, centres, model)
+
     def residual_of_inputs(d, b, o):
-        centres = inner_groove_centres(b, d)
-        free = _free_balls(b, o, centres)
-        reference = jax.lax.stop_gradient(static_positions(b, centres, model))
-        return _masked_residual(positions, centres, b, o, model, free, reference)
+        # a free ball carries no force whatever its placeholder: hold the placeholder fixed
+        return _masked_residual(positions, inner_groove_centres(b, d), b, o, model, jax.lax.stop_gradient(free))
 
     _, residual_dot = jax.jvp(residual_of_inputs, primals, tangents)
-    centres = inner_groove_centres(bearing, displacement)
-    free = _free_balls(bearing, operating, centres)
-    reference = static_positions(bearing, centres, model)
-    jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free, reference)
+    jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free)
     return positions, -jnp.linalg.solve(jacobian, residual_dot[..., None])[..., 0]
 
 
@@ -313,9 +318,13 @@ def ring_force(displacement, bearing: BallBearing, operating: Operating, model: 
     """
     centres = inner_groove_centres(bearing, displacement)
     positions = equilibrium_positions(displacement, bearing, operating, model)
-    s = ball_state(bearing, operating, centres, positions, model)
+    return _ring_force_of_state(bearing, ball_state(bearing, operating, centres, positions, model))
+
+
+def _ring_force_of_state(bearing: BallBearing, state: dict):
+    """[Fx, Fy, Fz, Mx, My] of the inner contact loads in a `ball_state` (ring equilibrium, module docstring)."""
     psi = ball_azimuths(bearing)
-    load, angle = s["inner_load"], s["inner_angle"]
+    load, angle = state["inner_load"], state["inner_angle"]
     arm = inner_groove_radius_of_centres(bearing)
     axial = load * jnp.sin(angle)
     return jnp.stack([
@@ -329,14 +338,12 @@ def ring_force(displacement, bearing: BallBearing, operating: Operating, model: 
 
 def _scales(bearing: BallBearing, operating: Operating, model: BallModel):
     """Unknown scale s (Δ = s·y), residual weights w (moments to forces) and load scale [N]."""
-    arm = inner_groove_radius_of_centres(bearing)
-    unknown = DISPLACEMENT_SCALE * jnp.array([1.0, 1.0, 1.0, 0.0, 0.0]) + jnp.array([0, 0, 0, 1.0, 1.0]) * (
-        DISPLACEMENT_SCALE / arm)
-    weight = jnp.array([1.0, 1.0, 1.0, 0.0, 0.0]) + jnp.array([0, 0, 0, 1.0, 1.0]) / arm
+    inverse_arm = 1.0 / inner_groove_radius_of_centres(bearing)
+    weight = jnp.stack([1.0, 1.0, 1.0, inverse_arm, inverse_arm])
     applied = jnp.concatenate([operating.force, operating.moment])
     # a characteristic contact load (K_n × (10 µm)^{3/2}) keeps the scale positive at zero load
-    characteristic = hertz_scale(bearing, model) * 1e3 * DISPLACEMENT_SCALE**1.5
-    return unknown, weight, safe_norm(applied * weight) + characteristic
+    characteristic = free_contact_constant(bearing, model) * DISPLACEMENT_SCALE**1.5
+    return DISPLACEMENT_SCALE * weight, weight, safe_norm(applied * weight) + characteristic
 
 
 def _controls(operating: Operating):
@@ -403,7 +410,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     bearing = with_constant_table(bearing, model)
     unknown, weight, load_scale = _scales(bearing, operating, model)
     static_y, _, static_steps = minimise_convex(
-        _static_energy, jnp.zeros(5), (bearing, operating, hertz_scale(bearing, model) * 1e3, unknown, load_scale),
+        _static_energy, jnp.zeros(5), (bearing, operating, free_contact_constant(bearing, model), unknown, load_scale),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     static_y = jax.lax.stop_gradient(static_y)
     args = (bearing, operating, model, unknown, weight, load_scale)
@@ -415,18 +422,18 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     y = solution.value
     ring_residual = jnp.max(jnp.abs(_ring_residual(y, args)))
     displacement = _displacement(y, unknown, operating)
+    centres = inner_groove_centres(bearing, displacement)
+    positions = equilibrium_positions(displacement, bearing, operating, model)
+    state = ball_state(bearing, operating, centres, positions, model)
     residual = ring_residual
     if model.speed_effects:
-        centres = inner_groove_centres(bearing, displacement)
-        positions = ball_positions(displacement, bearing, operating, model)
-        s = ball_state(bearing, operating, centres, positions, model)
         ball = ball_residual(positions, centres, bearing, operating, model)
         free = _free_balls(bearing, operating, centres)
-        size = s["inner_load"] + s["outer_load"] + s["centrifugal_force"] + load_scale * 1e-6
+        size = state["inner_load"] + state["outer_load"] + state["centrifugal_force"] + load_scale * 1e-6
         residual = jnp.maximum(residual, jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size)))
     residual = jax.lax.stop_gradient(residual)
     converged = residual < RESIDUAL_TOLERANCE
-    force = ring_force(displacement, bearing, operating, model)
+    force = _ring_force_of_state(bearing, state)
     return Equilibrium(displacement, force, converged, residual, static_steps, solution.stats["num_steps"])
 
 

@@ -138,9 +138,8 @@ def _raceway_contact(inputs: SceneInputs, settings: dict, results: dict) -> dict
             f"hertz.{side}.load_deflection_constant": unit.load_deflection_constant,
             f"hertz.{side}.static_limit_load": limit,
         }
-    # Both contacts in series: K_n = (K_i^{-2/3} + K_o^{-2/3})^{-3/2} (Harris & Kotzalas vol. 1, ch. 7).
-    out["hertz.combined_load_deflection_constant"] = (
-        constants["inner"] ** (-2.0 / 3.0) + constants["outer"] ** (-2.0 / 3.0)) ** -1.5
+    out["hertz.combined_load_deflection_constant"] = hertz.combined_load_deflection_constant(
+        constants["inner"], constants["outer"])
     return out
 
 

@@ -164,6 +164,12 @@ def point_contact(load, curvature_sum, curvature_difference, effective_modulus, 
     return PointContact(semi_major, semi_minor, approach, max_pressure, kappa, constant)
 
 
+def combined_load_deflection_constant(constant_inner, constant_outer):
+    """K_n [N/m^1.5] of two Hertz contacts in series (ball between two raceways), Q = K_n δ_total^{3/2}:
+    K_n = (K_i^{-2/3} + K_o^{-2/3})^{-3/2} (Harris & Kotzalas vol. 1, ch. 7)."""
+    return (constant_inner ** (-2.0 / 3.0) + constant_outer ** (-2.0 / 3.0)) ** -1.5
+
+
 def hertz_load(approach, constant):
     """Hertz contact load Q = K_c max(δ, 0)^{3/2} [N] from the approach δ [m] and K_c [N/m^1.5].
 

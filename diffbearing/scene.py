@@ -157,6 +157,7 @@ class Model:
     blocks: list
     settings: dict
     not_implemented: list
+    sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a [sweep] table
 
     @property
     def outputs(self) -> dict:
@@ -170,13 +171,13 @@ class Model:
 def build_model(scene: Scene) -> Model:
     """Assemble the model of a scene: only the blocks its effects name (and what they require)."""
     inputs = build_inputs(scene)
-    if scene.sweep:
-        from .sweep import sweep_axes
+    from .sweep import sweep_axes
 
-        sweep_axes(scene.sweep)  # bad [sweep] entries fail here, before any compilation
+    axes = sweep_axes(scene.sweep) if scene.sweep else {}  # bad entries fail here, before compiling
     blocks, missing = effect_registry.resolve(scene.bearing_type, scene.table("effects"))
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
-    return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing)
+    return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,
+                 sweep_axes=axes)
 
 
 @dataclasses.dataclass
@@ -193,10 +194,10 @@ class RunResult:
 def run_model(model: Model, progress: bool = True) -> RunResult:
     """Compile (timed; reused when cached), then run (timed, excluding compilation) the model;
     a scene with a [sweep] table runs as one vmapped batch (see sweep.py)."""
-    if model.scene.sweep:
-        from .sweep import run_sweep, sweep_axes
+    if model.sweep_axes:
+        from .sweep import run_sweep
 
-        return run_sweep(model, sweep_axes(model.scene.sweep), progress=progress)
+        return run_sweep(model, model.sweep_axes, progress=progress)
     start = time.perf_counter()
     executable, cached = effect_registry.compiled(model.blocks, model.settings, model.inputs)
     compile_s = 0.0 if cached else time.perf_counter() - start
