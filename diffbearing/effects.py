@@ -20,11 +20,15 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from . import ball_equilibrium, hertz, life
+from . import ball_equilibrium, hertz, life, roller_contact
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
+from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, roller_modulus
 
 BALL_TYPES = ("deep_groove_ball", "angular_contact_ball")
+ROLLER_TYPES = ROLLER_KINDS
+DEFAULT_CONTACT_GRID = (32, 256)
+DEFAULT_CONTACT_TOLERANCE = 1e-11
 
 # ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
 ISO76_BALL_PRESSURE_LIMIT = 4.2e9  # Pa
@@ -33,8 +37,8 @@ ISO76_BALL_PRESSURE_LIMIT = 4.2e9  # Pa
 class SceneInputs(eqx.Module):
     """Everything numeric a scene feeds the physics: the pytree `jax.grad` and `vmap` act on."""
 
-    bearing: BallBearing
-    operating: Operating
+    bearing: BallBearing | RollerBearing
+    operating: Operating | RollerLoading
     lubricant: Lubricant | None = None
 
 
@@ -47,6 +51,7 @@ class Output:
     display: str
     description: str
     effect: str | None = None  # produced only when this effect is on
+    in_report: bool = True  # False for fields (maps, coordinates): JSON and plots only
 
 
 @dataclasses.dataclass(frozen=True)
@@ -307,3 +312,81 @@ register(Block(
     ),
     compute=_life,
 ))
+
+
+# ---------------------------------------------------------------------------------------------
+# Roller–raceway contact: geometry and the Hertz line-contact reference (always), the pressure
+# field by Hertz slices (effect contact = "slices") or influence coefficients ("influence").
+
+
+def _roller_geometry(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    bearing, loading = inputs.bearing, inputs.operating
+    modulus = roller_modulus(bearing)
+    radius = equivalent_radius(bearing, loading, jnp.asarray(0.0))
+    line = hertz.line_contact(loading.load / bearing.length, radius, modulus)
+    return {"geometry.effective_modulus": modulus, "geometry.equivalent_radius": radius,
+            "hertz.line.max_pressure": line.max_pressure, "hertz.line.half_width": line.half_width}
+
+
+register(Block(
+    name="roller_geometry",
+    bearing_types=ROLLER_TYPES,
+    enabled_by=None,
+    requires=(),
+    outputs=(
+        Output("geometry.effective_modulus", "Pa", "GPa", "effective modulus E' of roller and raceway"),
+        Output("geometry.equivalent_radius", "m", "mm", "equivalent radius R in rolling, at mid-length"),
+        Output("hertz.line.max_pressure", "Pa", "GPa", "Hertz line contact p0 at Q/l (reference)"),
+        Output("hertz.line.half_width", "m", "um", "Hertz line contact half-width b at Q/l"),
+    ),
+    compute=_roller_geometry,
+))
+
+
+def contact_settings(settings: dict) -> tuple[tuple[int, int], float]:
+    """(grid (nx, ny), solver tolerance) of a scene's fidelity table; ValueError if out of range."""
+    fidelity = settings["fidelity"]
+    grid = tuple(fidelity.get("grid", DEFAULT_CONTACT_GRID))
+    tolerance = fidelity.get("tolerance", DEFAULT_CONTACT_TOLERANCE)
+    if not all(4 <= n <= 4096 for n in grid):
+        raise ValueError(f"fidelity.grid must have 4 to 4096 cells in each direction, got {list(grid)}")
+    if not 0.0 < tolerance < 1.0:
+        raise ValueError(f"fidelity.tolerance must be > 0 and < 1 (relative pressure change), got {tolerance:g}")
+    return grid, tolerance
+
+
+def _contact_outputs():
+    return (
+        Output("contact.max_pressure", "Pa", "GPa", "peak contact pressure p_max"),
+        Output("contact.approach", "m", "um", "approach δ (from touching at mid-length)"),
+        Output("contact.load", "N", "N", "load carried by the pressure field, ΔA Σp"),
+        Output("contact.contact_length", "m", "mm", "length of the loaded zone along the roller"),
+        Output("contact.max_half_width", "m", "um", "largest half-width of the loaded zone (rolling)"),
+        Output("contact.converged", "", "", "the contact solution converged inside its grid"),
+        Output("contact.iterations", "", "", "conjugate-gradient iterations (0 for slices)"),
+        Output("contact.pressure", "Pa", "GPa", "pressure map p[x, y] on the nx × ny grid", in_report=False),
+        Output("contact.x", "m", "mm", "cell centres along rolling (x)", in_report=False),
+        Output("contact.y", "m", "mm", "cell centres along the roller axis (y)", in_report=False),
+    )
+
+
+def _contact(method):
+    def compute(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+        grid, tolerance = contact_settings(settings)
+        solved = roller_contact.roller_contact(inputs.bearing, inputs.operating, grid, method, tolerance)
+        return {f"contact.{name}": getattr(solved, name) for name in
+                ("max_pressure", "approach", "load", "contact_length", "max_half_width", "converged", "iterations",
+                 "pressure", "x", "y")}
+
+    return compute
+
+
+for _method in ("slices", "influence"):
+    register(Block(
+        name=f"roller_contact_{_method}",
+        bearing_types=ROLLER_TYPES,
+        enabled_by=("contact", _method),
+        requires=("roller_geometry",),
+        outputs=_contact_outputs(),
+        compute=_contact(_method),
+    ))

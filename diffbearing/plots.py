@@ -61,8 +61,30 @@ def plot_sweep_stiffness(result, figure):
     figure.suptitle(result.model.scene.title)
 
 
+def plot_contact_pressure(result, figure):
+    """Pressure map of a roller contact (x across, y along the roller) and the peak along y."""
+    values = result.values
+    pressure = np.asarray(values["contact.pressure"]) / 1e9
+    x, y = np.asarray(values["contact.x"]) * 1e6, np.asarray(values["contact.y"]) * 1e3
+    map_axis, line_axis = figure.subplots(1, 2, width_ratios=[1.6, 1])
+    shown = map_axis.pcolormesh(y, x, pressure, shading="nearest", cmap="viridis")
+    figure.colorbar(shown, ax=map_axis, label="pressure [GPa]")
+    map_axis.set(xlabel="y along the roller [mm]", ylabel="x, rolling direction [µm]",
+                 title=f"contact pressure, {pressure.shape[0]} × {pressure.shape[1]} cells")
+    line_axis.plot(y, pressure.max(axis=0), label="max over x")
+    line_axis.axhline(float(values["hertz.line.max_pressure"]) / 1e9, color="grey", lw=0.8, ls="--",
+                      label="Hertz line p0 at Q/l")
+    line_axis.set(xlabel="y along the roller [mm]", ylabel="pressure [GPa]", title="peak pressure along the roller",
+                  ylim=(0, None))
+    line_axis.grid(alpha=0.3)
+    line_axis.legend()
+    profile = result.model.inputs.bearing.profile.kind
+    figure.suptitle(f"{result.model.scene.title}: {profile} profile, Q = {float(values['contact.load']):.4g} N")
+
+
 # Block name → plot; the last block of a run that has one draws the figure.
-PLOTS = {"raceway_contact": plot_hertz_load_curves}
+PLOTS = {"raceway_contact": plot_hertz_load_curves, "roller_contact_slices": plot_contact_pressure,
+         "roller_contact_influence": plot_contact_pressure}
 
 
 def save_plot(result, path: str) -> None:

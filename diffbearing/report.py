@@ -36,8 +36,61 @@ def _unit_label(display: str) -> str:
     return display.replace("**", "^").replace("um", "µm") if display else "-"
 
 
+def _roller_header(result) -> list[str]:
+    from .roller_profile import profile_parameters
+
+    scene, bearing, loading = result.model.scene, result.model.inputs.bearing, result.model.inputs.operating
+    if bearing.kind == "tapered_roller":
+        shape = (f"d = {float(bearing.small_diameter) * 1e3:.4g} mm to D = {float(bearing.large_diameter) * 1e3:.4g} mm, "
+                 f"θ = {np.degrees(float(bearing.cone_half_angle)):.3g}°")
+    else:
+        shape = f"D = {float(bearing.small_diameter) * 1e3:.4g} mm"
+    curvature = float(loading.raceway_curvature)
+    raceway = ("flat raceway" if curvature == 0 else
+               f"{'convex' if curvature > 0 else 'concave'} raceway, R = {abs(1 / curvature) * 1e3:.4g} mm at mid-length")
+    units = {"flat_length": (1e3, "mm"), "crown_radius": (1e3, "mm"), "design_load": (1e-3, "kN"), "zm": (1e6, "µm"),
+             "k1": (1, ""), "k2": (1, "")}
+    parameters = ", ".join(f"{name} = {value * units[name][0]:.4g} {units[name][1]}".rstrip()
+                           for name, value in profile_parameters(bearing.profile).items())
+    material = bearing.material
+    return [
+        scene.title,
+        f"scene: {scene.source}",
+        "",
+        f"Roller     {bearing.kind}, {shape}, effective length l = {float(bearing.length) * 1e3:.4g} mm",
+        f"Profile    {bearing.profile.kind}" + (f" ({parameters})" if parameters else ""),
+        f"Material   E = {float(material.elastic_modulus) / 1e9:.4g} GPa, ν = {float(material.poisson_ratio):.3g} "
+        "(roller and raceway)",
+        f"Contact    Q = {float(loading.load) / 1e3:.4g} kN, tilt {np.degrees(float(loading.tilt)) * 60:.4g} arcmin, {raceway}",
+    ]
+
+
+def _roller_pressure_lines(result) -> list[str]:
+    if "contact.pressure" not in result.values:
+        return []
+    pressure, y = np.asarray(result.values["contact.pressure"]), np.asarray(result.values["contact.y"])
+    along = pressure.max(axis=0)
+    stations = np.unique(np.linspace(0, len(y) - 1, 9).round().astype(int))
+    lines = ["", "Peak pressure across the contact along the roller (max over x; full map in --json / --plot)",
+             "  y [mm]     " + "".join(f"{y[i] * 1e3:>9.3f}" for i in stations),
+             "  p [GPa]    " + "".join(f"{along[i] / 1e9:>9.4f}" for i in stations)]
+    nx, ny = pressure.shape
+    lines.append(f"  grid {nx} × {ny} cells of {float(np.diff(result.values['contact.x'][:2])[0]) * 1e6:.3g} µm × "
+                 f"{float(np.diff(y[:2])[0]) * 1e6:.3g} µm")
+    if result.model.inputs.bearing.profile.kind == "straight" and "roller_contact_influence" in [
+            b.name for b in result.model.blocks]:
+        lines.append("  straight roller: the edge peak grows as the cells shrink (an edge singularity); "
+                     "it is grid dependent, not a converged value")
+    if "contact.converged" in result.values:
+        state = "converged" if bool(result.values["contact.converged"]) else "DID NOT CONVERGE (or reached the grid edge)"
+        lines.append(f"  contact solution: {state}, {int(result.values['contact.iterations'])} iterations")
+    return lines
+
+
 def _header(result) -> list[str]:
     scene, inputs = result.model.scene, result.model.inputs
+    if scene.bearing_type in ("cylindrical_roller", "tapered_roller"):
+        return _roller_header(result)
     bearing, operating = inputs.bearing, inputs.operating
     force = to_display(operating.force, "N", "kN")
     moment = np.asarray(operating.moment)
@@ -159,8 +212,8 @@ def format_report(result) -> str:
     values = result.values
     sections: dict[str, dict[str, dict]] = {}
     for key, out in outputs.items():
-        if key not in values or key.startswith("balls.") or key in ("displacement", "force", "stiffness", "converged",
-                                                                     "residual"):
+        if key not in values or key.startswith("balls.") or not out.in_report or key in (
+                "displacement", "force", "stiffness", "converged", "residual", "contact.converged", "contact.iterations"):
             continue
         parts = key.split(".")
         if len(parts) == 3 and parts[1] in ("inner", "outer"):
@@ -186,7 +239,8 @@ def format_report(result) -> str:
                 lines.append(f"  {label:<48}" + "".join(f"{cell:>16}" for cell in cells) + f"  {_unit_label(out.display)}")
     if "displacement" in values:
         lines += _displacement_lines(values["displacement"])
-    if result.model.inputs.operating.axial_displacement is not None and "force" in values:
+    lines += _roller_pressure_lines(result)
+    if "force" in values and result.model.inputs.operating.axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
     if "stiffness" in values:
         lines += _stiffness_lines(values["stiffness"])

@@ -17,7 +17,9 @@ import numpy as np
 
 from . import effects as effect_registry
 from .params import (BEARING_STEEL, LUBRICANTS, MATERIALS, Lubricant, Material, Operating, ball_bearing,
-                     wooster_pressure_viscosity)
+                     check_range, wooster_pressure_viscosity)
+from .roller_geometry import RollerLoading, roller_bearing
+from .roller_profile import roller_profile
 from .schema import lookup, validate
 
 DEFAULT_SCENE = "seed001_aero_acbb.toml"
@@ -117,15 +119,14 @@ def _lubricant(values: dict) -> Lubricant | None:
 
 
 def build_inputs(scene: Scene) -> effect_registry.SceneInputs:
-    """Parameter pytrees of a ball-bearing scene (ValueError names any bad value)."""
-    if scene.bearing_type not in effect_registry.BALL_TYPES:
-        raise NotImplementedError(f"bearing.type = {scene.bearing_type!r} is not available yet "
-                                  "(roller bearings come with the roller-contact and EHL issues)")
+    """Parameter pytrees of a scene (ValueError names any bad value)."""
     return inputs_from_values(scene.values)
 
 
 def inputs_from_values(v: dict) -> effect_registry.SceneInputs:
     """Parameter pytrees from {dotted key: SI value}; values may be JAX tracers (sweeps under vmap)."""
+    if v["bearing.type"] in effect_registry.ROLLER_TYPES:
+        return roller_inputs_from_values(v)
     ring = _material(v, "", BEARING_STEEL)
     bearing = ball_bearing(
         kind=v["bearing.type"],
@@ -146,6 +147,42 @@ def inputs_from_values(v: dict) -> effect_registry.SceneInputs:
         axial_displacement=v.get("operating.axial_displacement"),
     )
     return effect_registry.SceneInputs(bearing=bearing, operating=operating, lubricant=_lubricant(v))
+
+
+def _raceway_curvature(v: dict) -> float:
+    """Signed raceway curvature [1/m] in the rolling direction: convex (inner) > 0, concave < 0."""
+    raceway = v.get("contact.raceway", "inner")
+    sign = 1.0 if raceway == "inner" else -1.0
+    if "contact.raceway_radius" in v:
+        radius = v["contact.raceway_radius"]
+        check_range("contact.raceway_radius", radius, low=0.0, high_open=False, unit=" m")
+        return sign / radius  # "inf" gives a flat raceway
+    if "bearing.pitch_diameter" in v and v["bearing.type"] == "cylindrical_roller":
+        # cylindrical roller: raceway radii (d_m ∓ D)/2 at the inner and outer ring
+        radius = 0.5 * (v["bearing.pitch_diameter"] - sign * v["bearing.roller_diameter"])
+        check_range("bearing.pitch_diameter", radius, low=0.0, unit=" m",
+                    why="the inner raceway radius (d_m − D)/2 must be positive")
+        return sign / radius
+    raise ValueError("missing required key: one of 'contact.raceway_radius', 'bearing.pitch_diameter' "
+                     "(the latter for cylindrical rollers)")
+
+
+def roller_inputs_from_values(v: dict) -> effect_registry.SceneInputs:
+    """Parameter pytrees of a roller–raceway contact scene (cylindrical or tapered roller)."""
+    length = v["bearing.roller_length"]
+    profile = roller_profile(v.get("profile.kind", "straight"), length=length,
+                             **{name: v.get(f"profile.{name}") for name in
+                                ("flat_length", "crown_radius", "design_load", "k1", "k2", "zm")})
+    bearing = roller_bearing(kind=v["bearing.type"], length=length, diameter=v.get("bearing.roller_diameter"),
+                             small_diameter=v.get("bearing.roller_small_diameter"),
+                             large_diameter=v.get("bearing.roller_large_diameter"),
+                             cone_half_angle=v.get("bearing.cone_half_angle", 0.0), profile=profile,
+                             material=_material(v, "", BEARING_STEEL))
+    if "contact.load" not in v:
+        raise ValueError("missing required key 'contact.load' (the roller load Q)")
+    loading = RollerLoading(load=v["contact.load"], tilt=v.get("contact.tilt", 0.0),
+                            raceway_curvature=_raceway_curvature(v))
+    return effect_registry.SceneInputs(bearing=bearing, operating=loading, lubricant=_lubricant(v))
 
 
 @dataclasses.dataclass
@@ -176,6 +213,8 @@ def build_model(scene: Scene) -> Model:
     axes = sweep_axes(scene.sweep) if scene.sweep else {}  # bad entries fail here, before compiling
     blocks, missing = effect_registry.resolve(scene.bearing_type, scene.table("effects"))
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
+    if scene.bearing_type in effect_registry.ROLLER_TYPES:
+        effect_registry.contact_settings(settings)  # bad grid or tolerance fails here, before compiling
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,
                  sweep_axes=axes)
 

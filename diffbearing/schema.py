@@ -93,14 +93,13 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "race_control": Key("choice", choices=("outer", "inner"), doc="raceway control hypothesis of the ball kinematics"),
         "hertz_constants": Key("choice", choices=("contact_angle", "free_contact_angle"),
                                doc="Hertz constants of the ball contacts at their current angle or at α0"),
-        "grid": Key("integers"),
+        "grid": Key("integers", length=2, doc="[nx, ny] cells along rolling and along the roller"),
         "tolerance": Key("number"),
     },
     "profile": {
         "kind": Key("choice", choices=PROFILE_KINDS),
         "flat_length": _q("length"),
         "crown_radius": _q("length"),
-        "crown_drop": _q("length"),
         "design_load": _q("force"),
         "k1": Key("number"),
         "k2": Key("number"),
@@ -173,6 +172,8 @@ def convert(dotted: str, value):
     if key.kind == "integers":
         if not isinstance(value, list) or not all(isinstance(v, int) and not isinstance(v, bool) for v in value):
             raise ValueError(f"{dotted}: expected a list of integers, got {value!r}")
+        if key.length is not None and len(value) != key.length:
+            raise ValueError(f"{dotted}: expected a list of {key.length} integers, got {value!r}")
         return value
     if key.kind == "boolean":
         if not isinstance(value, bool):
