@@ -82,8 +82,14 @@ def _roller_pressure_lines(result) -> list[str]:
         lines.append("  straight roller: the edge peak grows as the cells shrink (an edge singularity); "
                      "it is grid dependent, not a converged value")
     if "contact.converged" in result.values:
-        state = "converged" if bool(result.values["contact.converged"]) else "DID NOT CONVERGE (or reached the grid edge)"
-        lines.append(f"  contact solution: {state}, {int(result.values['contact.iterations'])} iterations")
+        converged = bool(result.values["contact.converged"])
+        if "roller_contact_slices" in [b.name for b in result.model.blocks]:
+            lines.append("  Hertz line-contact slices (Palmgren laminae, no interaction between slices): "
+                         + ("approach converged" if converged else "approach DID NOT CONVERGE"))
+        else:
+            state = "converged" if converged else "DID NOT CONVERGE (or reached the grid edge)"
+            lines.append(f"  influence coefficients (DC-FFT, Polonsky–Keer): {state}, "
+                         f"{int(result.values['contact.iterations'])} iterations")
     return lines
 
 

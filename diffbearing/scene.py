@@ -170,9 +170,11 @@ def _raceway_curvature(v: dict) -> float:
 def roller_inputs_from_values(v: dict) -> effect_registry.SceneInputs:
     """Parameter pytrees of a roller–raceway contact scene (cylindrical or tapered roller)."""
     length = v["bearing.roller_length"]
-    profile = roller_profile(v.get("profile.kind", "straight"), length=length,
-                             **{name: v.get(f"profile.{name}") for name in
-                                ("flat_length", "crown_radius", "design_load", "k1", "k2", "zm")})
+    kind = v.get("profile.kind", "straight")
+    parameters = {name: v.get(f"profile.{name}") for name in ("flat_length", "crown_radius", "design_load", "k1", "k2", "zm")}
+    if kind in ("straight", "circular"):
+        parameters.pop("design_load")  # a design load belongs to the logarithmic kinds; others ignore it
+    profile = roller_profile(kind, length=length, **parameters)
     bearing = roller_bearing(kind=v["bearing.type"], length=length, diameter=v.get("bearing.roller_diameter"),
                              small_diameter=v.get("bearing.roller_small_diameter"),
                              large_diameter=v.get("bearing.roller_large_diameter"),
