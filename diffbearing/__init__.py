@@ -50,5 +50,13 @@ from .raceway_contact import (
     inner_curvature as inner_curvature,
     outer_curvature as outer_curvature,
 )
+from .roller_contact import RollerContact as RollerContact, roller_contact as roller_contact
+from .roller_geometry import (
+    RollerBearing as RollerBearing,
+    RollerLoading as RollerLoading,
+    initial_gap as initial_gap,
+    roller_bearing as roller_bearing,
+)
+from .roller_profile import RollerProfile as RollerProfile, crown_drop as crown_drop, roller_profile as roller_profile
 from .scene import build_model as build_model, load_scene as load_scene, run_model as run_model
 from .sweep import run_sweep as run_sweep
