@@ -9,11 +9,13 @@ then penetrate are put back). This is that method, written the usual way: `numpy
     [ C_AA  −1 ] [p_A]   [−h₀_A]
     [ ΔA·1ᵀ  0 ] [ δ ] = [  W  ]
 
-with the initial contact set taken where the undeformed gap is below the Hertz-slice approach
-(the paper starts from an estimated half-width a₀ in the same way).
+with the initial contact set taken as the Hertz-slice contact (|x| < b of each slice; the paper
+starts from an estimated half-width a₀ in the same way). The matrix is built in place and factored
+in place (`scipy.linalg.solve(overwrite_a=True)`, LAPACK LU), so a 21 000-cell set needs 3.5 GB.
 """
 
 import numpy as np
+import scipy.linalg
 
 
 def love_rectangle(x, y, a, b):
@@ -24,10 +26,10 @@ def love_rectangle(x, y, a, b):
     return primitive(x + a, y + b) - primitive(x + a, y - b) - primitive(x - a, y + b) + primitive(x - a, y - b)
 
 
-def dense_matrix(ix, iy, cell_x, cell_y, modulus):
-    """C[i, j] [m/Pa] for the cells (ix, iy) (integer grid indices), built in row blocks."""
+def dense_matrix(ix, iy, cell_x, cell_y, modulus, out):
+    """C[i, j] [m/Pa] for the cells (ix, iy) (integer grid indices), built in row blocks into `out`."""
     n = len(ix)
-    matrix = np.empty((n, n))
+    matrix = out
     for start in range(0, n, 2048):
         rows = slice(start, min(start + 2048, n))
         dx = (ix[rows, None] - ix[None, :]) * cell_x
@@ -51,11 +53,13 @@ def solve_dense_active_set(gap, load, cell_x, cell_y, modulus, initial_contact, 
         cells = np.flatnonzero(active)
         n = len(cells)
         system = np.empty((n + 1, n + 1))
-        system[:n, :n] = dense_matrix(ix[cells], iy[cells], cell_x, cell_y, modulus)
+        dense_matrix(ix[cells], iy[cells], cell_x, cell_y, modulus, out=system[:n, :n])
         system[:n, n] = -1.0
         system[n, :n] = area
         system[n, n] = 0.0
-        solution = np.linalg.solve(system, np.concatenate([-flat_gap[cells], [load]]))
+        solution = scipy.linalg.solve(system, np.concatenate([-flat_gap[cells], [load]]), overwrite_a=True,
+                                      check_finite=False)
+        del system
         pressure_active, approach = solution[:n], solution[n]
         negative = pressure_active < 0
         if negative.any():

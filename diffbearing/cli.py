@@ -3,7 +3,7 @@
     diffbearing run [SCENE] [--set dotted.key=VALUE ...] [--json FILE] [--plot FILE]
 
 Bad input (unknown key, wrong dimension, missing key, out-of-range value) prints one line
-naming the key and exits with code 2; a scene that asks for something not available yet exits 3.
+naming the key and exits with code 2.
 """
 
 import argparse
@@ -40,9 +40,6 @@ def main(argv=None) -> int:
     except ValueError as error:
         print(f"diffbearing: error: {error}", file=sys.stderr)
         return 2
-    except NotImplementedError as error:
-        print(f"diffbearing: not available yet: {error}", file=sys.stderr)
-        return 3
     result = run_model(model)
     print(format_report(result))
     if arguments.json:

@@ -20,9 +20,10 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from . import ball_equilibrium, hertz, life, roller_contact
+from . import ball_equilibrium, hertz, life
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
+from .roller_contact import roller_contact
 from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, roller_modulus
 
 BALL_TYPES = ("deep_groove_ball", "angular_contact_ball")
@@ -373,7 +374,7 @@ def _contact_outputs():
 def _contact(method):
     def compute(inputs: SceneInputs, settings: dict, results: dict) -> dict:
         grid, tolerance = contact_settings(settings)
-        solved = roller_contact.roller_contact(inputs.bearing, inputs.operating, grid, method, tolerance)
+        solved = roller_contact(inputs.bearing, inputs.operating, grid, method, tolerance)
         return {f"contact.{name}": getattr(solved, name) for name in
                 ("max_pressure", "approach", "load", "contact_length", "max_half_width", "converged", "iterations",
                  "pressure", "x", "y")}

@@ -155,8 +155,10 @@ def _raceway_curvature(v: dict) -> float:
     sign = 1.0 if raceway == "inner" else -1.0
     if "contact.raceway_radius" in v:
         radius = v["contact.raceway_radius"]
-        check_range("contact.raceway_radius", radius, low=0.0, high_open=False, unit=" m")
-        return sign / radius  # "inf" gives a flat raceway
+        if not isinstance(radius, jax.core.Tracer) and np.isposinf(radius):
+            return 0.0  # "inf": a flat raceway
+        check_range("contact.raceway_radius", radius, low=0.0, unit=" m", why='or "inf" for a flat raceway')
+        return sign / radius
     if "bearing.pitch_diameter" in v and v["bearing.type"] == "cylindrical_roller":
         # cylindrical roller: raceway radii (d_m ∓ D)/2 at the inner and outer ring
         radius = 0.5 * (v["bearing.pitch_diameter"] - sign * v["bearing.roller_diameter"])

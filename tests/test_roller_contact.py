@@ -263,6 +263,22 @@ def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path, shared_sc
         in capsys.readouterr().out
 
 
+def test_cli_flat_and_concave_raceways(capsys, shared_scenes):
+    """raceway_radius = "inf" is a flat raceway; raceway = "outer" makes it concave (larger R)."""
+    from diffbearing import cli
+
+    scene = str(shared_scenes / "seed004_tapered_roller.toml")
+    radii = {}
+    for label, overrides in (("convex", []), ("flat", ['contact.raceway_radius="inf"']),
+                             ("concave", ['contact.raceway="outer"'])):
+        code = cli.main(["run", scene, *sum((["--set", o] for o in overrides), [])])
+        out = capsys.readouterr().out
+        assert code == 0
+        radii[label] = float(out.split("equivalent radius R in rolling, at mid-length")[1].split()[0])
+    assert radii["convex"] < radii["flat"] < radii["concave"]
+    assert radii["flat"] == pytest.approx(7.5 / 2 / np.cos(np.radians(2.4)), rel=1e-4)  # R_k = D_mid/(2 cos θ)
+
+
 @pytest.mark.parametrize("override, named", [
     ('contact.load="-1 kN"', "contact.load"),
     ("fidelity.grid=[32]", "fidelity.grid"),
@@ -270,6 +286,7 @@ def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path, shared_sc
     ('profile.kind="circular"', "profile.flat_length"),
     ('contact.tilt="5 deg"', "contact.tilt"),
     ('effects.contact="fem"', "effects.contact"),
+    ('contact.raceway_radius="-3 mm"', "contact.raceway_radius"),
 ])
 def test_cli_bad_roller_input_exits_2(capsys, shared_scenes, override, named):
     from diffbearing import cli
