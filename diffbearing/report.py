@@ -191,6 +191,10 @@ def format_sweep_report(result) -> str:
         columns.append(("δz [µm]", [_format_number(d[2] * 1e6) for d in values["displacement"]]))
     if "balls.inner.max_pressure" in values:
         columns.append(("max p0i [GPa]", [_format_number(p.max() / 1e9) for p in values["balls.inner.max_pressure"]]))
+    if "contact.max_pressure" in values:
+        columns.append(("p_max [GPa]", [_format_number(p / 1e9) for p in values["contact.max_pressure"]]))
+        columns.append(("δ [µm]", [_format_number(d * 1e6) for d in values["contact.approach"]]))
+        columns.append(("contact", ["converged" if c else "NO" for c in values["contact.converged"]]))
     if "life.L10r" in values:
         columns.append(("L10r [1e6 rev]", [_format_number(x) for x in values["life.L10r"]]))
     widths = [max(len(h), *(len(c) for c in cells)) + 2 for h, cells in columns]
