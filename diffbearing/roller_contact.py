@@ -23,7 +23,7 @@ import optimistix as optx
 
 from .influence import influence_coefficients
 from .normal_contact import solve_normal_contact
-from .numerics import positive_power, require_float64
+from .numerics import positive_power, require_float64, safe_sqrt
 from .roller_geometry import (RollerBearing, RollerLoading, axial_gap, cell_centres, equivalent_radius,
                               initial_gap, roller_modulus)
 
@@ -86,7 +86,7 @@ def contact_grid(bearing: RollerBearing, loading: RollerLoading, nx: int, ny: in
     y, _ = cell_centres(0.5 * bearing.length, ny)
     loads, approach, ok = slice_loads(bearing, loading, y)
     radius = equivalent_radius(bearing, loading, y)
-    half_width = jnp.sqrt(8.0 * loads * radius / (jnp.pi * roller_modulus(bearing)))
+    half_width = safe_sqrt(8.0 * loads * radius / (jnp.pi * roller_modulus(bearing)))
     x, _ = cell_centres(GRID_EXTENT_FACTOR * jnp.max(half_width), nx)
     return x, y, (loads, approach, ok)
 
@@ -113,7 +113,7 @@ def roller_contact(bearing: RollerBearing, loading: RollerLoading, grid=(32, 256
     radius = equivalent_radius(bearing, loading, y)
     cell_x, cell_y = x[1] - x[0], y[1] - y[0]
     peak = positive_power(loads * modulus / (2.0 * jnp.pi * radius), 0.5)
-    half_width = jnp.sqrt(8.0 * loads * radius / (jnp.pi * modulus))
+    half_width = safe_sqrt(8.0 * loads * radius / (jnp.pi * modulus))
     safe_width = jnp.where(half_width > 0, half_width, 1.0)
     slice_pressure = peak[None, :] * positive_power(1.0 - (x[:, None] / safe_width[None, :]) ** 2, 0.5)
     if method == "slices":

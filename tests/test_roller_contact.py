@@ -215,16 +215,24 @@ def test_hard_cases_converge_with_finite_gradients(case):
         "straight_tilted": (cylindrical(), LOAD, 5e-4, 0.0),
     }[case]
 
-    def peak(load_and_tilt):
-        result = roller_contact(bearing, RollerLoading(load_and_tilt[0], load_and_tilt[1], curvature), (16, 64))
-        return result.max_pressure, result
+    for method in ("influence", "slices"):
+        def peak(load_and_tilt):
+            loading = RollerLoading(load_and_tilt[0], load_and_tilt[1], curvature)
+            result = roller_contact(bearing, loading, (16, 64), method)
+            return jnp.stack([result.max_pressure, result.approach]), result
 
-    (value, result), gradient = jax.jit(jax.value_and_grad(peak, has_aux=True))(jnp.array([load, tilt]))
-    assert bool(result.converged)
-    assert np.isfinite(float(value)) and np.all(np.isfinite(np.asarray(gradient)))
-    assert np.all(np.asarray(result.pressure) >= 0)
-    if case == "one_end_lifted":
-        assert float(result.contact_length) < LENGTH  # the +y end is out of contact
+        point = jnp.array([load, tilt])
+        forward, result = jax.jit(jax.jacfwd(peak, has_aux=True))(point)
+        reverse, _ = jax.jit(jax.jacrev(peak, has_aux=True))(point)
+        values = jnp.stack([result.max_pressure, result.approach])
+        assert bool(result.converged), method
+        assert np.all(np.isfinite(np.asarray(values))) and np.all(np.asarray(result.pressure) >= 0)
+        assert np.all(np.isfinite(np.asarray(forward))) and np.all(np.isfinite(np.asarray(reverse))), method
+        # relative sensitivities (per unit relative load, per mrad of tilt) agree between modes
+        scale = np.array([load, 1e-3])[None, :] / np.asarray(values)[:, None]
+        np.testing.assert_allclose(forward * scale, reverse * scale, rtol=1e-8, atol=1e-9)
+        if case == "one_end_lifted":
+            assert float(result.contact_length) < LENGTH  # the +y end is out of contact
 
 
 def test_bad_roller_input_names_the_parameter():
