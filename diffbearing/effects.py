@@ -20,7 +20,7 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from . import ball_equilibrium, hertz, life
+from . import ball_equilibrium, film_formulas, hertz, life
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
 from .roller_contact import roller_contact
@@ -41,6 +41,7 @@ class SceneInputs(eqx.Module):
     bearing: BallBearing | RollerBearing
     operating: Operating | RollerLoading
     lubricant: Lubricant | None = None
+    roughness: jax.Array | None = None  # composite RMS roughness √(σ₁² + σ₂²) [m] of the contacting surfaces
 
 
 @dataclasses.dataclass(frozen=True)
@@ -312,6 +313,53 @@ register(Block(
         Output("life.L10r", "1e6 rev", "1e6 rev", "ISO/TS 16281 reference rating life L10r"),
     ),
     compute=_life,
+))
+
+
+def _film_hamrock_dowson(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    bearing, operating, lubricant = inputs.bearing, inputs.operating, inputs.lubricant
+    modulus = ball_raceway_modulus(bearing)
+    diameter, pitch = bearing.ball_diameter, bearing.pitch_diameter
+    orbital = results["balls.orbital_speed"]
+    out = {}
+    for side, curvature, ring_speed, sign, ratio in (
+            ("inner", inner_curvature, operating.inner_speed, -1.0, bearing.inner_groove_ratio),
+            ("outer", outer_curvature, operating.outer_speed, 1.0, bearing.outer_groove_ratio)):
+        load, angle = results[f"balls.{side}.load"], results[f"balls.{side}.contact_angle"]
+        projected = diameter * jnp.cos(angle)
+        # rolling-direction radius D(1 ∓ γ)/2 and entrainment speed ½|ω_ring − ω_m|(d_m ∓ D cos α)
+        radius = 0.5 * diameter * (1.0 + sign * projected / pitch)
+        speed = 0.5 * jnp.abs(ring_speed - orbital) * (pitch + sign * projected)
+        ellipticity = hertz.ellipticity(curvature(bearing, angle)[1])
+        loaded = load > 0
+        central, minimum = film_formulas.hamrock_dowson_point(
+            jnp.where(loaded, load, 1.0), radius, ellipticity, speed, lubricant.viscosity,
+            lubricant.pressure_viscosity, modulus)
+        out |= {f"film.{side}.central": jnp.where(loaded, central, jnp.nan),
+                f"film.{side}.minimum": jnp.where(loaded, minimum, jnp.nan),
+                f"film.{side}.entrainment_speed": speed}
+        if inputs.roughness is not None:
+            out[f"film.{side}.film_parameter"] = jnp.where(
+                loaded, film_formulas.film_parameter(minimum, inputs.roughness), jnp.nan)
+    return out
+
+
+def _film_outputs(side):
+    return (
+        Output(f"film.{side}.central", "m", "um", f"central film h_c (Hamrock–Dowson), {side}"),
+        Output(f"film.{side}.minimum", "m", "um", f"minimum film h_min (Hamrock–Dowson), {side}"),
+        Output(f"film.{side}.entrainment_speed", "m/s", "m/s", f"mean entrainment speed u, {side}"),
+        Output(f"film.{side}.film_parameter", "", "", f"film parameter Λ = h_min/σ, {side}"),
+    )
+
+
+register(Block(
+    name="film_hamrock_dowson",
+    bearing_types=BALL_TYPES,
+    enabled_by=("film", "hamrock_dowson"),
+    requires=("equilibrium",),
+    outputs=(*_film_outputs("inner"), *_film_outputs("outer")),
+    compute=_film_hamrock_dowson,
 ))
 
 

@@ -134,19 +134,22 @@ def _stiffness_lines(matrix) -> list[str]:
 
 
 def _ball_table_lines(result, outputs) -> list[str]:
-    keys = [key for key in outputs if key.startswith("balls.") and key in result.values]
+    keys = [key for key in outputs if key.startswith(("balls.", "film.")) and key in result.values]
     if not keys:
         return []
     short = {"balls.azimuth": "ψ", "balls.inner.load": "Qi", "balls.inner.contact_angle": "αi",
              "balls.inner.max_pressure": "p0i", "balls.outer.load": "Qo", "balls.outer.contact_angle": "αo",
              "balls.outer.max_pressure": "p0o", "balls.orbital_speed": "ωm", "balls.centrifugal_force": "Fc",
-             "balls.gyroscopic_moment": "Mg"}
+             "balls.gyroscopic_moment": "Mg", "film.inner.central": "hc,i", "film.inner.minimum": "hmin,i",
+             "film.outer.central": "hc,o", "film.outer.minimum": "hmin,o", "film.inner.film_parameter": "Λi",
+             "film.outer.film_parameter": "Λo"}
     shown = [key for key in short if key in keys]
     header = "".join(f"{short[k] + ' [' + _unit_label(outputs[k].display) + ']':>12}" for k in shown)
-    lines = ["", "Balls (load distribution; semi-axes and spin speed in --json)", "   #" + header]
+    lines = ["", "Balls (load distribution; semi-axes and spin speed in --json; – where a ball carries no load)",
+             "   #" + header]
     columns = [to_display(result.values[k], outputs[k].unit, outputs[k].display) for k in shown]
     for j in range(len(columns[0])):
-        lines.append(f"  {j:>2}" + "".join(f"{_format_number(c[j]):>12}" for c in columns))
+        lines.append(f"  {j:>2}" + "".join(f"{'–' if np.isnan(c[j]) else _format_number(c[j]):>12}" for c in columns))
     return lines
 
 
@@ -222,7 +225,7 @@ def format_report(result) -> str:
     values = result.values
     sections: dict[str, dict[str, dict]] = {}
     for key, out in outputs.items():
-        if key not in values or key.startswith("balls.") or not out.in_report or key in (
+        if key not in values or key.startswith(("balls.", "film.")) or not out.in_report or key in (
                 "displacement", "force", "stiffness", "converged", "residual", "contact.converged", "contact.iterations"):
             continue
         parts = key.split(".")
@@ -276,9 +279,18 @@ def nest(flat: dict) -> dict:
     return tree
 
 
+def _json_value(value):
+    """Array → nested lists; NaN (a quantity that does not exist, e.g. the film of an unloaded
+    ball) → null."""
+    array = np.asarray(value)
+    if array.dtype.kind == "f" and np.isnan(array).any():
+        return np.where(np.isnan(array), None, array.astype(object)).tolist()
+    return array.tolist()
+
+
 def json_document(result) -> dict:
     """The JSON document of a run: SI values under the output keys (README, "JSON keys")."""
-    flat = {key: np.asarray(value).tolist() for key, value in result.values.items()}
+    flat = {key: _json_value(value) for key, value in result.values.items()}
     flat["timing.compile_s"] = result.compile_s
     flat["timing.run_s"] = result.run_s
     document = {"title": result.model.scene.title, **nest(flat)}

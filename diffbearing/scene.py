@@ -16,7 +16,7 @@ import jax
 import numpy as np
 
 from . import effects as effect_registry
-from .params import (BEARING_STEEL, LUBRICANTS, MATERIALS, Lubricant, Material, Operating, ball_bearing,
+from .params import (BEARING_STEEL, _as_float, LUBRICANTS, MATERIALS, Lubricant, Material, Operating, ball_bearing,
                      check_range, wooster_pressure_viscosity)
 from .roller_geometry import RollerLoading, roller_bearing
 from .roller_profile import roller_profile
@@ -146,7 +146,16 @@ def inputs_from_values(v: dict) -> effect_registry.SceneInputs:
         force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
         axial_displacement=v.get("operating.axial_displacement"),
     )
-    return effect_registry.SceneInputs(bearing=bearing, operating=operating, lubricant=_lubricant(v))
+    return effect_registry.SceneInputs(bearing=bearing, operating=operating, lubricant=_lubricant(v),
+                                       roughness=_roughness(v))
+
+
+def _roughness(v: dict):
+    """Composite RMS roughness [m] of the scene's surfaces, or None."""
+    if "material.roughness" not in v:
+        return None
+    check_range("material.roughness", v["material.roughness"], low=0.0, unit=" m")
+    return _as_float(v["material.roughness"])
 
 
 def _raceway_curvature(v: dict) -> float:
@@ -219,6 +228,8 @@ def build_model(scene: Scene) -> Model:
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
     if scene.bearing_type in effect_registry.ROLLER_TYPES:
         effect_registry.contact_settings(settings)  # bad grid or tolerance fails here, before compiling
+    if settings["effects"].get("film", False) is not False and inputs.lubricant is None:
+        raise ValueError("effects.film needs a [lubricant] table (lubricant.preset or lubricant.viscosity)")
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,
                  sweep_axes=axes)
 

@@ -61,6 +61,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "elastic_modulus": _q("pressure"),
         "poisson_ratio": Key("number"),
         "density": _q("density"),
+        "roughness": _q("length", "composite RMS roughness √(σ₁² + σ₂²) of the contacting surfaces"),
     },
     "lubricant": {
         "preset": Key("choice", choices=("iso_vg_32", "iso_vg_46", "iso_vg_68", "iso_vg_100", "iso_vg_150", "iso_vg_220")),

@@ -1,0 +1,105 @@
+"""Closed-form EHL film thickness (issue 5, fidelity "formula") and the ball-bearing film effect."""
+
+import json
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+from diffbearing import cli
+from diffbearing.film_formulas import dowson_higginson_line_minimum, hamrock_dowson_point, pan_hamrock_line
+
+from .helpers import assert_jvp_matches_central_difference
+
+# Seed 003 (physics.md §4): roller radius 12.7 mm on an outer raceway of radius 66 mm, straight
+# length 12.7 mm, W = 1028 N, E' = 2.26e11 Pa, η0 = 0.08 Pa·s, α = 2.2e-8 1/Pa, inner ring at
+# 1000 r/min with the outer ring fixed: pitch diameter 106.6 mm, roller diameter 25.4 mm.
+SEED003 = dict(radius=1 / (1 / 12.7e-3 - 1 / 66e-3), viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
+SEED003_LOAD_PER_LENGTH = 1028.0 / 12.7e-3
+
+
+def seed003_entrainment_speed():
+    """Pure rolling, outer ring fixed: u = (d_m/4)(1 − γ²) ω_i, γ = D/d_m (Harris & Kotzalas ch. 8)."""
+    pitch, diameter, speed = 106.6e-3, 25.4e-3, 1000 * np.pi / 30
+    return pitch / 4 * (1 - (diameter / pitch) ** 2) * speed
+
+
+def test_pan_hamrock_central_film_is_consistent_with_seed003():
+    """physics.md §4: the seed 003 paper's fully flooded central film is 1.207 µm (numerical), and
+    the closed-form line formulas give about 1.2 µm; Pan–Hamrock within 5 %."""
+    central, minimum = pan_hamrock_line(SEED003_LOAD_PER_LENGTH, speed=seed003_entrainment_speed(), **SEED003)
+    assert float(central) == pytest.approx(1.207e-6, rel=0.05)
+    assert float(minimum) < float(central)
+    # Dowson–Higginson's minimum film agrees with Pan–Hamrock's within 20 % in this regime
+    assert float(dowson_higginson_line_minimum(SEED003_LOAD_PER_LENGTH, speed=seed003_entrainment_speed(),
+                                               **SEED003)) == pytest.approx(float(minimum), rel=0.2)
+
+
+def test_hamrock_dowson_exponents_and_ellipticity_factor():
+    """Exact identities of the formula: h_c ∝ u^0.67 η0^0.67 Q^−0.067, h_min ∝ u^0.68 Q^−0.073; the
+    ellipticity factors (1 − 0.61 e^{−0.73k}) and (1 − e^{−0.68k})."""
+    base = dict(load=2000.0, radius_rolling=6e-3, ellipticity=5.0, speed=8.0, viscosity=0.03,
+                pressure_viscosity=2e-8, effective_modulus=2.3e11)
+    central, minimum = (float(v) for v in hamrock_dowson_point(**base))
+    central2, minimum2 = (float(v) for v in hamrock_dowson_point(**(base | {"speed": 16.0, "load": 4000.0})))
+    assert central2 / central == pytest.approx(2**0.67 * 2**-0.067, rel=1e-12)
+    assert minimum2 / minimum == pytest.approx(2**0.68 * 2**-0.073, rel=1e-12)
+    central3, minimum3 = (float(v) for v in hamrock_dowson_point(**(base | {"ellipticity": 1.0})))
+    assert central3 / central == pytest.approx((1 - 0.61 * np.exp(-0.73)) / (1 - 0.61 * np.exp(-3.65)), rel=1e-12)
+    assert minimum3 / minimum == pytest.approx((1 - np.exp(-0.68)) / (1 - np.exp(-3.4)), rel=1e-12)
+    assert float(hamrock_dowson_point(**(base | {"speed": 0.0}))[0]) == 0.0  # no entrainment, no film
+
+
+@pytest.mark.parametrize("formula", ["hamrock_dowson", "pan_hamrock"])
+def test_film_derivatives_match_central_differences(formula):
+    def film(x):  # (load [kN], speed [m/s], viscosity [Pa·s]) → films [µm]
+        if formula == "hamrock_dowson":
+            out = hamrock_dowson_point(x[0] * 1e3, 6e-3, 5.0, x[1], x[2], 2e-8, 2.3e11)
+        else:
+            out = pan_hamrock_line(x[0] * 1e3 / 12.7e-3, SEED003["radius"], x[1], x[2], 2.2e-8, 2.26e11)
+        return jnp.stack(out) * 1e6
+
+    point = jnp.array([1.028, 2.63, 0.08])
+    for direction in jnp.eye(3):
+        assert_jvp_matches_central_difference(jax.jit(film), point, direction, step=1e-5, rtol=1e-7)
+
+
+def test_ball_film_effect_reports_null_for_unloaded_balls(capsys, tmp_path, shared_scenes):
+    """Seed 002's 6411E under a radial load leaves balls unloaded: their films are null in JSON;
+    loaded balls have h_min < h_c, and Λ = h_min/σ."""
+    path = tmp_path / "film.json"
+    code = cli.main(["run", str(shared_scenes / "seed002_6411E.toml"), "--json", str(path),
+                     "--set", 'operating.force=["8 kN", "0 N", "0 N"]', "--set", 'operating.inner_speed="3000 rpm"',
+                     "--set", 'effects.film="hamrock_dowson"', "--set", 'lubricant.preset="iso_vg_68"',
+                     "--set", 'material.roughness="0.2 um"'])
+    out = capsys.readouterr().out
+    assert code == 0 and "hmin,i [µm]" in out
+    document = json.loads(path.read_text())
+    loads = np.array(document["balls"]["inner"]["load"])
+    for side in ("inner", "outer"):
+        film = document["film"][side]
+        unloaded = np.array([value is None for value in film["minimum"]])
+        assert np.array_equal(unloaded, np.array(document["balls"][side]["load"]) == 0) and unloaded.any()
+        central = np.array([c for c in film["central"] if c is not None])
+        minimum = np.array([m for m in film["minimum"] if m is not None])
+        assert np.all(minimum > 0) and np.all(minimum < central)
+        parameter = np.array([p for p in film["film_parameter"] if p is not None])
+        np.testing.assert_allclose(parameter, minimum / 0.2e-6, rtol=1e-12)
+    assert loads.max() > 0
+
+
+def test_ball_film_grows_with_speed_and_needs_a_lubricant(capsys):
+    films = []
+    for speed in ("1500 rpm", "6000 rpm"):
+        code = cli.main(["run", "--set", 'effects.film="hamrock_dowson"', "--set", 'lubricant.preset="iso_vg_32"',
+                         "--set", f'operating.inner_speed="{speed}"', "--set", "effects.stiffness=false",
+                         "--set", "effects.life=false"])
+        out = capsys.readouterr().out
+        assert code == 0
+        row = next(line for line in out.splitlines() if line.strip().startswith("0 "))
+        films.append(float(row.split()[-2]))  # h_c,o of ball 0 [µm]
+    assert films[1] > films[0] * 2.0  # h ∝ u^0.67: 4× the speed → about 2.5× the film (less with Fc)
+    code = cli.main(["run", "--set", 'effects.film="hamrock_dowson"'])
+    err = capsys.readouterr().err
+    assert code == 2 and "lubricant" in err
