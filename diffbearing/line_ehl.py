@@ -1,0 +1,216 @@
+"""Numerical EHL of a line contact (isothermal, Newtonian, fully flooded), solved by Newton.
+
+Dimensionless as in Venner & Lubrecht, Multilevel Methods in Lubrication (2000), ch. 8, with
+the Hertz half-width b = √(8wR/(πE')) and pressure p_h = E'b/(4R):
+
+    X = x/b,  P = p/p_h,  H = hR/b²,  ρ̄ = ρ/ρ₀,  η̄ = η/η₀,
+
+    d/dX(ε dP/dX) − d(ρ̄H)/dX = 0,  ε = ρ̄H³/(η̄λ),  λ = 12 η₀ u R²/(b³ p_h)   (Reynolds)
+    H(X) = H₀ + X²/2 − (1/π) ∫ P(X') ln|X − X'| dX'                          (film, elastic)
+    ∫ P dX = π/2                                                             (load balance)
+
+with u the mean entrainment speed. Viscosity: Roelands η = η₀ exp{(ln η₀ + 9.67)[(1 + p/p_R)^z − 1]},
+p_R = 1.96e8 Pa, z = α p_R/(ln η₀ + 9.67), or Barus η = η₀ e^{αp}; density: Dowson–Higginson
+ρ/ρ₀ = 1 + 0.6e-9 p/(1 + 1.7e-9 p) or incompressible (physics.md §4).
+
+Discretization on N nodes over X ∈ [−4.5, 1.5]: second-order central Poiseuille term, the wedge
+term upwind (second order, first order next to the inlet), P piecewise constant per node for the
+deflection (closed-form log integrals). Cavitation is the complementarity P ≥ 0, −L(P) ≥ 0,
+P·L = 0 (L the Reynolds residual), written as the Fischer–Burmeister equation
+P + s(−L) − √(P² + s²L²) = 0. Unknowns P₁ … P_{N−2} and H₀; Newton on all of them with a dense
+Jacobian (jacfwd) from a Hertz pressure and the Pan–Hamrock film; the last solve sits in
+`jax.lax.custom_root`, so the derivative of the converged film with respect to load, speed,
+viscosity and α costs one linear solve with the same Jacobian.
+"""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+
+from .film_formulas import pan_hamrock_line
+from .numerics import require_float64
+
+ROELANDS_PRESSURE = 1.96e8  # p_R [Pa]
+INLET, OUTLET = -4.5, 1.5  # domain in Hertz half-widths
+
+
+class LineFilm(eqx.Module):
+    """Solution [SI]: x [m] nodes, pressure [Pa], film h [m], central film at x = 0 [m], minimum
+    film [m], whether Newton converged (largest residual below the tolerance), that residual [-]."""
+
+    x: jax.Array
+    pressure: jax.Array
+    thickness: jax.Array
+    central: jax.Array
+    minimum: jax.Array
+    converged: jax.Array
+    residual: jax.Array
+
+
+def viscosity_ratio(pressure, viscosity, pressure_viscosity, law="roelands"):
+    """η/η₀ [-] at pressure p [Pa] (Roelands or Barus)."""
+    if law == "barus":
+        return jnp.exp(pressure_viscosity * pressure)
+    log_factor = jnp.log(viscosity) + 9.67
+    exponent = pressure_viscosity * ROELANDS_PRESSURE / log_factor
+    return jnp.exp(log_factor * ((1.0 + jnp.maximum(pressure, 0.0) / ROELANDS_PRESSURE) ** exponent - 1.0))
+
+
+def density_ratio(pressure, law="dowson_higginson"):
+    """ρ/ρ₀ [-] at pressure p [Pa] (Dowson–Higginson or incompressible)."""
+    if law == "incompressible":
+        return jnp.ones_like(pressure)
+    return 1.0 + 0.6e-9 * pressure / (1.0 + 1.7e-9 * pressure)
+
+
+def log_kernel(nodes):
+    """K_ij = ∫ ln|X_i − X'| dX' over the cell of node j (width Δ), closed form [-]."""
+    spacing = nodes[1] - nodes[0]
+    offset = nodes[:, None] - nodes[None, :]
+
+    def primitive(s):
+        return s * jnp.log(jnp.abs(s)) - s
+
+    return primitive(offset + 0.5 * spacing) - primitive(offset - 0.5 * spacing)
+
+
+class _Problem(eqx.Module):
+    nodes: jax.Array
+    kernel: jax.Array
+    speed_parameter: jax.Array  # λ
+    hertz_pressure: jax.Array  # p_h [Pa]
+    viscosity: jax.Array
+    pressure_viscosity: jax.Array
+    viscosity_law: str = eqx.field(static=True)
+    density_law: str = eqx.field(static=True)
+
+
+def _film(pressure, offset, problem):
+    return offset + 0.5 * problem.nodes**2 - problem.kernel @ pressure / jnp.pi
+
+
+def _residual(unknowns, problem: _Problem):
+    interior, offset = unknowns[:-1], unknowns[-1]
+    pressure = jnp.pad(interior, 1)
+    spacing = problem.nodes[1] - problem.nodes[0]
+    film = _film(pressure, offset, problem)
+    dimensional = pressure * problem.hertz_pressure
+    density = density_ratio(dimensional, problem.density_law)
+    flow = density * film**3 / (viscosity_ratio(dimensional, problem.viscosity, problem.pressure_viscosity,
+                                                problem.viscosity_law) * problem.speed_parameter)
+    face = 0.5 * (flow[1:] + flow[:-1])
+    poiseuille = (face[1:] * (pressure[2:] - pressure[1:-1]) - face[:-1] * (pressure[1:-1] - pressure[:-2])) / spacing**2
+    mass = density * film
+    first_order = (mass[1:-1] - mass[:-2]) / spacing
+    second_order = (3.0 * mass[1:-1] - 4.0 * mass[:-2] + jnp.pad(mass[:-3], (1, 0), constant_values=0.0)) / (2 * spacing)
+    wedge = jnp.where(jnp.arange(1, len(pressure) - 1) >= 2, second_order, first_order)
+    reynolds = (poiseuille - wedge) * spacing  # scaled to O(P) for the complementarity
+    complementarity = interior - reynolds - jnp.sqrt(interior**2 + reynolds**2)
+    balance = spacing * jnp.sum(pressure) - 0.5 * jnp.pi
+    return jnp.append(complementarity, balance)
+
+
+def moes_load_parameter(load_per_length, radius, speed, viscosity, effective_modulus):
+    """Moes' M = W'(2U)^(−1/2) [-] with W' = w/(E'R), U = η₀u/(E'R) (Venner & Lubrecht 2000)."""
+    return load_per_length / (effective_modulus * radius) / jnp.sqrt(2.0 * viscosity * speed / (effective_modulus * radius))
+
+
+def _damped_newton(function, unknowns, steps: int):
+    """Newton with Armijo backtracking on ½‖F‖² (dense Jacobian), a fixed number of steps; a
+    step that does not lower the merit (or gives NaN) is not taken, so the iterate stays finite."""
+
+    def merit(point):
+        return 0.5 * jnp.sum(function(point) ** 2)
+
+    def step(current, _):
+        residual = function(current)
+        direction = jnp.linalg.solve(jax.jacfwd(function)(current), -residual)
+        start = 0.5 * jnp.sum(residual**2)
+
+        def too_long(length):
+            return (~(merit(current + length * direction) <= (1.0 - 1e-4 * length) * start)) & (length > 1e-6)
+
+        length = jax.lax.while_loop(too_long, lambda length: 0.5 * length, 1.0)
+        trial = current + length * direction
+        return jnp.where((start > 1e-28) & (merit(trial) < start), trial, current), None
+
+    return jax.lax.scan(step, unknowns, None, length=steps)[0]
+
+
+def _problem(nodes, half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity, viscosity_law,
+             density_law):
+    grid = jnp.linspace(INLET, OUTLET, nodes)
+    return _Problem(grid, log_kernel(grid), speed_parameter, hertz_pressure, viscosity, pressure_viscosity,
+                    viscosity_law, density_law)
+
+
+# Coarsest grid of the nested iteration; the continuation on it runs the Moes load parameter
+# M = W'(2U)^(-1/2) geometrically from START_LOAD_PARAMETER to the case's M (through λ ∝ M^-2).
+COARSE_NODES = 65
+START_LOAD_PARAMETER = 10.0
+CONTINUATION_STAGES = 8
+FINAL_STEPS = 20
+
+
+def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, effective_modulus, nodes=513,
+              viscosity_law="roelands", density_law="dowson_higginson", tolerance=1e-10) -> LineFilm:
+    """Isothermal Newtonian EHL line contact by Newton on the discretized Reynolds equation.
+
+    Args:
+        load_per_length: w [N/m] > 0.
+        radius: reduced radius R [m] in the rolling direction.
+        speed: mean entrainment speed u [m/s] > 0.
+        viscosity: η₀ [Pa·s]; pressure_viscosity: α [1/Pa]; effective_modulus: E' [Pa].
+        nodes: grid size N = 2^k + 1 ≥ 65 (≤ 1025 keeps the dense Jacobian cheap).
+        viscosity_law: "roelands" | "barus"; density_law: "dowson_higginson" | "incompressible".
+
+    Start (physics.md §7: a plain Newton from a Hertz start diverges at low and high loads): on
+    65 nodes, damped Newton from a Hertz pressure at M = 10, continued in 8 geometric steps of the
+    Moes load parameter M to the case's (through the speed parameter λ ∝ M⁻²); then
+    nested iteration, each finer grid started from the interpolated coarser solution; last, an
+    optimistix Newton from there, whose `ImplicitAdjoint` gives the derivatives.
+    """
+    require_float64()
+    if nodes < COARSE_NODES or (nodes - 1) & (nodes - 2):
+        raise ValueError(f"fidelity.grid: the line EHL solver needs 2^k + 1 ≥ {COARSE_NODES} nodes, got {nodes}")
+    half_width = jnp.sqrt(8.0 * load_per_length * radius / (jnp.pi * effective_modulus))
+    hertz_pressure = effective_modulus * half_width / (4.0 * radius)
+    speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
+    laws = (viscosity, pressure_viscosity, viscosity_law, density_law)
+    constants = jax.lax.stop_gradient((half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity))
+
+    # coarse start: Hertz pressure, H₀ from the Pan–Hamrock central film
+    coarse = _problem(COARSE_NODES, *constants, viscosity_law, density_law)
+    hertz = jnp.sqrt(jnp.maximum(1.0 - coarse.nodes**2, 0.0))
+    central_guess, _ = pan_hamrock_line(load_per_length, radius, speed, viscosity, pressure_viscosity, effective_modulus)
+    rigid = _film(hertz, 0.0, coarse)[jnp.argmin(jnp.abs(coarse.nodes))]
+    unknowns = jax.lax.stop_gradient(
+        jnp.append(hertz[1:-1], central_guess * radius / half_width**2 - rigid))
+    load_parameter = jax.lax.stop_gradient(moes_load_parameter(load_per_length, radius, speed, viscosity,
+                                                                effective_modulus))
+    for stage in range(1, CONTINUATION_STAGES + 1):
+        stage_parameter = START_LOAD_PARAMETER * (load_parameter / START_LOAD_PARAMETER) ** (stage / CONTINUATION_STAGES)
+        scaled = coarse.speed_parameter * (load_parameter / stage_parameter) ** 2
+        stage_problem = eqx.tree_at(lambda p: p.speed_parameter, coarse, scaled)
+        unknowns = _damped_newton(lambda y: _residual(y, stage_problem), unknowns, 20)
+    count = COARSE_NODES
+    while count < nodes:
+        count = 2 * count - 1
+        finer = _problem(count, *constants, viscosity_law, density_law)
+        previous = jnp.linspace(INLET, OUTLET, (count + 1) // 2)
+        pressure = jnp.interp(finer.nodes, previous, jnp.pad(unknowns[:-1], 1))
+        unknowns = _damped_newton(lambda y: _residual(y, finer), jnp.append(pressure[1:-1], unknowns[-1]), 12)
+
+    problem = _problem(nodes, half_width, hertz_pressure, speed_parameter, *laws)
+    # Final Newton on the fine grid inside lax.custom_root: its derivative is the implicit one,
+    # −J⁻¹ ∂F/∂θ with the converged Jacobian (forward and reverse mode).
+    solution = jax.lax.custom_root(
+        lambda y: _residual(y, problem), jax.lax.stop_gradient(unknowns),
+        solve=lambda function, guess: _damped_newton(function, guess, FINAL_STEPS),
+        tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
+    residual = jnp.max(jnp.abs(_residual(jax.lax.stop_gradient(solution), problem)))
+    pressure = jnp.pad(solution[:-1], 1)
+    film = _film(pressure, solution[-1], problem) * half_width**2 / radius
+    centre = jnp.argmin(jnp.abs(problem.nodes))
+    return LineFilm(problem.nodes * half_width, pressure * hertz_pressure, film, film[centre], jnp.min(film),
+                    residual < tolerance, residual)
