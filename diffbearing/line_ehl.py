@@ -28,7 +28,7 @@ import jax
 import jax.numpy as jnp
 
 from .film_formulas import pan_hamrock_line
-from .numerics import require_float64
+from .numerics import require_float64, safe_sqrt
 
 ROELANDS_PRESSURE = 1.96e8  # p_R [Pa]
 INLET, OUTLET = -4.5, 1.5  # domain in Hertz half-widths
@@ -105,7 +105,7 @@ def _residual(unknowns, problem: _Problem):
     second_order = (3.0 * mass[1:-1] - 4.0 * mass[:-2] + jnp.pad(mass[:-3], (1, 0), constant_values=0.0)) / (2 * spacing)
     wedge = jnp.where(jnp.arange(1, len(pressure) - 1) >= 2, second_order, first_order)
     reynolds = (poiseuille - wedge) * spacing  # scaled to O(P) for the complementarity
-    complementarity = interior - reynolds - jnp.sqrt(interior**2 + reynolds**2)
+    complementarity = interior - reynolds - safe_sqrt(interior**2 + reynolds**2)  # finite slope at (0, 0)
     balance = spacing * jnp.sum(pressure) - 0.5 * jnp.pi
     return jnp.append(complementarity, balance)
 
