@@ -24,7 +24,8 @@ from . import ball_equilibrium, film_formulas, hertz, life
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
 from .roller_contact import roller_contact
-from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, roller_modulus
+from .line_ehl import COARSE_NODES, line_film
+from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, film_length, roller_modulus
 
 BALL_TYPES = ("deep_groove_ball", "angular_contact_ball")
 ROLLER_TYPES = ROLLER_KINDS
@@ -439,3 +440,74 @@ for _method in ("slices", "influence"):
         outputs=_contact_outputs(),
         compute=_contact(_method),
     ))
+
+
+# ---------------------------------------------------------------------------------------------
+# Roller–raceway film (fully flooded, pure rolling): Pan–Hamrock (effect film = "formula") or the
+# numerical line contact (film = "line") at mid-length, with the load on the film length.
+
+DEFAULT_LINE_NODES = 513
+
+
+def film_settings(settings: dict, inputs: SceneInputs) -> int:
+    """Nodes of the line EHL level (fidelity.grid[0], default 513); ValueError for a bad grid or a
+    roller scene without entrainment speed."""
+    speed = inputs.operating.entrainment_speed
+    if not isinstance(speed, jax.core.Tracer) and float(speed) <= 0:
+        raise ValueError("effects.film needs an entrainment speed: give operating.inner_speed (or outer_speed) "
+                         "and bearing.pitch_diameter (cylindrical roller)")
+    nodes = settings["fidelity"].get("grid", [DEFAULT_LINE_NODES])[0]
+    if settings["effects"].get("film") == "line" and (nodes < COARSE_NODES or (nodes - 1) & (nodes - 2)):
+        raise ValueError(f"fidelity.grid[0]: the line EHL level needs 2^k + 1 ≥ {COARSE_NODES} nodes, got {nodes}")
+    return nodes
+
+
+def _roller_film_case(inputs: SceneInputs):
+    bearing, loading, lubricant = inputs.bearing, inputs.operating, inputs.lubricant
+    return (loading.load / film_length(bearing), equivalent_radius(bearing, loading, jnp.asarray(0.0)),
+            loading.entrainment_speed, lubricant.viscosity, lubricant.pressure_viscosity, roller_modulus(bearing))
+
+
+def _film_formula(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    central, minimum = film_formulas.pan_hamrock_line(*_roller_film_case(inputs))
+    return {"film.central": central, "film.minimum": minimum, "film.entrainment_speed": inputs.operating.entrainment_speed}
+
+
+def _film_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    lubricant = inputs.lubricant
+    solved = line_film(*_roller_film_case(inputs), nodes=film_settings(settings, inputs),
+                       viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+    return {"film.central": solved.central, "film.minimum": solved.minimum, "film.converged": solved.converged,
+            "film.entrainment_speed": inputs.operating.entrainment_speed, "film.x": solved.x,
+            "film.pressure": solved.pressure, "film.thickness": solved.thickness}
+
+
+_ROLLER_FILM_COMMON = (
+    Output("film.central", "m", "um", "central film h_c at x = 0"),
+    Output("film.minimum", "m", "um", "minimum film h_min"),
+    Output("film.entrainment_speed", "m/s", "m/s", "mean entrainment speed u (pure rolling)"),
+)
+
+register(Block(
+    name="film_formula",
+    bearing_types=ROLLER_TYPES,
+    enabled_by=("film", "formula"),
+    requires=("roller_geometry",),
+    outputs=_ROLLER_FILM_COMMON,
+    compute=_film_formula,
+))
+
+register(Block(
+    name="film_line",
+    bearing_types=ROLLER_TYPES,
+    enabled_by=("film", "line"),
+    requires=("roller_geometry",),
+    outputs=(
+        *_ROLLER_FILM_COMMON,
+        Output("film.converged", "", "", "the line EHL Newton converged"),
+        Output("film.x", "m", "mm", "nodes along rolling (x), inlet at −4.5 b", in_report=False),
+        Output("film.pressure", "Pa", "GPa", "film pressure p(x)", in_report=False),
+        Output("film.thickness", "m", "um", "film thickness h(x)", in_report=False),
+    ),
+    compute=_film_line,
+))

@@ -89,6 +89,8 @@ class Lubricant(eqx.Module):
     pressure_viscosity: np.ndarray = eqx.field(converter=_as_float)  # α [1/Pa]
     density: np.ndarray = eqx.field(converter=_as_float)  # ρ₀ [kg/m³]
     name: str = eqx.field(static=True, default="custom")
+    viscosity_law: str = eqx.field(static=True, default="roelands")  # η(p) of numerical EHL: roelands | barus
+    density_law: str = eqx.field(static=True, default="dowson_higginson")  # ρ(p): dowson_higginson | incompressible
 
     def __check_init__(self):
         check_range("lubricant.viscosity", self.viscosity, low=0.0, unit=" Pa*s")

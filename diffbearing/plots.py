@@ -82,9 +82,26 @@ def plot_contact_pressure(result, figure):
     figure.suptitle(f"{result.model.scene.title}: {profile} profile, Q = {float(values['contact.load']):.4g} N")
 
 
+def plot_line_film(result, figure):
+    """Pressure and film thickness along the rolling direction of the line EHL solution."""
+    values = result.values
+    x = np.asarray(values["film.x"]) * 1e3
+    pressure_axis, film_axis = figure.subplots(1, 2)
+    pressure_axis.plot(x, np.asarray(values["film.pressure"]) / 1e9)
+    pressure_axis.set(xlabel="x, rolling direction [mm]", ylabel="pressure [GPa]", title="film pressure")
+    film_axis.plot(x, np.asarray(values["film.thickness"]) * 1e6)
+    film_axis.axhline(float(values["film.central"]) * 1e6, color="grey", lw=0.8, ls="--", label="central film")
+    film_axis.set(xlabel="x, rolling direction [mm]", ylabel="film thickness [µm]", title="film thickness",
+                  ylim=(0, 4 * float(values["film.central"]) * 1e6))
+    film_axis.legend()
+    for axis in (pressure_axis, film_axis):
+        axis.grid(alpha=0.3)
+    figure.suptitle(f"{result.model.scene.title}: line EHL, fully flooded")
+
+
 # Block name → plot; the last block of a run that has one draws the figure.
 PLOTS = {"raceway_contact": plot_hertz_load_curves, "roller_contact_slices": plot_contact_pressure,
-         "roller_contact_influence": plot_contact_pressure}
+         "roller_contact_influence": plot_contact_pressure, "film_line": plot_line_film}
 
 
 def save_plot(result, path: str) -> None:

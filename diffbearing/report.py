@@ -134,9 +134,9 @@ def _stiffness_lines(matrix) -> list[str]:
 
 
 def _ball_table_lines(result, outputs) -> list[str]:
-    keys = [key for key in outputs if key.startswith(("balls.", "film.")) and key in result.values]
-    if not keys:
+    if not any(key.startswith("balls.") for key in result.values):
         return []
+    keys = [key for key in outputs if key.startswith(("balls.", "film.")) and key in result.values]
     short = {"balls.azimuth": "ψ", "balls.inner.load": "Qi", "balls.inner.contact_angle": "αi",
              "balls.inner.max_pressure": "p0i", "balls.outer.load": "Qo", "balls.outer.contact_angle": "αo",
              "balls.outer.max_pressure": "p0o", "balls.orbital_speed": "ωm", "balls.centrifugal_force": "Fc",
@@ -225,8 +225,10 @@ def format_report(result) -> str:
     values = result.values
     sections: dict[str, dict[str, dict]] = {}
     for key, out in outputs.items():
-        if key not in values or key.startswith(("balls.", "film.")) or not out.in_report or key in (
-                "displacement", "force", "stiffness", "converged", "residual", "contact.converged", "contact.iterations"):
+        per_ball = key.startswith("balls.") or (key.startswith("film.") and "balls.azimuth" in values)
+        if key not in values or per_ball or not out.in_report or key in (
+                "displacement", "force", "stiffness", "converged", "residual", "contact.converged", "contact.iterations",
+                "film.converged"):
             continue
         parts = key.split(".")
         if len(parts) == 3 and parts[1] in ("inner", "outer"):
@@ -253,6 +255,9 @@ def format_report(result) -> str:
     if "displacement" in values:
         lines += _displacement_lines(values["displacement"])
     lines += _roller_pressure_lines(result)
+    if "film.converged" in values:
+        state = "converged" if bool(values["film.converged"]) else "DID NOT CONVERGE (values are the last iterate)"
+        lines.append(f"  line EHL (Newton, {len(values['film.x'])} nodes, fully flooded): {state}")
     if "force" in values and result.model.inputs.operating.axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
     if "stiffness" in values:

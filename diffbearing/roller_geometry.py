@@ -47,6 +47,7 @@ class RollerLoading(eqx.Module):
     load: jax.Array = eqx.field(converter=_as_float)  # roller load Q [N]
     tilt: jax.Array = eqx.field(converter=_as_float)  # ϑ [rad]
     raceway_curvature: jax.Array = eqx.field(converter=_as_float)  # 1/R_race at mid-length [1/m], convex > 0
+    entrainment_speed: jax.Array = eqx.field(converter=_as_float, default=0.0)  # mean rolling speed u [m/s]
 
     def __check_init__(self):
         check_range("contact.load", self.load, low=0.0, unit=" N", why="a roller carries a compressive load")
@@ -74,6 +75,14 @@ def roller_bearing(*, kind="cylindrical_roller", length, diameter=None, small_di
     check_range("bearing.roller_length", length, low=0.0, unit=" m")
     return RollerBearing(small_diameter, large_diameter, length, cone_half_angle,
                          profile if profile is not None else RollerProfile(), material, kind=kind)
+
+
+def film_length(bearing: RollerBearing):
+    """Length [m] that carries the load in a line-contact film formula: the flat part of a
+    circular profile, else the effective length."""
+    if bearing.profile.kind == "circular":
+        return bearing.profile.flat_length
+    return bearing.length
 
 
 def roller_modulus(bearing: RollerBearing):

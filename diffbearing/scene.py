@@ -115,7 +115,9 @@ def _lubricant(values: dict) -> Lubricant | None:
     alpha = values.get("lubricant.pressure_viscosity",
                        base.pressure_viscosity if base else wooster_pressure_viscosity(viscosity))
     density = values.get("lubricant.density", base.density if base else 870.0)
-    return Lubricant(viscosity, alpha, density, name=base.name if base else "custom")
+    return Lubricant(viscosity, alpha, density, name=base.name if base else "custom",
+                     viscosity_law=values.get("lubricant.viscosity_law", "roelands"),
+                     density_law=values.get("lubricant.density_law", "dowson_higginson"))
 
 
 def build_inputs(scene: Scene) -> effect_registry.SceneInputs:
@@ -178,6 +180,16 @@ def _raceway_curvature(v: dict) -> float:
                      "(the latter for cylindrical rollers)")
 
 
+def _roller_entrainment_speed(v: dict):
+    """Mean entrainment speed u [m/s] of a cylindrical roller in pure rolling:
+    u = (d_m/4)(1 − γ²)|ω_i − ω_o|, γ = D/d_m (Harris & Kotzalas vol. 1, ch. 8); 0 without speeds."""
+    relative = v.get("operating.inner_speed", 0.0) - v.get("operating.outer_speed", 0.0)
+    if "bearing.pitch_diameter" not in v or v["bearing.type"] != "cylindrical_roller":
+        return 0.0
+    ratio = v["bearing.roller_diameter"] / v["bearing.pitch_diameter"]
+    return 0.25 * v["bearing.pitch_diameter"] * (1.0 - ratio**2) * abs(relative)
+
+
 def roller_inputs_from_values(v: dict) -> effect_registry.SceneInputs:
     """Parameter pytrees of a roller–raceway contact scene (cylindrical or tapered roller)."""
     length = v["bearing.roller_length"]
@@ -194,7 +206,7 @@ def roller_inputs_from_values(v: dict) -> effect_registry.SceneInputs:
     if "contact.load" not in v:
         raise ValueError("missing required key 'contact.load' (the roller load Q)")
     loading = RollerLoading(load=v["contact.load"], tilt=v.get("contact.tilt", 0.0),
-                            raceway_curvature=_raceway_curvature(v))
+                            raceway_curvature=_raceway_curvature(v), entrainment_speed=_roller_entrainment_speed(v))
     return effect_registry.SceneInputs(bearing=bearing, operating=loading, lubricant=_lubricant(v))
 
 
@@ -226,8 +238,10 @@ def build_model(scene: Scene) -> Model:
     axes = sweep_axes(scene.sweep) if scene.sweep else {}  # bad entries fail here, before compiling
     blocks, missing = effect_registry.resolve(scene.bearing_type, scene.table("effects"))
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
-    if scene.bearing_type in effect_registry.ROLLER_TYPES:
+    if scene.bearing_type in effect_registry.ROLLER_TYPES and "contact" in settings["effects"]:
         effect_registry.contact_settings(settings)  # bad grid or tolerance fails here, before compiling
+    if scene.bearing_type in effect_registry.ROLLER_TYPES and settings["effects"].get("film", False) is not False:
+        effect_registry.film_settings(settings, inputs)
     if settings["effects"].get("film", False) is not False and inputs.lubricant is None:
         raise ValueError("effects.film needs a [lubricant] table (lubricant.preset or lubricant.viscosity)")
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,

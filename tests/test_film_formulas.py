@@ -163,3 +163,20 @@ def test_line_ehl_hard_cases_report_instead_of_nan(load_factor, speed):
     assert np.all(np.isfinite(np.asarray(result.pressure))) and np.isfinite(float(value))
     assert np.isfinite(float(gradient))
     assert bool(result.converged) == (float(result.residual) < 1e-10)
+
+
+@pytest.mark.parametrize("level, expected, tolerance", [("formula", 1.2389e-6, 1e-3), ("line", 1.207e-6, 0.05)])
+def test_seed003_flooded_film_through_the_cli(capsys, tmp_path, shared_scenes, level, expected, tolerance):
+    """`diffbearing run seed003 --set effects.film=...`: Pan–Hamrock (1.2389 µm, this formula's
+    value) and the numerical line contact against the paper's flooded 1.207 µm within 5 %; the
+    starvation the scene also names is listed as not computed."""
+    path = tmp_path / "film.json"
+    code = cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", f'effects.film="{level}"',
+                     "--set", "fidelity.grid=[257, 129]", "--json", str(path)])
+    out = capsys.readouterr().out
+    assert code == 0 and "central film h_c at x = 0" in out and "Not computed" in out and "starvation" in out
+    film = json.loads(path.read_text())["film"]
+    assert film["central"] == pytest.approx(expected, rel=tolerance)
+    assert film["entrainment_speed"] == pytest.approx(seed003_entrainment_speed(), rel=1e-12)
+    if level == "line":
+        assert film["converged"] is True and len(film["pressure"]) == 257
