@@ -36,7 +36,8 @@ INLET, OUTLET = -4.5, 1.5  # domain in Hertz half-widths
 
 class LineFilm(eqx.Module):
     """Solution [SI]: x [m] nodes, pressure [Pa], film h [m], central film at x = 0 [m], minimum
-    film [m], whether Newton converged (largest residual below the tolerance), that residual [-]."""
+    film [m], whether it converged (largest residual below the tolerance and a positive film;
+    at high M a coarse grid can give a discrete solution with h < 0), that residual [-]."""
 
     x: jax.Array
     pressure: jax.Array
@@ -144,12 +145,22 @@ def _problem(nodes, half_width, hertz_pressure, speed_parameter, viscosity, pres
                     viscosity_law, density_law)
 
 
-# Coarsest grid of the nested iteration; the continuation on it runs the Moes load parameter
-# M = W'(2U)^(-1/2) geometrically from START_LOAD_PARAMETER to the case's M (through λ ∝ M^-2).
-COARSE_NODES = 65
+# The start: a Hertz pressure at Moes M = START_LOAD_PARAMETER; the continuation runs M
+# geometrically to the case's (through λ ∝ M^-2), on START_NODES for light loads (M < 10; the
+# coarser grid converges there from the Hertz start) and on COARSE_NODES, the coarsest grid of
+# the nested iteration, for heavy ones.
+START_NODES = 65
+COARSE_NODES = 129
 START_LOAD_PARAMETER = 10.0
 CONTINUATION_STAGES = 8
 FINAL_STEPS = 20
+
+
+def _interpolate(unknowns, count):
+    """Unknowns (interior pressure, H₀) of a grid interpolated onto `count` nodes."""
+    previous = jnp.linspace(INLET, OUTLET, len(unknowns) + 1)
+    pressure = jnp.interp(jnp.linspace(INLET, OUTLET, count), previous, jnp.pad(unknowns[:-1], 1))
+    return jnp.append(pressure[1:-1], unknowns[-1])
 
 
 def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, effective_modulus, nodes=513,
@@ -161,14 +172,15 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         radius: reduced radius R [m] in the rolling direction.
         speed: mean entrainment speed u [m/s] > 0.
         viscosity: η₀ [Pa·s]; pressure_viscosity: α [1/Pa]; effective_modulus: E' [Pa].
-        nodes: grid size N = 2^k + 1 ≥ 65 (≤ 1025 keeps the dense Jacobian cheap).
+        nodes: grid size N = 2^k + 1 ≥ 129 (≤ 1025 keeps the dense Jacobian cheap).
         viscosity_law: "roelands" | "barus"; density_law: "dowson_higginson" | "incompressible".
 
-    Start (physics.md §7: a plain Newton from a Hertz start diverges at low and high loads): on
-    65 nodes, damped Newton from a Hertz pressure at M = 10, continued in 8 geometric steps of the
-    Moes load parameter M to the case's (through the speed parameter λ ∝ M⁻²); then
-    nested iteration, each finer grid started from the interpolated coarser solution; last, an
-    optimistix Newton from there, whose `ImplicitAdjoint` gives the derivatives.
+    Start (physics.md §7: a plain Newton from a Hertz start diverges at low and high loads):
+    damped Newton from a Hertz pressure at M = 10, continued in 8 geometric steps of the Moes
+    load parameter M to the case's (through the speed parameter λ ∝ M⁻²), on 65 nodes for
+    M < 10 and on 129 nodes above; nested iteration, each finer grid started from the
+    interpolated coarser solution; last, Newton inside `lax.custom_root`, whose implicit
+    derivative is exact.
     """
     require_float64()
     if nodes < COARSE_NODES or (nodes - 1) & (nodes - 2):
@@ -179,27 +191,44 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     laws = (viscosity, pressure_viscosity, viscosity_law, density_law)
     constants = jax.lax.stop_gradient((half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity))
 
-    # coarse start: Hertz pressure, H₀ from the Pan–Hamrock central film
-    coarse = _problem(COARSE_NODES, *constants, viscosity_law, density_law)
-    hertz = jnp.sqrt(jnp.maximum(1.0 - coarse.nodes**2, 0.0))
-    central_guess, _ = pan_hamrock_line(load_per_length, radius, speed, viscosity, pressure_viscosity, effective_modulus)
-    rigid = _film(hertz, 0.0, coarse)[jnp.argmin(jnp.abs(coarse.nodes))]
-    unknowns = jax.lax.stop_gradient(
-        jnp.append(hertz[1:-1], central_guess * radius / half_width**2 - rigid))
     load_parameter = jax.lax.stop_gradient(moes_load_parameter(load_per_length, radius, speed, viscosity,
                                                                 effective_modulus))
-    for stage in range(1, CONTINUATION_STAGES + 1):
-        stage_parameter = START_LOAD_PARAMETER * (load_parameter / START_LOAD_PARAMETER) ** (stage / CONTINUATION_STAGES)
-        scaled = coarse.speed_parameter * (load_parameter / stage_parameter) ** 2
-        stage_problem = eqx.tree_at(lambda p: p.speed_parameter, coarse, scaled)
-        unknowns = _damped_newton(lambda y: _residual(y, stage_problem), unknowns, 20)
+
+    def at_load_parameter(problem, value):  # the same contact at Moes M = value (speed scaled)
+        return eqx.tree_at(lambda p: p.speed_parameter, problem, problem.speed_parameter * (load_parameter / value) ** 2)
+
+    def hertz_start(problem):  # Hertz pressure, H₀ from the Pan–Hamrock central film at M = 10
+        hertz = jnp.sqrt(jnp.maximum(1.0 - problem.nodes**2, 0.0))
+        start_speed = speed * (load_parameter / START_LOAD_PARAMETER) ** 2
+        central_guess, _ = pan_hamrock_line(load_per_length, radius, start_speed, viscosity, pressure_viscosity,
+                                            effective_modulus)
+        rigid = _film(hertz, 0.0, problem)[jnp.argmin(jnp.abs(problem.nodes))]
+        return jax.lax.stop_gradient(jnp.append(hertz[1:-1], central_guess * radius / half_width**2 - rigid))
+
+    def continuation(problem, unknowns):  # M from 10 to the case's in geometric steps
+        for stage in range(1, CONTINUATION_STAGES + 1):
+            stage_problem = at_load_parameter(
+                problem, START_LOAD_PARAMETER * (load_parameter / START_LOAD_PARAMETER) ** (stage / CONTINUATION_STAGES))
+            unknowns = _damped_newton(lambda y: _residual(y, stage_problem), unknowns, 20)
+        return unknowns
+
+    coarse = _problem(COARSE_NODES, *constants, viscosity_law, density_law)
+
+    def light_load():  # M < 10: the continuation on 65 nodes, then onto the coarse grid
+        start = _problem(START_NODES, *constants, viscosity_law, density_law)
+        unknowns = _interpolate(continuation(start, hertz_start(start)), COARSE_NODES)
+        return _damped_newton(lambda y: _residual(y, coarse), unknowns, 12)
+
+    def heavy_load():  # M ≥ 10: the continuation on the coarse grid, where the contact is resolved
+        return continuation(coarse, hertz_start(coarse))
+
+    unknowns = jax.lax.cond(load_parameter < START_LOAD_PARAMETER, light_load, heavy_load)
+    # nested iteration up to the requested grid
     count = COARSE_NODES
     while count < nodes:
         count = 2 * count - 1
         finer = _problem(count, *constants, viscosity_law, density_law)
-        previous = jnp.linspace(INLET, OUTLET, (count + 1) // 2)
-        pressure = jnp.interp(finer.nodes, previous, jnp.pad(unknowns[:-1], 1))
-        unknowns = _damped_newton(lambda y: _residual(y, finer), jnp.append(pressure[1:-1], unknowns[-1]), 12)
+        unknowns = _damped_newton(lambda y: _residual(y, finer), _interpolate(unknowns, count), 12)
 
     problem = _problem(nodes, half_width, hertz_pressure, speed_parameter, *laws)
     # Final Newton on the fine grid inside lax.custom_root: its derivative is the implicit one,
@@ -212,5 +241,6 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     pressure = jnp.pad(solution[:-1], 1)
     film = _film(pressure, solution[-1], problem) * half_width**2 / radius
     centre = jnp.argmin(jnp.abs(problem.nodes))
+    # a film below zero solves the discrete equations but not the physics: the grid is too coarse
     return LineFilm(problem.nodes * half_width, pressure * hertz_pressure, film, film[centre], jnp.min(film),
-                    residual < tolerance, residual)
+                    (residual < tolerance) & (jnp.min(film) > 0), residual)
