@@ -19,23 +19,19 @@ import scipy.linalg
 
 
 def love_rectangle(x, y, a, b):
-    """∫∫ dx'dy'/r over |x'| ≤ a, |y'| ≤ b seen from (x, y) (Love 1929), NumPy."""
+    """∫∫ dx'dy'/r over |x'| ≤ a, |y'| ≤ b seen from (x, y) (Love 1929): the closed form of
+    `diffbearing.influence.love_rectangle`, in NumPy so that the baseline runs without JAX."""
     def primitive(u, v):
         return u * np.arcsinh(v / np.abs(u)) + v * np.arcsinh(u / np.abs(v))
 
     return primitive(x + a, y + b) - primitive(x + a, y - b) - primitive(x - a, y + b) + primitive(x - a, y - b)
 
 
-def dense_matrix(ix, iy, cell_x, cell_y, modulus, out):
-    """C[i, j] [m/Pa] for the cells (ix, iy) (integer grid indices), built in row blocks into `out`."""
-    n = len(ix)
-    matrix = out
-    for start in range(0, n, 2048):
-        rows = slice(start, min(start + 2048, n))
-        dx = (ix[rows, None] - ix[None, :]) * cell_x
-        dy = (iy[rows, None] - iy[None, :]) * cell_y
-        matrix[rows] = 2.0 / (np.pi * modulus) * love_rectangle(dx, dy, 0.5 * cell_x, 0.5 * cell_y)
-    return matrix
+def influence_block(rows, columns, ix, iy, cell_x, cell_y, modulus):
+    """C[i, j] [m/Pa] between the cells `rows` and `columns` (flat indices into ix, iy)."""
+    dx = (ix[rows, None] - ix[None, columns]) * cell_x
+    dy = (iy[rows, None] - iy[None, columns]) * cell_y
+    return 2.0 / (np.pi * modulus) * love_rectangle(dx, dy, 0.5 * cell_x, 0.5 * cell_y)
 
 
 def solve_dense_active_set(gap, load, cell_x, cell_y, modulus, initial_contact, max_rounds=50):
@@ -53,7 +49,9 @@ def solve_dense_active_set(gap, load, cell_x, cell_y, modulus, initial_contact, 
         cells = np.flatnonzero(active)
         n = len(cells)
         system = np.empty((n + 1, n + 1))
-        dense_matrix(ix[cells], iy[cells], cell_x, cell_y, modulus, out=system[:n, :n])
+        for start in range(0, n, 2048):  # built in row blocks, in place
+            rows = cells[start:start + 2048]
+            system[start:start + len(rows), :n] = influence_block(rows, cells, ix, iy, cell_x, cell_y, modulus)
         system[:n, n] = -1.0
         system[n, :n] = area
         system[n, n] = 0.0
@@ -82,8 +80,6 @@ def _free_gap(pressure, flat_gap, approach, ix, iy, outside, cells, cell_x, cell
     gaps = np.empty(len(outside))
     for start in range(0, len(outside), 2048):
         rows = outside[start:start + 2048]
-        dx = (ix[rows, None] - ix[None, cells]) * cell_x
-        dy = (iy[rows, None] - iy[None, cells]) * cell_y
-        influence = 2.0 / (np.pi * modulus) * love_rectangle(dx, dy, 0.5 * cell_x, 0.5 * cell_y)
+        influence = influence_block(rows, cells, ix, iy, cell_x, cell_y, modulus)
         gaps[start:start + 2048] = flat_gap[rows] + influence @ pressure[cells] - approach
     return gaps

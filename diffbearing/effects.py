@@ -23,8 +23,8 @@ import jax.numpy as jnp
 from . import ball_equilibrium, film_formulas, hertz, life
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
+from .line_ehl import check_nodes, line_film
 from .roller_contact import roller_contact
-from .line_ehl import COARSE_NODES, line_film
 from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, film_length, roller_modulus
 
 BALL_TYPES = ("deep_groove_ball", "angular_contact_ball")
@@ -323,14 +323,13 @@ def _film_hamrock_dowson(inputs: SceneInputs, settings: dict, results: dict) -> 
     diameter, pitch = bearing.ball_diameter, bearing.pitch_diameter
     orbital = results["balls.orbital_speed"]
     out = {}
-    for side, curvature, ring_speed, sign, ratio in (
-            ("inner", inner_curvature, operating.inner_speed, -1.0, bearing.inner_groove_ratio),
-            ("outer", outer_curvature, operating.outer_speed, 1.0, bearing.outer_groove_ratio)):
+    for side, curvature, ring_speed, sign in (("inner", inner_curvature, operating.inner_speed, -1.0),
+                                              ("outer", outer_curvature, operating.outer_speed, 1.0)):
         load, angle = results[f"balls.{side}.load"], results[f"balls.{side}.contact_angle"]
-        projected = diameter * jnp.cos(angle)
-        # rolling-direction radius D(1 ∓ γ)/2 and entrainment speed ½|ω_ring − ω_m|(d_m ∓ D cos α)
-        radius = 0.5 * diameter * (1.0 + sign * projected / pitch)
-        speed = 0.5 * jnp.abs(ring_speed - orbital) * (pitch + sign * projected)
+        # rolling-direction radius D(1 ∓ γ)/2 and entrainment speed ½|ω_ring − ω_m| d_m (1 ∓ γ)
+        spread = 1.0 + sign * diameter_ratio(bearing, angle)
+        radius = 0.5 * diameter * spread
+        speed = 0.5 * jnp.abs(ring_speed - orbital) * pitch * spread
         ellipticity = hertz.ellipticity(curvature(bearing, angle)[1])
         loaded = load > 0
         central, minimum = film_formulas.hamrock_dowson_point(
@@ -457,8 +456,8 @@ def film_settings(settings: dict, inputs: SceneInputs) -> int:
         raise ValueError("effects.film needs an entrainment speed: give operating.inner_speed (or outer_speed) "
                          "and bearing.pitch_diameter (cylindrical roller)")
     nodes = settings["fidelity"].get("grid", [DEFAULT_LINE_NODES])[0]
-    if settings["effects"].get("film") == "line" and (nodes < COARSE_NODES or (nodes - 1) & (nodes - 2)):
-        raise ValueError(f"fidelity.grid[0]: the line EHL level needs 2^k + 1 ≥ {COARSE_NODES} nodes, got {nodes}")
+    if settings["effects"].get("film") == "line":
+        check_nodes(nodes)
     return nodes
 
 

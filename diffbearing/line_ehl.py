@@ -28,6 +28,7 @@ import jax
 import jax.numpy as jnp
 
 from .film_formulas import pan_hamrock_line
+from .hertz import line_contact
 from .numerics import require_float64, safe_sqrt
 
 ROELANDS_PRESSURE = 1.96e8  # p_R [Pa]
@@ -163,6 +164,13 @@ def _interpolate(unknowns, count):
     return jnp.append(pressure[1:-1], unknowns[-1])
 
 
+def check_nodes(nodes: int) -> int:
+    """ValueError unless the grid has 2^k + 1 ≥ COARSE_NODES nodes (nested iteration halves it)."""
+    if nodes < COARSE_NODES or (nodes - 1) & (nodes - 2):
+        raise ValueError(f"fidelity.grid[0]: the line EHL solver needs 2^k + 1 ≥ {COARSE_NODES} nodes, got {nodes}")
+    return nodes
+
+
 def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, effective_modulus, nodes=513,
               viscosity_law="roelands", density_law="dowson_higginson", tolerance=1e-10) -> LineFilm:
     """Isothermal Newtonian EHL line contact by Newton on the discretized Reynolds equation.
@@ -183,10 +191,9 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     derivative is exact.
     """
     require_float64()
-    if nodes < COARSE_NODES or (nodes - 1) & (nodes - 2):
-        raise ValueError(f"fidelity.grid: the line EHL solver needs 2^k + 1 ≥ {COARSE_NODES} nodes, got {nodes}")
-    half_width = jnp.sqrt(8.0 * load_per_length * radius / (jnp.pi * effective_modulus))
-    hertz_pressure = effective_modulus * half_width / (4.0 * radius)
+    check_nodes(nodes)
+    hertz_contact = line_contact(load_per_length, radius, effective_modulus)
+    half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure  # p_h = E'b/(4R)
     speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
     laws = (viscosity, pressure_viscosity, viscosity_law, density_law)
     constants = jax.lax.stop_gradient((half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity))

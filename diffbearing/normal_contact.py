@@ -11,7 +11,8 @@ the contact set, mean-gap removal for the load constraint, re-entry of cells tha
 the gradient preconditioned by the inverse of the periodic influence operator (an FFT on the
 unpadded grid; the idea of Vollebregt's preconditioned BCCG, J. Optim. Theory Appl. 162, 2014),
 run in `jax.lax.while_loop` until the relative pressure change ΔA Σ|p − p_old| / W < tolerance.
-Preconditioning cuts the iterations about fourfold (32 instead of ≈130 at 64 × 512, tolerance 1e-11).
+With it, 8 × 32 to 128 × 1024 grids take 9 to 45 iterations at tolerance 1e-11
+(benchmarks/results/roller_contact.md).
 
 Derivative: on the converged active set A the problem is linear,
 
@@ -55,7 +56,7 @@ def periodic_inverse_spectrum(coefficients, shape):
 
     On the periodic grid the influence operator is diagonal in Fourier space, so 1/Ĉ is its
     exact inverse there; restricted to the contact set it is a good approximate inverse that
-    brings the conjugate-gradient iterations from ~N^0.4 to a few tens. Spectral values below
+    keeps the conjugate-gradient iterations at a few tens. Spectral values below
     1e-4 of the largest are floored to keep it positive definite.
     """
     nx, ny = shape
@@ -67,6 +68,17 @@ def periodic_inverse_spectrum(coefficients, shape):
 
 def _apply_inverse(inverse_spectrum, field):
     return jnp.fft.irfft2(inverse_spectrum * jnp.fft.rfft2(field), s=field.shape)
+
+
+class _PKState(eqx.Module):
+    pressure: jax.Array
+    direction: jax.Array
+    previous_norm: jax.Array
+    conjugate: jax.Array  # False after a step that let cells re-enter: restart steepest descent
+    iteration: jax.Array
+    change: jax.Array
+    deflection: jax.Array
+    deflection_exact: jax.Array
 
 
 def _polonsky_keer(gap, load, coefficients, cell_area, start, tolerance, max_iterations):
@@ -115,17 +127,6 @@ def _polonsky_keer(gap, load, coefficients, cell_area, start, tolerance, max_ite
     active = state.pressure > 0
     approach = _masked_mean(deflection(spectrum, state.pressure) + gap, active)
     return state.pressure, approach, state.iteration, state.change
-
-
-class _PKState(eqx.Module):
-    pressure: jax.Array
-    direction: jax.Array
-    previous_norm: jax.Array
-    conjugate: jax.Array  # False after a step that let cells re-enter: restart steepest descent
-    iteration: jax.Array
-    change: jax.Array
-    deflection: jax.Array
-    deflection_exact: jax.Array
 
 
 @functools.partial(jax.custom_jvp, nondiff_argnums=(5, 6))

@@ -21,9 +21,10 @@ import jax
 import jax.numpy as jnp
 import optimistix as optx
 
+from .hertz import LineContact, line_contact
 from .influence import influence_coefficients
 from .normal_contact import solve_normal_contact
-from .numerics import positive_power, require_float64, safe_sqrt
+from .numerics import positive_power, require_float64
 from .roller_geometry import (RollerBearing, RollerLoading, axial_gap, cell_centres, equivalent_radius,
                               initial_gap, roller_modulus)
 
@@ -80,15 +81,24 @@ def slice_loads(bearing: RollerBearing, loading: RollerLoading, y):
     return _lamina_load(approach, gap, bearing.length, modulus), approach, solution.result == optx.RESULTS.successful
 
 
+class SliceSolution(eqx.Module):
+    """Hertz slices: lamina loads w [N/m], each slice's Hertz line contact (`hertz.LineContact`),
+    the approach δ [m], and whether its root find succeeded."""
+
+    loads: jax.Array
+    line: LineContact
+    approach: jax.Array
+    converged: jax.Array
+
+
 def contact_grid(bearing: RollerBearing, loading: RollerLoading, nx: int, ny: int):
-    """Cell centres x [m] (rolling direction) and y [m] (along the roller), and the slice solution
-    (lamina loads [N/m], approach [m], success) the x extent is sized from."""
+    """Cell centres x [m] (rolling direction) and y [m] (along the roller), and the Hertz-slice
+    solution (`SliceSolution`) the x extent is sized from."""
     y, _ = cell_centres(0.5 * bearing.length, ny)
     loads, approach, ok = slice_loads(bearing, loading, y)
-    radius = equivalent_radius(bearing, loading, y)
-    half_width = safe_sqrt(8.0 * loads * radius / (jnp.pi * roller_modulus(bearing)))
-    x, _ = cell_centres(GRID_EXTENT_FACTOR * jnp.max(half_width), nx)
-    return x, y, (loads, approach, ok)
+    line = line_contact(loads, equivalent_radius(bearing, loading, y), roller_modulus(bearing))
+    x, _ = cell_centres(GRID_EXTENT_FACTOR * jnp.max(line.half_width), nx)
+    return x, y, SliceSolution(loads, line, approach, ok)
 
 
 def _loaded_extent(pressure, x, y):
@@ -108,22 +118,19 @@ def roller_contact(bearing: RollerBearing, loading: RollerLoading, grid=(32, 256
     nx, ny = grid
     if nx < 4 or ny < 4:
         raise ValueError(f"fidelity.grid must be at least [4, 4] cells, got {list(grid)}")
-    x, y, (loads, approach, slices_ok) = contact_grid(bearing, loading, nx, ny)
-    modulus = roller_modulus(bearing)
-    radius = equivalent_radius(bearing, loading, y)
+    x, y, slices = contact_grid(bearing, loading, nx, ny)
     cell_x, cell_y = x[1] - x[0], y[1] - y[0]
-    peak = positive_power(loads * modulus / (2.0 * jnp.pi * radius), 0.5)
-    half_width = safe_sqrt(8.0 * loads * radius / (jnp.pi * modulus))
-    safe_width = jnp.where(half_width > 0, half_width, 1.0)
-    slice_pressure = peak[None, :] * positive_power(1.0 - (x[:, None] / safe_width[None, :]) ** 2, 0.5)
+    line = slices.line
+    safe_width = jnp.where(line.half_width > 0, line.half_width, 1.0)
+    slice_pressure = line.max_pressure[None, :] * positive_power(1.0 - (x[:, None] / safe_width[None, :]) ** 2, 0.5)
     if method == "slices":
-        pressure = slice_pressure
-        length, _ = _loaded_extent(pressure, x, y)
-        return RollerContact(pressure, x, y, approach, jnp.max(peak), jnp.sum(loads) * cell_y, length,
-                             jnp.max(half_width), slices_ok, jnp.asarray(0))
+        length, _ = _loaded_extent(slice_pressure, x, y)
+        return RollerContact(slice_pressure, x, y, slices.approach, jnp.max(line.max_pressure),
+                             jnp.sum(slices.loads) * cell_y, length, jnp.max(line.half_width), slices.converged,
+                             jnp.asarray(0))
     if method != "influence":
         raise ValueError(f"effects.contact: expected \"slices\" or \"influence\", got {method!r}")
-    coefficients = influence_coefficients(nx, ny, cell_x, cell_y, modulus)
+    coefficients = influence_coefficients(nx, ny, cell_x, cell_y, roller_modulus(bearing))
     solution = solve_normal_contact(initial_gap(bearing, loading, x, y), loading.load, coefficients,
                                     cell_x * cell_y, slice_pressure, tolerance, max_iterations)
     pressure = solution.pressure

@@ -22,6 +22,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from .hertz import line_contact
 from .numerics import positive_power, safe_sqrt
 from .params import _as_float, _is_concrete, check_range
 from .schema import PROFILE_KINDS
@@ -114,7 +115,7 @@ def crown_drop(profile: RollerProfile, y, length, effective_modulus, radius):
     if profile.kind == "lundberg":
         return scale * jnp.log(1.0 / (1.0 - (y / half) ** 2))
     if profile.kind == "johns_gohar":
-        half_width = jnp.sqrt(8.0 * profile.design_load / length * radius / (jnp.pi * effective_modulus))
+        half_width = line_contact(profile.design_load / length, radius, effective_modulus).half_width
         reach = 1.0 - JOHNS_GOHAR_END_FACTOR * half_width / half
         return scale * jnp.log(1.0 / (1.0 - reach * (y / half) ** 2))
     if profile.kind == "fujiwara_kawase":

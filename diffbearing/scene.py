@@ -183,9 +183,9 @@ def _raceway_curvature(v: dict) -> float:
 def _roller_entrainment_speed(v: dict):
     """Mean entrainment speed u [m/s] of a cylindrical roller in pure rolling:
     u = (d_m/4)(1 − γ²)|ω_i − ω_o|, γ = D/d_m (Harris & Kotzalas vol. 1, ch. 8); 0 without speeds."""
-    relative = v.get("operating.inner_speed", 0.0) - v.get("operating.outer_speed", 0.0)
     if "bearing.pitch_diameter" not in v or v["bearing.type"] != "cylindrical_roller":
         return 0.0
+    relative = v.get("operating.inner_speed", 0.0) - v.get("operating.outer_speed", 0.0)
     ratio = v["bearing.roller_diameter"] / v["bearing.pitch_diameter"]
     return 0.25 * v["bearing.pitch_diameter"] * (1.0 - ratio**2) * abs(relative)
 
