@@ -181,3 +181,37 @@ def test_seed003_flooded_film_through_the_cli(capsys, tmp_path, shared_scenes, l
     assert film["entrainment_speed"] == pytest.approx(seed003_entrainment_speed(), rel=1e-12)
     if level == "line":
         assert film["converged"] is True and len(film["pressure"]) == 257
+
+
+def test_ball_film_derivatives_match_central_differences(shared_scenes):
+    """The per-ball films of the scene model (through the implicit bearing equilibrium) with
+    respect to inner-ring speed and viscosity, forward and reverse, against central differences;
+    derivatives stay finite at the unloaded balls, whose film is NaN (null) by design."""
+    import equinox as eqx
+
+    from diffbearing.scene import build_model, load_scene
+
+    model = build_model(load_scene(str(shared_scenes / "seed002_6411E.toml"), [
+        'operating.force=["8 kN", "0 N", "0 N"]', 'operating.inner_speed="3000 rpm"', "effects.life=false",
+        'effects.film="hamrock_dowson"', 'lubricant.preset="iso_vg_68"']))
+    run = model.function()
+    loaded = np.asarray(run(model.inputs)["balls.inner.load"]) > 0
+    assert loaded.any() and not loaded.all()
+
+    def films(x):  # (inner speed [1000 rad/s], viscosity [Pa·s]) → loaded balls' films [µm]
+        inputs = eqx.tree_at(lambda i: (i.operating.inner_speed, i.lubricant.viscosity), model.inputs,
+                             (x[0] * 1e3, x[1]))
+        out = run(inputs)
+        return jnp.concatenate([out[f"film.{side}.{kind}"][loaded] for side in ("inner", "outer")
+                                for kind in ("central", "minimum")]) * 1e6
+
+    point = jnp.array([float(model.inputs.operating.inner_speed) / 1e3, float(model.inputs.lubricant.viscosity)])
+    function = jax.jit(films)
+    for direction in jnp.eye(2):
+        assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-5)
+
+    def all_films(x):
+        inputs = eqx.tree_at(lambda i: i.operating.inner_speed, model.inputs, x)
+        return jnp.nansum(run(inputs)["film.inner.minimum"])
+
+    assert np.isfinite(float(jax.jit(jax.grad(all_films))(model.inputs.operating.inner_speed)))
