@@ -32,13 +32,14 @@ from .hertz import line_contact
 from .numerics import require_float64, safe_sqrt
 
 ROELANDS_PRESSURE = 1.96e8  # p_R [Pa]
-INLET, OUTLET = -4.5, 1.5  # domain in Hertz half-widths
+INLET, OUTLET = -4.5, 1.5  # default domain in Hertz half-widths (seed 003's)
 
 
 class LineFilm(eqx.Module):
     """Solution [SI]: x [m] nodes, pressure [Pa], film h [m], central film at x = 0 [m], minimum
     film [m], whether it converged (largest residual below the tolerance and a positive film;
-    at high M a coarse grid can give a discrete solution with h < 0), that residual [-]."""
+    at high M a coarse grid can give a discrete solution with h < 0), that residual [-], the
+    inlet meniscus x_m [m] where the pressure starts (the domain inlet when flooded)."""
 
     x: jax.Array
     pressure: jax.Array
@@ -47,6 +48,7 @@ class LineFilm(eqx.Module):
     minimum: jax.Array
     converged: jax.Array
     residual: jax.Array
+    meniscus: jax.Array
 
 
 def viscosity_ratio(pressure, viscosity, pressure_viscosity, law="roelands"):
@@ -65,15 +67,15 @@ def density_ratio(pressure, law="dowson_higginson"):
     return 1.0 + 0.6e-9 * pressure / (1.0 + 1.7e-9 * pressure)
 
 
-def log_kernel(nodes):
-    """K_ij = ∫ ln|X_i − X'| dX' over the cell of node j (width Δ), closed form [-]."""
-    spacing = nodes[1] - nodes[0]
-    offset = nodes[:, None] - nodes[None, :]
+def log_kernel(count: int):
+    """K_ij = ∫ ln|i − j − s| ds over |s| ≤ ½ [-]: the log integral over the cell of node j seen from
+    node i on a grid of unit spacing, closed form. On spacing Δ the integral is ΔK_ij + Δ ln Δ."""
+    offset = jnp.arange(count)[:, None] - jnp.arange(count)[None, :]
 
     def primitive(s):
         return s * jnp.log(jnp.abs(s)) - s
 
-    return primitive(offset + 0.5 * spacing) - primitive(offset - 0.5 * spacing)
+    return primitive(offset + 0.5) - primitive(offset - 0.5)
 
 
 class _Problem(eqx.Module):
@@ -88,7 +90,9 @@ class _Problem(eqx.Module):
 
 
 def _film(pressure, offset, problem):
-    return offset + 0.5 * problem.nodes**2 - problem.kernel @ pressure / jnp.pi
+    spacing = problem.nodes[1] - problem.nodes[0]
+    elastic = spacing * (problem.kernel @ pressure + jnp.log(spacing) * jnp.sum(pressure))
+    return offset + 0.5 * problem.nodes**2 - elastic / jnp.pi
 
 
 def _residual(unknowns, problem: _Problem):
@@ -139,10 +143,10 @@ def _damped_newton(function, unknowns, steps: int):
     return jax.lax.scan(step, unknowns, None, length=steps)[0]
 
 
-def _problem(nodes, half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity, viscosity_law,
+def _problem(nodes, inlet, half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity, viscosity_law,
              density_law):
-    grid = jnp.linspace(INLET, OUTLET, nodes)
-    return _Problem(grid, log_kernel(grid), speed_parameter, hertz_pressure, viscosity, pressure_viscosity,
+    grid = jnp.linspace(inlet, OUTLET, nodes)
+    return _Problem(grid, log_kernel(nodes), speed_parameter, hertz_pressure, viscosity, pressure_viscosity,
                     viscosity_law, density_law)
 
 
@@ -155,12 +159,16 @@ COARSE_NODES = 129
 START_LOAD_PARAMETER = 10.0
 CONTINUATION_STAGES = 8
 FINAL_STEPS = 20
+# Starvation: the meniscus is searched for between the inlet and MENISCUS_LIMIT (Hertz
+# half-widths) in MENISCUS_STEPS Illinois steps on the coarse grid.
+MENISCUS_LIMIT = -0.5
+MENISCUS_STEPS = 14
 
 
-def _interpolate(unknowns, count):
-    """Unknowns (interior pressure, H₀) of a grid interpolated onto `count` nodes."""
-    previous = jnp.linspace(INLET, OUTLET, len(unknowns) + 1)
-    pressure = jnp.interp(jnp.linspace(INLET, OUTLET, count), previous, jnp.pad(unknowns[:-1], 1))
+def _interpolate(unknowns, count, inlet):
+    """Unknowns (interior pressure, H₀) of a grid from `inlet` interpolated onto `count` nodes."""
+    previous = jnp.linspace(inlet, OUTLET, len(unknowns) + 1)
+    pressure = jnp.interp(jnp.linspace(inlet, OUTLET, count), previous, jnp.pad(unknowns[:-1], 1))
     return jnp.append(pressure[1:-1], unknowns[-1])
 
 
@@ -171,9 +179,27 @@ def check_nodes(nodes: int) -> int:
     return nodes
 
 
+def _discrete_flux(unknowns, problem: _Problem):
+    """Mass flux ρ̄H − ε dP/dX [-] through the face after the pressure peak (constant over the
+    pressurized nodes of the discrete equations, whose wedge term is in flux form there)."""
+    pressure = jnp.pad(unknowns[:-1], 1)
+    spacing = problem.nodes[1] - problem.nodes[0]
+    dimensional = pressure * problem.hertz_pressure
+    density = density_ratio(dimensional, problem.density_law)
+    film = _film(pressure, unknowns[-1], problem)
+    flow = density * film**3 / (viscosity_ratio(dimensional, problem.viscosity, problem.pressure_viscosity,
+                                                problem.viscosity_law) * problem.speed_parameter)
+    peak = jnp.argmax(pressure)
+    mass = density * film
+    face = 0.5 * (flow[peak + 1] + flow[peak])
+    return 1.5 * mass[peak] - 0.5 * mass[peak - 1] - face * (pressure[peak + 1] - pressure[peak]) / spacing
+
+
 def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, effective_modulus, nodes=513,
-              viscosity_law="roelands", density_law="dowson_higginson", tolerance=1e-10) -> LineFilm:
-    """Isothermal Newtonian EHL line contact by Newton on the discretized Reynolds equation.
+              viscosity_law="roelands", density_law="dowson_higginson", tolerance=1e-10,
+              oil_layer=None, inlet=INLET) -> LineFilm:
+    """Isothermal Newtonian EHL line contact by Newton on the discretized Reynolds equation,
+    fully flooded or starved by an inlet oil layer.
 
     Args:
         load_per_length: w [N/m] > 0.
@@ -182,6 +208,11 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         viscosity: η₀ [Pa·s]; pressure_viscosity: α [1/Pa]; effective_modulus: E' [Pa].
         nodes: grid size N = 2^k + 1 ≥ 129 (≤ 1025 keeps the dense Jacobian cheap).
         viscosity_law: "roelands" | "barus"; density_law: "dowson_higginson" | "incompressible".
+        oil_layer: inlet oil supply layer h_oil [m] (both surfaces together, at ambient density),
+            or None for fully flooded.
+        inlet: where the domain (and a flooded inlet) starts [Hertz half-widths] < −1; the
+            outlet is at 1.5. Seed 003's −4.5 is the default; at Moes M ≈ 2 it is short enough
+            to starve the film by about 6 % (`benchmarks/line_ehl.py` shows the inlet study).
 
     Start (physics.md §7: a plain Newton from a Hertz start diverges at low and high loads):
     damped Newton from a Hertz pressure at M = 10, continued in 8 geometric steps of the Moes
@@ -189,9 +220,19 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     M < 10 and on 129 nodes above; nested iteration, each finer grid started from the
     interpolated coarser solution; last, Newton inside `lax.custom_root`, whose implicit
     derivative is exact.
+
+    Starvation (physics.md §7, "the inlet meniscus position as the unknown"): the pressure
+    builds up from a meniscus X_m, where the oil layer fills the gap; by mass conservation in
+    steady pure rolling the flux through the contact ρ̄h − (ρh³/12ηu) dp/dx equals the supplied
+    u·h_oil. X_m is found on the 129-node grid by the Illinois method in [`inlet`, MENISCUS_LIMIT];
+    on the fine grid it joins the unknowns with the flux equation, so the derivative with
+    respect to the oil layer is implicit too. Where the flooded contact passes less than the
+    supply (the excess flows back), the film is the flooded one: X_m = `inlet`.
     """
     require_float64()
     check_nodes(nodes)
+    if not -50.0 <= inlet <= -2.0:
+        raise ValueError(f"inlet: the line EHL domain starts between -50 and -2 Hertz half-widths, got {inlet}")
     hertz_contact = line_contact(load_per_length, radius, effective_modulus)
     half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure  # p_h = E'b/(4R)
     speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
@@ -213,41 +254,84 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         return jax.lax.stop_gradient(jnp.append(hertz[1:-1], central_guess * radius / half_width**2 - rigid))
 
     def continuation(problem, unknowns):  # M from 10 to the case's in geometric steps
-        for stage in range(1, CONTINUATION_STAGES + 1):
+        def stage(index, current):
             stage_problem = at_load_parameter(
-                problem, START_LOAD_PARAMETER * (load_parameter / START_LOAD_PARAMETER) ** (stage / CONTINUATION_STAGES))
-            unknowns = _damped_newton(lambda y: _residual(y, stage_problem), unknowns, 20)
-        return unknowns
+                problem, START_LOAD_PARAMETER * (load_parameter / START_LOAD_PARAMETER) ** (index / CONTINUATION_STAGES))
+            return _damped_newton(lambda y: _residual(y, stage_problem), current, 20)
 
-    coarse = _problem(COARSE_NODES, *constants, viscosity_law, density_law)
+        return jax.lax.fori_loop(1, CONTINUATION_STAGES + 1, stage, unknowns)
 
-    def light_load():  # M < 10: the continuation on 65 nodes, then onto the coarse grid
-        start = _problem(START_NODES, *constants, viscosity_law, density_law)
-        unknowns = _interpolate(continuation(start, hertz_start(start)), COARSE_NODES)
-        return _damped_newton(lambda y: _residual(y, coarse), unknowns, 12)
+    def coarse_solution(inlet):  # the flooded solution from `inlet` on the coarse grid
+        coarse = _problem(COARSE_NODES, inlet, *constants, viscosity_law, density_law)
 
-    def heavy_load():  # M ≥ 10: the continuation on the coarse grid, where the contact is resolved
-        return continuation(coarse, hertz_start(coarse))
+        def light_load():  # M < 10: the continuation on 65 nodes, then onto the coarse grid
+            start = _problem(START_NODES, inlet, *constants, viscosity_law, density_law)
+            unknowns = _interpolate(continuation(start, hertz_start(start)), COARSE_NODES, inlet)
+            return _damped_newton(lambda y: _residual(y, coarse), unknowns, 12)
 
-    unknowns = jax.lax.cond(load_parameter < START_LOAD_PARAMETER, light_load, heavy_load)
+        def heavy_load():  # M ≥ 10: the continuation on the coarse grid, where the contact is resolved
+            return continuation(coarse, hertz_start(coarse))
+
+        return jax.lax.cond(load_parameter < START_LOAD_PARAMETER, light_load, heavy_load), coarse
+
+    unknowns, coarse = coarse_solution(inlet)
+    if oil_layer is None:
+        supply, starved = 0.0, False
+    else:
+        supply = oil_layer * radius / half_width**2  # h_oil in units of b²/R
+        starved = jax.lax.stop_gradient(supply) < _discrete_flux(unknowns, coarse)
+
+        def meniscus_search(flooded):  # Illinois (regula falsi) on flux(X_m) − supply
+            def excess(position):
+                solution, problem = coarse_solution(position)
+                excess = _discrete_flux(solution, problem) - jax.lax.stop_gradient(supply)
+                return jnp.where(jnp.isfinite(excess), excess, -supply)  # a failed solve: no flux
+
+            def step(_, bracket):
+                low, high, excess_low, excess_high, side = bracket
+                middle = (low * excess_high - high * excess_low) / (excess_high - excess_low)
+                value = excess(middle)
+                keep_high = value > 0  # the root lies above the new point
+                return (jnp.where(keep_high, middle, low), jnp.where(keep_high, high, middle),
+                        jnp.where(keep_high, value, jnp.where(side < 0, 0.5 * excess_low, excess_low)),
+                        jnp.where(keep_high, jnp.where(side > 0, 0.5 * excess_high, excess_high), value),
+                        jnp.where(keep_high, 1.0, -1.0))
+
+            flooded_excess = _discrete_flux(flooded, coarse) - jax.lax.stop_gradient(supply)
+            low, high, excess_low, excess_high, _ = jax.lax.fori_loop(
+                0, MENISCUS_STEPS, step,
+                (jnp.asarray(inlet), jnp.asarray(MENISCUS_LIMIT), flooded_excess, excess(MENISCUS_LIMIT), 0.0))
+            root = (low * excess_high - high * excess_low) / (excess_high - excess_low)
+            return coarse_solution(root)[0], root
+
+        unknowns, meniscus = jax.lax.cond(starved, meniscus_search, lambda flooded: (flooded, jnp.asarray(inlet)),
+                                          unknowns)
+        unknowns, meniscus = jax.lax.stop_gradient((unknowns, meniscus))
+    if oil_layer is None:
+        meniscus = inlet
     # nested iteration up to the requested grid
     count = COARSE_NODES
     while count < nodes:
         count = 2 * count - 1
-        finer = _problem(count, *constants, viscosity_law, density_law)
-        unknowns = _damped_newton(lambda y: _residual(y, finer), _interpolate(unknowns, count), 12)
+        finer = _problem(count, meniscus, *constants, viscosity_law, density_law)
+        unknowns = _damped_newton(lambda y: _residual(y, finer), _interpolate(unknowns, count, meniscus), 12)
 
-    problem = _problem(nodes, half_width, hertz_pressure, speed_parameter, *laws)
+    def equations(state):  # discrete Reynolds and load balance; the flux balance fixes X_m
+        problem = _problem(nodes, state[-1], half_width, hertz_pressure, speed_parameter, *laws)
+        meniscus = jnp.where(starved, _discrete_flux(state[:-1], problem) - supply, state[-1] - inlet)
+        return jnp.append(_residual(state[:-1], problem), meniscus)
+
     # Final Newton on the fine grid inside lax.custom_root: its derivative is the implicit one,
     # −J⁻¹ ∂F/∂θ with the converged Jacobian (forward and reverse mode).
     solution = jax.lax.custom_root(
-        lambda y: _residual(y, problem), jax.lax.stop_gradient(unknowns),
+        equations, jax.lax.stop_gradient(jnp.append(unknowns, meniscus)),
         solve=lambda function, guess: _damped_newton(function, guess, FINAL_STEPS),
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
-    residual = jnp.max(jnp.abs(_residual(jax.lax.stop_gradient(solution), problem)))
-    pressure = jnp.pad(solution[:-1], 1)
-    film = _film(pressure, solution[-1], problem) * half_width**2 / radius
+    residual = jnp.max(jnp.abs(equations(jax.lax.stop_gradient(solution))))
+    problem = _problem(nodes, solution[-1], half_width, hertz_pressure, speed_parameter, *laws)
+    pressure = jnp.pad(solution[:-2], 1)
+    film = _film(pressure, solution[-2], problem) * half_width**2 / radius
     centre = jnp.argmin(jnp.abs(problem.nodes))
     # a film below zero solves the discrete equations but not the physics: the grid is too coarse
     return LineFilm(problem.nodes * half_width, pressure * hertz_pressure, film, film[centre], jnp.min(film),
-                    (residual < tolerance) & (jnp.min(film) > 0), residual)
+                    (residual < tolerance) & (jnp.min(film) > 0), residual, solution[-1] * half_width)

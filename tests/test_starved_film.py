@@ -1,0 +1,108 @@
+"""Starved line-contact EHL from an inlet oil layer (issue 5) and the starvation and Moes formulas."""
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+from diffbearing.film_formulas import moes_line_central, starved_film
+from diffbearing.line_ehl import density_ratio, line_film
+
+from .helpers import assert_jvp_matches_central_difference
+from .test_film_formulas import SEED003_LINE, SEED003_LOAD_PER_LENGTH, seed003_entrainment_speed
+
+NODES = 129  # one compiled starved solver serves every test of this module
+
+
+@pytest.fixture(scope="module")
+def starved():
+    """Seed 003's contact at 129 nodes as a function of (oil layer [µm], speed factor)."""
+    speed = seed003_entrainment_speed()
+
+    @jax.jit
+    def solve(oil_layer, speed_factor):
+        return line_film(SEED003_LOAD_PER_LENGTH, speed=speed * speed_factor, nodes=NODES,
+                         oil_layer=oil_layer * 1e-6, **SEED003_LINE)
+
+    return solve
+
+
+@pytest.fixture(scope="module")
+def flooded():
+    return jax.jit(lambda: line_film(SEED003_LOAD_PER_LENGTH, speed=seed003_entrainment_speed(), nodes=NODES,
+                                     **SEED003_LINE))()
+
+
+def test_supply_above_the_flooded_flux_leaves_the_film_flooded(starved, flooded):
+    """Mass conservation in steady pure rolling: the contact passes ρ̄h − (ρh³/12ηu)p' = h_oil.
+    A flooded contact passes q_ff; a layer 1 % above q_ff gives the flooded film exactly, one 1 %
+    below moves the meniscus inside the domain and thins the film."""
+    central_pressure = float(jnp.max(flooded.pressure))
+    flux = float(density_ratio(central_pressure)) * float(flooded.central)  # ≈ q_ff, within a few %
+    above = starved(1.1 * flux * 1e6, 1.0)
+    assert float(above.central) == float(flooded.central) and float(above.meniscus) == float(flooded.meniscus)
+    below = starved(0.8 * flux * 1e6, 1.0)
+    assert bool(below.converged) and float(below.meniscus) > float(flooded.meniscus)
+    assert float(below.central) < 0.9 * float(flooded.central)
+
+
+def test_starved_film_follows_the_supply_and_never_exceeds_it(starved, flooded):
+    """Seed 003's trends (physics.md §4): less oil → thinner film and a pressure build-up that
+    starts closer to the Hertz zone; more speed under starvation → the film approaches but never
+    exceeds the supply layer. Here h_oil = 0.8 µm, speeds ×1 and ×4."""
+    films = [starved(layer, 1.0) for layer in (1.2, 0.8, 0.4)]
+    assert all(bool(film.converged) for film in films)
+    centrals = [float(film.central) for film in films]
+    menisci = [float(film.meniscus) for film in films]
+    assert centrals[0] > centrals[1] > centrals[2] and menisci[0] < menisci[1] < menisci[2]
+    fast = starved(0.8, 4.0)
+    assert centrals[1] < float(fast.central) < 0.8e-6
+
+
+def test_severe_starvation_converges_with_finite_gradients(starved, flooded):
+    """Hard case: an oil layer a tenth of the flooded film. The film is about the layer over the
+    density ratio; values and gradients (oil layer, speed) are finite."""
+    layer = 0.1 * float(flooded.central) * 1e6
+    result = starved(layer, 1.0)
+    assert bool(result.converged) and np.all(np.isfinite(np.asarray(result.pressure)))
+    assert 0.5 * layer * 1e-6 < float(result.central) < layer * 1e-6
+    gradient = jax.jit(jax.grad(lambda x: starved(x[0], x[1]).minimum))(jnp.array([layer, 1.0]))
+    assert np.all(np.isfinite(np.asarray(gradient))) and float(gradient[0]) > 0
+
+
+def test_starved_film_derivatives_match_central_differences():
+    """Implicit derivative (the meniscus joins the unknowns with the flux equation) of central and
+    minimum film with respect to load, speed, viscosity and oil layer, forward and reverse."""
+    def films(x):  # (w [1e5 N/m], u [m/s], η0 [Pa·s], h_oil [µm]) → (h_c, h_min) [µm]
+        result = line_film(x[0] * 1e5, SEED003_LINE["radius"], x[1], x[2], 2.2e-8, 2.26e11, nodes=NODES,
+                           oil_layer=x[3] * 1e-6)
+        return jnp.stack([result.central, result.minimum]) * 1e6
+
+    point = jnp.array([0.80945, 2.63, 0.08, 0.8])
+    function = jax.jit(films)
+    for direction in jnp.eye(4):
+        assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-6, atol=1e-8)
+
+
+def test_starvation_formula_limits_are_exact():
+    """Chevalier's h/h_ff = r/(1 + r^γ)^{1/γ}: exactly h_ff/2^{1/γ} at r = 1, → r·h_ff for r ≪ 1,
+    → h_ff for r ≫ 1."""
+    flooded_film, density = 1.2e-6, 1.15
+    at_one = starved_film(flooded_film, density * flooded_film, density, sharpness=2.5)
+    assert float(at_one) == pytest.approx(flooded_film / 2 ** 0.4, rel=1e-14)
+    assert float(starved_film(flooded_film, 1e-12, density)) == pytest.approx(1e-12 / density, rel=1e-12)
+    assert float(starved_film(flooded_film, 1.0, density)) == pytest.approx(flooded_film, rel=1e-12)
+
+
+def test_moes_formula_depends_on_m_and_l_only():
+    """Moes' formula is H(M, L) with H = (h/R)(2U)^−½: scaling speed, viscosity, load, α and R so
+    that M and L stay fixed scales h by R(2U)^½ exactly; the rigid–isoviscous limit (M ≪ 1,
+    L → 0) tends to H = 3/M (Martin)."""
+    radius, speed, viscosity, alpha, modulus, load = SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, 8.1e4
+    film = moes_line_central(load, radius, speed, viscosity, alpha, modulus)
+    # U ×4 (speed ×4): keep M = W'(2U)^−½ with load ×2 and L = G(2U)^¼ with α/√2
+    scaled = moes_line_central(2 * load, radius, 4 * speed, viscosity, alpha / np.sqrt(2), modulus)
+    assert float(scaled) == pytest.approx(2 * float(film), rel=1e-13)
+    slow_root = np.sqrt(2 * viscosity * speed / (modulus * radius))
+    martin = moes_line_central(1e-4 * modulus * radius * slow_root, radius, speed, viscosity, 1e-16, modulus)
+    assert float(martin) / (radius * slow_root) == pytest.approx(3.0 / 1e-4, rel=1e-3)
