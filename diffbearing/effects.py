@@ -23,7 +23,7 @@ import jax.numpy as jnp
 from . import ball_equilibrium, film_formulas, hertz, life
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
-from .line_ehl import check_nodes, line_film
+from .line_ehl import check_nodes, density_ratio, line_film
 from .roller_contact import roller_contact
 from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, film_length, roller_modulus
 
@@ -66,6 +66,7 @@ class Block:
     outputs: tuple[Output, ...]
     compute: Callable[[SceneInputs, dict, dict], dict]
     uses: tuple[str, ...] = ()
+    only_with: tuple[str, tuple] | None = None  # (effect key, values): another effect it refines must be one of these
 
 
 REGISTRY: dict[str, Block] = {}
@@ -89,7 +90,8 @@ def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
     for block in REGISTRY.values():
         if bearing_type in block.bearing_types and block.enabled_by is not None:
             effect, value = block.enabled_by
-            if effect in effects and effects[effect] == value and type(effects[effect]) is type(value):
+            refines = block.only_with is None or effects.get(block.only_with[0]) in block.only_with[1]
+            if effect in effects and effects[effect] == value and type(effects[effect]) is type(value) and refines:
                 wanted.append(block)
                 provided.add(effect)
     missing = [name if value is True else f"{name} = {value!r}"
@@ -509,4 +511,78 @@ register(Block(
         Output("film.thickness", "m", "um", "film thickness h(x)", in_report=False),
     ),
     compute=_film_line,
+))
+
+
+# ---------------------------------------------------------------------------------------------
+# Starvation (effect starvation = true, with operating.oil_layer): the film of the same level
+# with the inlet supplied by an oil layer h_oil only, and Er = (h_c,ff − h_c)/h_c,ff against the
+# flooded film (seed 003's criterion: starved when Er > 1 %).
+
+# Chevalier's γ for a line contact: no side flow, so the film follows the supply until it meets
+# the flooded one; γ = 20 matches the 1-D numerical starved films (`benchmarks/line_ehl.py`).
+LINE_STARVATION_SHARPNESS = 20.0
+
+
+def starvation_settings(settings: dict, inputs: SceneInputs) -> None:
+    """ValueError for a starvation effect without an oil layer."""
+    if settings["effects"].get("starvation") is True and inputs.operating.oil_layer is None:
+        raise ValueError("effects.starvation needs operating.oil_layer (the inlet oil supply layer, e.g. \"0.8 um\")")
+
+
+def _starvation_formula(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    oil_layer = inputs.operating.oil_layer
+    case = _roller_film_case(inputs)
+    hertz_pressure = hertz.line_contact(case[0], case[1], case[5]).max_pressure
+    density = density_ratio(hertz_pressure, inputs.lubricant.density_law)
+    flooded_central, flooded_minimum = results["film.central"], results["film.minimum"]
+    central = film_formulas.starved_film(flooded_central, oil_layer, density, LINE_STARVATION_SHARPNESS)
+    minimum = flooded_minimum * central / flooded_central
+    return {"starvation.oil_layer": oil_layer, "starvation.central": central, "starvation.minimum": minimum,
+            "starvation.relative_error": (flooded_central - central) / flooded_central}
+
+
+def _starvation_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    oil_layer = inputs.operating.oil_layer
+    lubricant = inputs.lubricant
+    solved = line_film(*_roller_film_case(inputs), nodes=film_settings(settings, inputs), oil_layer=oil_layer,
+                       viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+    return {"starvation.oil_layer": oil_layer, "starvation.central": solved.central, "starvation.minimum": solved.minimum,
+            "starvation.relative_error": (results["film.central"] - solved.central) / results["film.central"],
+            "starvation.meniscus": solved.meniscus, "starvation.converged": solved.converged,
+            "starvation.x": solved.x, "starvation.pressure": solved.pressure, "starvation.thickness": solved.thickness}
+
+
+_STARVATION_COMMON = (
+    Output("starvation.oil_layer", "m", "um", "inlet oil supply layer h_oil"),
+    Output("starvation.central", "m", "um", "starved central film h_c"),
+    Output("starvation.minimum", "m", "um", "starved minimum film h_min"),
+    Output("starvation.relative_error", "", "percent", "Er = (h_c,ff − h_c)/h_c,ff (starved if > 1 %)"),
+)
+
+register(Block(
+    name="starvation_formula",
+    bearing_types=ROLLER_TYPES,
+    enabled_by=("starvation", True),
+    only_with=("film", ("formula",)),
+    requires=("film_formula",),
+    outputs=_STARVATION_COMMON,
+    compute=_starvation_formula,
+))
+
+register(Block(
+    name="starvation_line",
+    bearing_types=ROLLER_TYPES,
+    enabled_by=("starvation", True),
+    only_with=("film", ("line",)),
+    requires=("film_line",),
+    outputs=(
+        *_STARVATION_COMMON,
+        Output("starvation.meniscus", "m", "mm", "inlet meniscus x_m, where the pressure starts"),
+        Output("starvation.converged", "", "", "the starved line EHL Newton converged"),
+        Output("starvation.x", "m", "mm", "nodes along rolling (x), from the meniscus", in_report=False),
+        Output("starvation.pressure", "Pa", "GPa", "starved film pressure p(x)", in_report=False),
+        Output("starvation.thickness", "m", "um", "starved film thickness h(x)", in_report=False),
+    ),
+    compute=_starvation_line,
 ))

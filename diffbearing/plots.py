@@ -83,25 +83,32 @@ def plot_contact_pressure(result, figure):
 
 
 def plot_line_film(result, figure):
-    """Pressure and film thickness along the rolling direction of the line EHL solution."""
+    """Pressure and film thickness along the rolling direction of the line EHL solution, with the
+    starved solution beside the flooded one when the scene names starvation."""
     values = result.values
-    x = np.asarray(values["film.x"]) * 1e3
     pressure_axis, film_axis = figure.subplots(1, 2)
-    pressure_axis.plot(x, np.asarray(values["film.pressure"]) / 1e9)
+    cases = [("film", "fully flooded")]
+    if "starvation.x" in values:
+        layer = float(values["starvation.oil_layer"]) * 1e6
+        cases.append(("starvation", f"starved, h_oil = {layer:.3g} µm"))
+    for prefix, label in cases:
+        x = np.asarray(values[f"{prefix}.x"]) * 1e3
+        pressure_axis.plot(x, np.asarray(values[f"{prefix}.pressure"]) / 1e9, label=label)
+        film_axis.plot(x, np.asarray(values[f"{prefix}.thickness"]) * 1e6, label=label)
+    film_axis.axhline(float(values["film.central"]) * 1e6, color="grey", lw=0.8, ls="--", label="flooded central film")
     pressure_axis.set(xlabel="x, rolling direction [mm]", ylabel="pressure [GPa]", title="film pressure")
-    film_axis.plot(x, np.asarray(values["film.thickness"]) * 1e6)
-    film_axis.axhline(float(values["film.central"]) * 1e6, color="grey", lw=0.8, ls="--", label="central film")
     film_axis.set(xlabel="x, rolling direction [mm]", ylabel="film thickness [µm]", title="film thickness",
                   ylim=(0, 4 * float(values["film.central"]) * 1e6))
-    film_axis.legend()
     for axis in (pressure_axis, film_axis):
         axis.grid(alpha=0.3)
-    figure.suptitle(f"{result.model.scene.title}: line EHL, fully flooded")
+        axis.legend()
+    figure.suptitle(f"{result.model.scene.title}: line EHL")
 
 
 # Block name → plot; the last block of a run that has one draws the figure.
 PLOTS = {"raceway_contact": plot_hertz_load_curves, "roller_contact_slices": plot_contact_pressure,
-         "roller_contact_influence": plot_contact_pressure, "film_line": plot_line_film}
+         "roller_contact_influence": plot_contact_pressure, "film_line": plot_line_film,
+         "starvation_line": plot_line_film}
 
 
 def save_plot(result, path: str) -> None:

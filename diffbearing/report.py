@@ -33,7 +33,7 @@ def _format(value) -> str:
 
 
 def _unit_label(display: str) -> str:
-    return display.replace("**", "^").replace("um", "µm") if display else "-"
+    return display.replace("**", "^").replace("um", "µm").replace("percent", "%") if display else "-"
 
 
 def _roller_header(result) -> list[str]:
@@ -228,7 +228,7 @@ def format_report(result) -> str:
         per_ball = key.startswith("balls.") or (key.startswith("film.") and "balls.azimuth" in values)
         if key not in values or per_ball or not out.in_report or key in (
                 "displacement", "force", "stiffness", "converged", "residual", "contact.converged", "contact.iterations",
-                "film.converged"):
+                "film.converged", "starvation.converged"):
             continue
         parts = key.split(".")
         if len(parts) == 3 and parts[1] in ("inner", "outer"):
@@ -258,6 +258,9 @@ def format_report(result) -> str:
     if "film.converged" in values:
         state = "converged" if bool(values["film.converged"]) else "DID NOT CONVERGE (values are the last iterate)"
         lines.append(f"  line EHL (Newton, {len(values['film.x'])} nodes, fully flooded): {state}")
+    if "starvation.converged" in values:
+        state = "converged" if bool(values["starvation.converged"]) else "DID NOT CONVERGE (values are the last iterate)"
+        lines.append(f"  line EHL starved by the oil layer (meniscus by flux balance): {state}")
     if "force" in values and result.model.inputs.operating.axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
     if "stiffness" in values:

@@ -48,11 +48,14 @@ class RollerLoading(eqx.Module):
     tilt: jax.Array = eqx.field(converter=_as_float)  # ϑ [rad]
     raceway_curvature: jax.Array = eqx.field(converter=_as_float)  # 1/R_race at mid-length [1/m], convex > 0
     entrainment_speed: jax.Array = eqx.field(converter=_as_float, default=0.0)  # mean rolling speed u [m/s]
+    oil_layer: jax.Array | None = None  # inlet oil supply layer h_oil [m]; None: fully flooded
 
     def __check_init__(self):
         check_range("contact.load", self.load, low=0.0, unit=" N", why="a roller carries a compressive load")
         check_range("contact.tilt", self.tilt, low=-0.05, high=0.05, unit=" rad",
                     why="small-angle misalignment, |ϑ| < 0.05 rad ≈ 2.9°")
+        check_range("operating.oil_layer", self.oil_layer, low=1e-9, high=1e-3, unit=" m",
+                    why="a layer between 1 nm and 1 mm; omit it for a fully flooded inlet")
 
 
 def roller_bearing(*, kind="cylindrical_roller", length, diameter=None, small_diameter=None, large_diameter=None,

@@ -206,7 +206,8 @@ def roller_inputs_from_values(v: dict) -> effect_registry.SceneInputs:
     if "contact.load" not in v:
         raise ValueError("missing required key 'contact.load' (the roller load Q)")
     loading = RollerLoading(load=v["contact.load"], tilt=v.get("contact.tilt", 0.0),
-                            raceway_curvature=_raceway_curvature(v), entrainment_speed=_roller_entrainment_speed(v))
+                            raceway_curvature=_raceway_curvature(v), entrainment_speed=_roller_entrainment_speed(v),
+                            oil_layer=v.get("operating.oil_layer"))
     return effect_registry.SceneInputs(bearing=bearing, operating=loading, lubricant=_lubricant(v))
 
 
@@ -242,6 +243,7 @@ def build_model(scene: Scene) -> Model:
         effect_registry.contact_settings(settings)  # bad grid or tolerance fails here, before compiling
     if scene.bearing_type in effect_registry.ROLLER_TYPES and settings["effects"].get("film", False) is not False:
         effect_registry.film_settings(settings, inputs)
+        effect_registry.starvation_settings(settings, inputs)
     if settings["effects"].get("film", False) is not False and inputs.lubricant is None:
         raise ValueError("effects.film needs a [lubricant] table (lubricant.preset or lubricant.viscosity)")
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,

@@ -167,20 +167,41 @@ def test_line_ehl_hard_cases_converge_or_say_so(load_factor, speed, nodes, conve
 
 
 @pytest.mark.parametrize("level, expected, tolerance", [("formula", 1.2389e-6, 1e-3), ("line", 1.207e-6, 0.05)])
-def test_seed003_flooded_film_through_the_cli(capsys, tmp_path, shared_scenes, level, expected, tolerance):
+def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, shared_scenes, level, expected, tolerance):
     """`diffbearing run seed003 --set effects.film=...`: Pan–Hamrock (1.2389 µm, this formula's
-    value) and the numerical line contact against the paper's flooded 1.207 µm within 5 %; the
-    starvation the scene also names is listed as not computed."""
+    value) and the numerical line contact against the paper's flooded 1.207 µm within 5 %. The
+    scene's starvation (h_oil = 0.8 µm) gives a film below the supply over the density ratio
+    (mass conservation: ρ̄h_c ≈ h_oil, ρ̄ = 1.10–1.15 in the Hertz zone) and Er > 1 %."""
     path = tmp_path / "film.json"
     code = cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", f'effects.film="{level}"',
                      "--set", "fidelity.grid=[257, 129]", "--json", str(path)])
     out = capsys.readouterr().out
-    assert code == 0 and "central film h_c at x = 0" in out and "Not computed" in out and "starvation" in out
-    film = json.loads(path.read_text())["film"]
+    assert code == 0 and "central film h_c at x = 0" in out and "starved central film" in out
+    values = json.loads(path.read_text())
+    film, starvation = values["film"], values["starvation"]
     assert film["central"] == pytest.approx(expected, rel=tolerance)
     assert film["entrainment_speed"] == pytest.approx(seed003_entrainment_speed(), rel=1e-12)
+    assert starvation["oil_layer"] == pytest.approx(0.8e-6, rel=1e-12)
+    assert 0.8e-6 / 1.16 < starvation["central"] < 0.8e-6 / 1.10
+    assert starvation["relative_error"] == pytest.approx(1 - starvation["central"] / film["central"], rel=1e-12)
     if level == "line":
-        assert film["converged"] is True and len(film["pressure"]) == 257
+        assert film["converged"] is True and len(film["pressure"]) == 257 and starvation["converged"] is True
+        assert film["x"][0] < starvation["meniscus"] == starvation["x"][0] < 0
+
+
+def test_seed003_as_published_lists_the_2d_level_as_not_computed(capsys, shared_scenes):
+    """The public scene names film = "finite_line" (not built): it runs, and says what it left out."""
+    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml")]) == 0
+    assert "Not computed (effect not available yet): film = 'finite_line', starvation" in capsys.readouterr().out
+
+
+def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path, shared_scenes):
+    text = (shared_scenes / "seed003_starved_roller.toml").read_text()
+    scene = tmp_path / "no_oil_layer.toml"
+    scene.write_text("\n".join(line for line in text.splitlines() if not line.startswith("oil_layer")))
+    code = cli.main(["run", str(scene), "--set", 'effects.film="formula"'])
+    err = capsys.readouterr().err
+    assert code == 2 and "effects.starvation needs operating.oil_layer" in err
 
 
 def test_ball_film_derivatives_match_central_differences(shared_scenes):
