@@ -537,7 +537,7 @@ def _starvation_formula(inputs: SceneInputs, settings: dict, results: dict) -> d
     density = density_ratio(hertz_pressure, inputs.lubricant.density_law)
     flooded_central, flooded_minimum = results["film.central"], results["film.minimum"]
     central = film_formulas.starved_film(flooded_central, oil_layer, density, LINE_STARVATION_SHARPNESS)
-    minimum = flooded_minimum * central / flooded_central
+    minimum = flooded_minimum * central / flooded_central  # the flooded h_min/h_c ratio kept (an estimate)
     return {"starvation.oil_layer": oil_layer, "starvation.central": central, "starvation.minimum": minimum,
             "starvation.relative_error": (flooded_central - central) / flooded_central}
 

@@ -276,7 +276,7 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
 
     unknowns, coarse = coarse_solution(inlet)
     if oil_layer is None:
-        supply, starved = 0.0, False
+        supply, starved, meniscus = 0.0, False, inlet
     else:
         supply = oil_layer * radius / half_width**2  # h_oil in units of b²/R
         starved = jax.lax.stop_gradient(supply) < _discrete_flux(unknowns, coarse)
@@ -284,8 +284,8 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         def meniscus_search(flooded):  # Illinois (regula falsi) on flux(X_m) − supply
             def excess(position):
                 solution, problem = coarse_solution(position)
-                excess = _discrete_flux(solution, problem) - jax.lax.stop_gradient(supply)
-                return jnp.where(jnp.isfinite(excess), excess, -supply)  # a failed solve: no flux
+                surplus = _discrete_flux(solution, problem) - jax.lax.stop_gradient(supply)
+                return jnp.where(jnp.isfinite(surplus), surplus, -supply)  # a failed solve: no flux
 
             def step(_, bracket):
                 low, high, excess_low, excess_high, side = bracket
@@ -307,8 +307,6 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         unknowns, meniscus = jax.lax.cond(starved, meniscus_search, lambda flooded: (flooded, jnp.asarray(inlet)),
                                           unknowns)
         unknowns, meniscus = jax.lax.stop_gradient((unknowns, meniscus))
-    if oil_layer is None:
-        meniscus = inlet
     # nested iteration up to the requested grid
     count = COARSE_NODES
     while count < nodes:
@@ -318,8 +316,8 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
 
     def equations(state):  # discrete Reynolds and load balance; the flux balance fixes X_m
         problem = _problem(nodes, state[-1], half_width, hertz_pressure, speed_parameter, *laws)
-        meniscus = jnp.where(starved, _discrete_flux(state[:-1], problem) - supply, state[-1] - inlet)
-        return jnp.append(_residual(state[:-1], problem), meniscus)
+        flux_balance = jnp.where(starved, _discrete_flux(state[:-1], problem) - supply, state[-1] - inlet)
+        return jnp.append(_residual(state[:-1], problem), flux_balance)
 
     # Final Newton on the fine grid inside lax.custom_root: its derivative is the implicit one,
     # −J⁻¹ ∂F/∂θ with the converged Jacobian (forward and reverse mode).
