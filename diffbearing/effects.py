@@ -406,19 +406,18 @@ def contact_settings(settings: dict) -> tuple[tuple[int, int], float]:
     return grid, tolerance
 
 
-def _contact_outputs():
-    return (
-        Output("contact.max_pressure", "Pa", "GPa", "peak contact pressure p_max"),
-        Output("contact.approach", "m", "um", "approach δ (from touching at mid-length)"),
-        Output("contact.load", "N", "N", "load carried by the pressure field, ΔA Σp"),
-        Output("contact.contact_length", "m", "mm", "length of the loaded zone along the roller"),
-        Output("contact.max_half_width", "m", "um", "largest half-width of the loaded zone (rolling)"),
-        Output("contact.converged", "", "", "the contact solution converged inside its grid"),
-        Output("contact.iterations", "", "", "conjugate-gradient iterations (0 for slices)"),
-        Output("contact.pressure", "Pa", "GPa", "pressure map p[x, y] on the nx × ny grid", in_report=False),
-        Output("contact.x", "m", "mm", "cell centres along rolling (x)", in_report=False),
-        Output("contact.y", "m", "mm", "cell centres along the roller axis (y)", in_report=False),
-    )
+_CONTACT_OUTPUTS = (
+    Output("contact.max_pressure", "Pa", "GPa", "peak contact pressure p_max"),
+    Output("contact.approach", "m", "um", "approach δ (from touching at mid-length)"),
+    Output("contact.load", "N", "N", "load carried by the pressure field, ΔA Σp"),
+    Output("contact.contact_length", "m", "mm", "length of the loaded zone along the roller"),
+    Output("contact.max_half_width", "m", "um", "largest half-width of the loaded zone (rolling)"),
+    Output("contact.converged", "", "", "the contact solution converged inside its grid"),
+    Output("contact.iterations", "", "", "conjugate-gradient iterations (0 for slices)"),
+    Output("contact.pressure", "Pa", "GPa", "pressure map p[x, y] on the nx × ny grid", in_report=False),
+    Output("contact.x", "m", "mm", "cell centres along rolling (x)", in_report=False),
+    Output("contact.y", "m", "mm", "cell centres along the roller axis (y)", in_report=False),
+)
 
 
 def _contact(method):
@@ -438,7 +437,7 @@ for _method in ("slices", "influence"):
         bearing_types=ROLLER_TYPES,
         enabled_by=("contact", _method),
         requires=("roller_geometry",),
-        outputs=_contact_outputs(),
+        outputs=_CONTACT_OUTPUTS,
         compute=_contact(_method),
     ))
 
@@ -532,14 +531,14 @@ def starvation_settings(settings: dict, inputs: SceneInputs) -> None:
 
 def _starvation_formula(inputs: SceneInputs, settings: dict, results: dict) -> dict:
     oil_layer = inputs.operating.oil_layer
-    case = _roller_film_case(inputs)
-    hertz_pressure = hertz.line_contact(case[0], case[1], case[5]).max_pressure
-    density = density_ratio(hertz_pressure, inputs.lubricant.density_law)
+    load_per_length, radius, _, _, _, modulus = _roller_film_case(inputs)
+    density = density_ratio(hertz.line_contact(load_per_length, radius, modulus).max_pressure,
+                            inputs.lubricant.density_law)
     flooded_central, flooded_minimum = results["film.central"], results["film.minimum"]
     central = film_formulas.starved_film(flooded_central, oil_layer, density, LINE_STARVATION_SHARPNESS)
     minimum = flooded_minimum * central / flooded_central  # the flooded h_min/h_c ratio kept (an estimate)
     return {"starvation.oil_layer": oil_layer, "starvation.central": central, "starvation.minimum": minimum,
-            "starvation.relative_error": (flooded_central - central) / flooded_central}
+            "starvation.relative_error": 1.0 - central / flooded_central}
 
 
 def _starvation_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
@@ -548,7 +547,7 @@ def _starvation_line(inputs: SceneInputs, settings: dict, results: dict) -> dict
     solved = line_film(*_roller_film_case(inputs), nodes=film_settings(settings, inputs), oil_layer=oil_layer,
                        viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
     return {"starvation.oil_layer": oil_layer, "starvation.central": solved.central, "starvation.minimum": solved.minimum,
-            "starvation.relative_error": (results["film.central"] - solved.central) / results["film.central"],
+            "starvation.relative_error": 1.0 - solved.central / results["film.central"],
             "starvation.meniscus": solved.meniscus, "starvation.converged": solved.converged,
             "starvation.x": solved.x, "starvation.pressure": solved.pressure, "starvation.thickness": solved.thickness}
 

@@ -31,8 +31,9 @@ import numpy as np
 
 from .hertz import line_contact
 from .influence import love_rectangle
-from .line_ehl import INLET, OUTLET, _damped_newton, density_ratio, line_film, viscosity_ratio
-from .numerics import require_float64, safe_sqrt
+from .line_ehl import (INLET, OUTLET, FluidParameters, _damped_newton, fischer_burmeister, line_film, reynolds_coefficients,
+                       rolling_terms)
+from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 2500
@@ -92,6 +93,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     hertz_contact = line_contact(load / flat_length, radius, effective_modulus)
     half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure
     speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
+    fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
 
     x = np.linspace(INLET, OUTLET, nx)
     spacing = x[1] - x[0]
@@ -117,32 +119,22 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     def residual(unknowns):
         pressure, offset = unpack(unknowns)
         height = film(pressure, offset)
-        dimensional = pressure * hertz_pressure
-        density = density_ratio(dimensional, density_law)
-        flow = density * height**3 / (viscosity_ratio(dimensional, viscosity, pressure_viscosity, viscosity_law)
-                                      * speed_parameter)
-        face_x = 0.5 * (flow[1:] + flow[:-1])
-        poiseuille_x = (face_x[1:] * (pressure[2:] - pressure[1:-1])
-                        - face_x[:-1] * (pressure[1:-1] - pressure[:-2])) / spacing**2
+        density, flow = reynolds_coefficients(pressure, height, fluid)
         # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
         flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
         end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
         flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
         poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
-        mass = density * height
-        first_order = (mass[1:-1] - mass[:-2]) / spacing
-        second_order = (3.0 * mass[1:-1] - 4.0 * mass[:-2] + jnp.pad(mass[:-3], ((1, 0), (0, 0)))) / (2 * spacing)
-        wedge = jnp.where((np.arange(1, nx - 1) >= 2)[:, None], second_order, first_order)
-        reynolds = (poiseuille_x + poiseuille_y[1:-1] - wedge) * spacing
-        interior = pressure[1:-1]
-        complementarity = interior - reynolds - safe_sqrt(interior**2 + reynolds**2)
+        reynolds = (rolling_terms(pressure, density * height, flow, spacing) + poiseuille_y[1:-1]) * spacing
+        complementarity = fischer_burmeister(pressure[1:-1], reynolds)
         balance = (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
         return jnp.append(complementarity.reshape(-1), balance)
 
     # start: the 1-D solution under the load per flat length, extruded over the flat and tapered
     # off over the first half-width of the crown, scaled to the load; H₀ matching its central film
-    line = line_film(load / flat_length, radius, speed, viscosity, pressure_viscosity, effective_modulus, nodes=129,
-                     viscosity_law=viscosity_law, density_law=density_law)
+    line = line_film(*jax.lax.stop_gradient((load / flat_length, radius, speed, viscosity, pressure_viscosity,
+                                             effective_modulus)),
+                     nodes=129, viscosity_law=viscosity_law, density_law=density_law)
     line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure)
     taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
     start = line_pressure[:, None] * taper[None, :]

@@ -78,15 +78,50 @@ def log_kernel(count: int):
     return primitive(offset + 0.5) - primitive(offset - 0.5)
 
 
-class _Problem(eqx.Module):
-    nodes: jax.Array
-    kernel: jax.Array
-    speed_parameter: jax.Array  # λ
-    hertz_pressure: jax.Array  # p_h [Pa]
+class FluidParameters(eqx.Module):
+    """What the Reynolds coefficients need: λ = 12η₀uR²/(b³p_h) [-], p_h [Pa], η₀ [Pa·s], α [1/Pa]
+    and the viscosity and density laws (shared by the line and the finite line contact)."""
+
+    speed_parameter: jax.Array
+    hertz_pressure: jax.Array
     viscosity: jax.Array
     pressure_viscosity: jax.Array
     viscosity_law: str = eqx.field(static=True)
     density_law: str = eqx.field(static=True)
+
+
+def reynolds_coefficients(pressure, film, fluid: FluidParameters):
+    """(ρ̄, ε = ρ̄H³/(η̄λ)) [-] at dimensionless pressure P and film H: the density ratio of the
+    wedge term and the Poiseuille coefficient of the Reynolds equation."""
+    dimensional = pressure * fluid.hertz_pressure
+    density = density_ratio(dimensional, fluid.density_law)
+    viscosity = viscosity_ratio(dimensional, fluid.viscosity, fluid.pressure_viscosity, fluid.viscosity_law)
+    return density, density * film**3 / (viscosity * fluid.speed_parameter)
+
+
+def rolling_terms(pressure, mass, flow, spacing):
+    """d/dX(ε dP/dX) − d(ρ̄H)/dX [-] at the interior nodes along axis 0 (X, rolling): Poiseuille
+    central with ε averaged onto the faces, wedge upwind (second order, first order next to the
+    inlet). Works on a line (N,) or on a grid (nx, ny), column by column."""
+    face = 0.5 * (flow[1:] + flow[:-1])
+    poiseuille = (face[1:] * (pressure[2:] - pressure[1:-1]) - face[:-1] * (pressure[1:-1] - pressure[:-2])) / spacing**2
+    first_order = (mass[1:-1] - mass[:-2]) / spacing
+    second_order = (3.0 * mass[1:-1] - 4.0 * mass[:-2] + jnp.concatenate([jnp.zeros_like(mass[:1]), mass[:-3]])
+                    ) / (2 * spacing)
+    upwind_second = (jnp.arange(1, len(pressure) - 1) >= 2).reshape((-1,) + (1,) * (pressure.ndim - 1))
+    return poiseuille - jnp.where(upwind_second, second_order, first_order)
+
+
+def fischer_burmeister(pressure, reynolds):
+    """P + s(−L) − √(P² + L²) [-]: zero exactly when P ≥ 0, L ≤ 0 and P·L = 0 (cavitation as a
+    complementarity), with a finite slope at (0, 0)."""
+    return pressure - reynolds - safe_sqrt(pressure**2 + reynolds**2)
+
+
+class _Problem(eqx.Module):
+    nodes: jax.Array
+    kernel: jax.Array
+    fluid: FluidParameters
 
 
 def _film(pressure, offset, problem):
@@ -100,20 +135,10 @@ def _residual(unknowns, problem: _Problem):
     pressure = jnp.pad(interior, 1)
     spacing = problem.nodes[1] - problem.nodes[0]
     film = _film(pressure, offset, problem)
-    dimensional = pressure * problem.hertz_pressure
-    density = density_ratio(dimensional, problem.density_law)
-    flow = density * film**3 / (viscosity_ratio(dimensional, problem.viscosity, problem.pressure_viscosity,
-                                                problem.viscosity_law) * problem.speed_parameter)
-    face = 0.5 * (flow[1:] + flow[:-1])
-    poiseuille = (face[1:] * (pressure[2:] - pressure[1:-1]) - face[:-1] * (pressure[1:-1] - pressure[:-2])) / spacing**2
-    mass = density * film
-    first_order = (mass[1:-1] - mass[:-2]) / spacing
-    second_order = (3.0 * mass[1:-1] - 4.0 * mass[:-2] + jnp.pad(mass[:-3], (1, 0), constant_values=0.0)) / (2 * spacing)
-    wedge = jnp.where(jnp.arange(1, len(pressure) - 1) >= 2, second_order, first_order)
-    reynolds = (poiseuille - wedge) * spacing  # scaled to O(P) for the complementarity
-    complementarity = interior - reynolds - safe_sqrt(interior**2 + reynolds**2)  # finite slope at (0, 0)
+    density, flow = reynolds_coefficients(pressure, film, problem.fluid)
+    reynolds = rolling_terms(pressure, density * film, flow, spacing) * spacing  # scaled to O(P)
     balance = spacing * jnp.sum(pressure) - 0.5 * jnp.pi
-    return jnp.append(complementarity, balance)
+    return jnp.append(fischer_burmeister(interior, reynolds), balance)
 
 
 def moes_load_parameter(load_per_length, radius, speed, viscosity, effective_modulus):
@@ -143,11 +168,8 @@ def _damped_newton(function, unknowns, steps: int):
     return jax.lax.scan(step, unknowns, None, length=steps)[0]
 
 
-def _problem(nodes, inlet, half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity, viscosity_law,
-             density_law):
-    grid = jnp.linspace(inlet, OUTLET, nodes)
-    return _Problem(grid, log_kernel(nodes), speed_parameter, hertz_pressure, viscosity, pressure_viscosity,
-                    viscosity_law, density_law)
+def _problem(nodes: int, inlet, fluid: FluidParameters) -> _Problem:
+    return _Problem(jnp.linspace(inlet, OUTLET, nodes), log_kernel(nodes), fluid)
 
 
 # The start: a Hertz pressure at Moes M = START_LOAD_PARAMETER; the continuation runs M
@@ -184,11 +206,8 @@ def _discrete_flux(unknowns, problem: _Problem):
     pressurized nodes of the discrete equations, whose wedge term is in flux form there)."""
     pressure = jnp.pad(unknowns[:-1], 1)
     spacing = problem.nodes[1] - problem.nodes[0]
-    dimensional = pressure * problem.hertz_pressure
-    density = density_ratio(dimensional, problem.density_law)
     film = _film(pressure, unknowns[-1], problem)
-    flow = density * film**3 / (viscosity_ratio(dimensional, problem.viscosity, problem.pressure_viscosity,
-                                                problem.viscosity_law) * problem.speed_parameter)
+    density, flow = reynolds_coefficients(pressure, film, problem.fluid)
     peak = jnp.argmax(pressure)
     mass = density * film
     face = 0.5 * (flow[peak + 1] + flow[peak])
@@ -236,14 +255,15 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     hertz_contact = line_contact(load_per_length, radius, effective_modulus)
     half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure  # p_h = E'b/(4R)
     speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
-    laws = (viscosity, pressure_viscosity, viscosity_law, density_law)
-    constants = jax.lax.stop_gradient((half_width, hertz_pressure, speed_parameter, viscosity, pressure_viscosity))
+    fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
+    start_fluid = jax.lax.stop_gradient(fluid)  # the iterations before the last solve carry no derivative
 
     load_parameter = jax.lax.stop_gradient(moes_load_parameter(load_per_length, radius, speed, viscosity,
                                                                 effective_modulus))
 
     def at_load_parameter(problem, value):  # the same contact at Moes M = value (speed scaled)
-        return eqx.tree_at(lambda p: p.speed_parameter, problem, problem.speed_parameter * (load_parameter / value) ** 2)
+        return eqx.tree_at(lambda p: p.fluid.speed_parameter, problem,
+                           problem.fluid.speed_parameter * (load_parameter / value) ** 2)
 
     def hertz_start(problem):  # Hertz pressure, H₀ from the Pan–Hamrock central film at M = 10
         hertz = jnp.sqrt(jnp.maximum(1.0 - problem.nodes**2, 0.0))
@@ -262,10 +282,10 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         return jax.lax.fori_loop(1, CONTINUATION_STAGES + 1, stage, unknowns)
 
     def coarse_solution(inlet):  # the flooded solution from `inlet` on the coarse grid
-        coarse = _problem(COARSE_NODES, inlet, *constants, viscosity_law, density_law)
+        coarse = _problem(COARSE_NODES, inlet, start_fluid)
 
         def light_load():  # M < 10: the continuation on 65 nodes, then onto the coarse grid
-            start = _problem(START_NODES, inlet, *constants, viscosity_law, density_law)
+            start = _problem(START_NODES, inlet, start_fluid)
             unknowns = _interpolate(continuation(start, hertz_start(start)), COARSE_NODES, inlet)
             return _damped_newton(lambda y: _residual(y, coarse), unknowns, 12)
 
@@ -276,7 +296,7 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
 
     unknowns, coarse = coarse_solution(inlet)
     if oil_layer is None:
-        supply, starved, meniscus = 0.0, False, inlet
+        meniscus = inlet
     else:
         supply = oil_layer * radius / half_width**2  # h_oil in units of b²/R
         starved = jax.lax.stop_gradient(supply) < _discrete_flux(unknowns, coarse)
@@ -311,12 +331,17 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     count = COARSE_NODES
     while count < nodes:
         count = 2 * count - 1
-        finer = _problem(count, meniscus, *constants, viscosity_law, density_law)
+        finer = _problem(count, meniscus, start_fluid)
         unknowns = _damped_newton(lambda y: _residual(y, finer), _interpolate(unknowns, count, meniscus), 12)
 
+    fine = _problem(nodes, inlet, fluid)
+
     def equations(state):  # discrete Reynolds and load balance; the flux balance fixes X_m
-        problem = _problem(nodes, state[-1], half_width, hertz_pressure, speed_parameter, *laws)
-        flux_balance = jnp.where(starved, _discrete_flux(state[:-1], problem) - supply, state[-1] - inlet)
+        problem = eqx.tree_at(lambda p: p.nodes, fine, jnp.linspace(state[-1], OUTLET, nodes))
+        if oil_layer is None:
+            flux_balance = state[-1] - inlet
+        else:
+            flux_balance = jnp.where(starved, _discrete_flux(state[:-1], problem) - supply, state[-1] - inlet)
         return jnp.append(_residual(state[:-1], problem), flux_balance)
 
     # Final Newton on the fine grid inside lax.custom_root: its derivative is the implicit one,
@@ -326,7 +351,7 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         solve=lambda function, guess: _damped_newton(function, guess, FINAL_STEPS),
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
     residual = jnp.max(jnp.abs(equations(jax.lax.stop_gradient(solution))))
-    problem = _problem(nodes, solution[-1], half_width, hertz_pressure, speed_parameter, *laws)
+    problem = eqx.tree_at(lambda p: p.nodes, fine, jnp.linspace(solution[-1], OUTLET, nodes))
     pressure = jnp.pad(solution[:-2], 1)
     film = _film(pressure, solution[-2], problem) * half_width**2 / radius
     centre = jnp.argmin(jnp.abs(problem.nodes))

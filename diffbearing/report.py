@@ -255,12 +255,11 @@ def format_report(result) -> str:
     if "displacement" in values:
         lines += _displacement_lines(values["displacement"])
     lines += _roller_pressure_lines(result)
-    if "film.converged" in values:
-        state = "converged" if bool(values["film.converged"]) else "DID NOT CONVERGE (values are the last iterate)"
-        lines.append(f"  line EHL (Newton, {len(values['film.x'])} nodes, fully flooded): {state}")
-    if "starvation.converged" in values:
-        state = "converged" if bool(values["starvation.converged"]) else "DID NOT CONVERGE (values are the last iterate)"
-        lines.append(f"  line EHL starved by the oil layer (meniscus by flux balance): {state}")
+    for key, solve in (("film.converged", f"Newton, {len(values.get('film.x', ()))} nodes, fully flooded"),
+                       ("starvation.converged", "starved by the oil layer, meniscus by flux balance")):
+        if key in values:
+            state = "converged" if bool(values[key]) else "DID NOT CONVERGE (values are the last iterate)"
+            lines.append(f"  line EHL ({solve}): {state}")
     if "force" in values and result.model.inputs.operating.axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
     if "stiffness" in values:
