@@ -17,9 +17,9 @@ constriction of the film sit. Symmetry (no flux) at Y = 0, p = 0 at the roller e
 Cavitation: the Fischer–Burmeister complementarity of `line_ehl`, node by node.
 
 Solver: damped Newton with a dense Jacobian from the 1-D line solution extruded along the flat
-length, inside `lax.custom_root` so the derivatives are implicit (not yet checked against finite
-differences). Dense means (nx−2)·ny ≤ 2500 unknowns: 4–13 s per solve at 25–41 × 48 on 2 cores
-after an 8–10 s compile (`benchmarks/finite_line_ehl.py`); finer grids need a matrix-free
+length, inside `lax.custom_root` so the derivatives are implicit (checked against central
+differences on a 17 × 16 grid). Dense means (nx−2)·ny ≤ 2500 unknowns: 3–7 s per solve at 25–41 × 48 on 2 cores
+after a 6–7 s compile (`benchmarks/finite_line_ehl.py`); finer grids need a matrix-free
 Newton–Krylov (not built). No load continuation yet: at seed 003's 2471 N the Newton from the
 extruded start does not converge, and the result says so.
 """

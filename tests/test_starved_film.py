@@ -126,3 +126,34 @@ def test_finite_line_flooded_film_has_its_minimum_at_the_roller_ends():
     assert float(result.central) == pytest.approx(1.207e-6, rel=0.04)
     assert 6.35e-3 < float(result.minimum_position) < 6.6e-3 and float(result.minimum) < 0.6 * float(result.central)
     assert np.all(np.asarray(result.pressure) >= -1e-9 * float(np.max(result.pressure)))
+
+
+def test_formula_derivatives_match_central_differences():
+    """Moes' central film (w, u, η₀, α) and Chevalier's starved film (h_ff, h_oil, ρ̄), forward and
+    reverse, against central differences."""
+    def films(x):  # (w [1e5 N/m], u [m/s], η₀ [Pa·s], α [1e-8 1/Pa], h_oil [µm]) → films [µm]
+        central = moes_line_central(x[0] * 1e5, SEED003_LINE["radius"], x[1], x[2], x[3] * 1e-8, 2.26e11)
+        return jnp.stack([central, starved_film(central, x[4] * 1e-6, 1.15, sharpness=20.0)]) * 1e6
+
+    point = jnp.array([0.80945, 2.63, 0.08, 2.2, 1.3])
+    for direction in jnp.eye(5):
+        assert_jvp_matches_central_difference(jax.jit(films), point, direction, step=1e-6, rtol=1e-6)
+
+
+def test_finite_line_derivatives_match_central_differences():
+    """Implicit derivative (lax.custom_root) of the 2-D central and minimum film with respect to
+    load, speed and viscosity, forward and reverse, on a small 17 × 16 grid (it converges there)."""
+    from diffbearing.finite_line_ehl import finite_line_film
+    from diffbearing.roller_profile import roller_profile
+
+    profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+
+    def films(x):  # (W [kN], u [m/s], η₀ [Pa·s]) → (h_c, h_min) [µm]
+        result = finite_line_film(x[0] * 1e3, SEED003_LINE["radius"], x[1], x[2], 2.2e-8, 2.26e11, profile, 14.7e-3,
+                                  12.7e-3, grid=(17, 16))
+        return jnp.stack([result.central, result.minimum]) * 1e6
+
+    point = jnp.array([1.028, 2.63, 0.08])
+    function = jax.jit(films)
+    for direction in jnp.eye(3):
+        assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-5)
