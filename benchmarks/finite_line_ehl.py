@@ -1,10 +1,19 @@
-"""Seed 003's flooded finite line contact (2-D, half domain, dense Newton): films and time.
+"""Seed 003's finite line contact (2-D, half domain, dense Newton), flooded and starved: films,
+accuracy against time of every fidelity level, and the paper's numbers.
 
     python benchmarks/finite_line_ehl.py
 
 Roller with a 12.7 mm flat and 10 mm crown radius, 14.7 mm long, on the outer raceway at
-1000 r/min; loads 1028, 1607 and 2471 N on a 33 × 48 grid, and 1028 N on 25 × 48 and 41 × 48.
-Writes benchmarks/results/finite_line_ehl.md.
+1000 r/min (physics.md §4). Writes benchmarks/results/finite_line_ehl.{md,png}:
+
+1. accuracy against time at 1028 N, flooded and starved by h_oil = 0.8 µm: the formulas, the 1-D
+   line contact (129 and 513 nodes) and the 2-D solver on 25 × 48 and 33 × 48, each against the
+   finest 2-D grid that the dense Newton takes here, 41 × 48;
+2. the paper's minimum films at 0.8 µm for 1028 / 1607 / 2471 N (33 × 48);
+3. the starvation criterion Er at h_oil = 1.8 and 2.0 µm (33 × 48).
+
+Times: formulas and 1-D levels median of 5 runs after compilation, the 2-D solves one run each
+(tens of seconds); compile separately. One CPU process.
 """
 
 import time
@@ -14,36 +23,130 @@ import jax
 
 jax.config.update("jax_enable_x64", True)
 
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from line_ehl import FLAT_LENGTH, LOAD, LUBRICANT, RADIUS, SPEED, formula_rows  # noqa: E402
+from timing import median_time  # noqa: E402
 
 from diffbearing.finite_line_ehl import finite_line_film  # noqa: E402
+from diffbearing.line_ehl import line_film  # noqa: E402
 from diffbearing.roller_profile import roller_profile  # noqa: E402
 
-RADIUS = 1 / (1 / 12.7e-3 - 1 / 66e-3)
-SPEED = 106.6e-3 / 4 * (1 - (25.4 / 106.6) ** 2) * 1000 * np.pi / 30
-PROFILE = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+PROFILE = roller_profile("circular", length=14.7e-3, flat_length=FLAT_LENGTH, crown_radius=10e-3)
+ROLLER_LOAD = LOAD * FLAT_LENGTH
+OIL_LAYER = 0.8e-6
+GRIDS = ((25, 48), (33, 48))
+REFERENCE_GRID = (41, 48)
+PAPER_MINIMUM = {1028.0: 0.319e-6, 1607.0: 0.215e-6, 2471.0: 0.159e-6}
+RESULTS = Path(__file__).resolve().parent / "results"
+
+
+def finite_line_solver(grid, oil_layer):
+    """(compiled W → FiniteLineFilm, compile time [s])."""
+    start = time.perf_counter()
+    solve = jax.jit(lambda w: finite_line_film(w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
+                                               LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid,
+                                               oil_layer=oil_layer))
+    solve = solve.lower(ROLLER_LOAD).compile()
+    return solve, time.perf_counter() - start
+
+
+def timed(solve, load):
+    start = time.perf_counter()
+    result = jax.block_until_ready(solve(load))
+    return result, time.perf_counter() - start
+
+
+def level_rows(oil_layer):
+    """(level, central, minimum, converged, run [s], compile [s]) at 1028 N; the reference last."""
+    rows = [(name, central, minimum, True, run, compile_s)
+            for name, central, minimum, run, compile_s in formula_rows(oil_layer)]
+    for nodes in (129, 513):
+        start = time.perf_counter()
+        solve = jax.jit(lambda w, n=nodes: line_film(w, RADIUS, SPEED, nodes=n, oil_layer=oil_layer, **LUBRICANT))
+        solve = solve.lower(LOAD).compile()
+        compile_s = time.perf_counter() - start
+        result = solve(LOAD)
+        rows.append((f"1-D line EHL, {nodes} nodes", float(result.central), float(result.minimum),
+                     bool(result.converged), median_time(lambda: solve(LOAD), 5), compile_s))
+        print(rows[-1], flush=True)
+    for grid in (*GRIDS, REFERENCE_GRID):
+        solve, compile_s = finite_line_solver(grid, oil_layer)
+        result, run = timed(solve, ROLLER_LOAD)
+        rows.append((f"2-D finite line, {grid[0]} × {grid[1]}", float(result.central), float(result.minimum),
+                     bool(result.converged), run, compile_s))
+        print(rows[-1], flush=True)
+    return rows
+
+
+def accuracy_table(title, rows):
+    _, reference_central, reference_minimum, *_ = rows[-1]
+    lines = [f"### {title}", "",
+             "| level | central film | minimum film | central vs 41 × 48 | minimum vs 41 × 48 | converged | run | compile |",
+             "|---|---|---|---|---|---|---|---|"]
+    for name, central, minimum, converged, run, compile_s in rows:
+        minimum_text = "–" if np.isnan(minimum) else f"{minimum * 1e6:.4f} µm"
+        minimum_error = "–" if np.isnan(minimum) else f"{(minimum / reference_minimum - 1) * 100:+.1f} %"
+        lines.append(f"| {name} | {central * 1e6:.4f} µm | {minimum_text} | "
+                     f"{(central / reference_central - 1) * 100:+.2f} % | {minimum_error} | "
+                     f"{'yes' if converged else 'NO'} | {run * 1e3:.3g} ms | {compile_s:.1f} s |")
+    return lines + [""]
+
+
+def plot(flooded, starved, path):
+    figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
+    for axis, (title, rows) in zip(axes, (("fully flooded", flooded), ("starved, h_oil = 0.8 µm", starved))):
+        _, reference_central, reference_minimum, *_ = rows[-1]
+        for index, (name, central, minimum, _, run, _) in enumerate(rows[:-1]):
+            for value, reference, marker in ((central, reference_central, "o"), (minimum, reference_minimum, "s")):
+                if not np.isnan(value):
+                    axis.loglog(run, abs(value / reference - 1) * 100, marker, color=f"C{index}",
+                                label=name if marker == "o" else None)
+        axis.set(xlabel="wall time per solve [s]", ylabel="error against 2-D 41 × 48 [%]",
+                 title=f"{title}: ○ central film, □ minimum film")
+        axis.grid(alpha=0.3, which="both")
+    axes[1].legend(fontsize=7)
+    figure.suptitle("Seed 003 roller contact at 1028 N: what accuracy costs in time")
+    figure.savefig(path, dpi=120)
+    plt.close(figure)
 
 
 def main():
-    lines = ["# Seed 003 flooded finite line contact (2-D, dense Newton)", "",
-             "| load | grid | central film (y = 0) | minimum film | at y | p_max | converged | run | compile |",
-             "|---|---|---|---|---|---|---|---|---|"]
-    for grid, loads in (((25, 48), (1028.0,)), ((33, 48), (1028.0, 1607.0, 2471.0)), ((41, 48), (1028.0,))):
-        start = time.perf_counter()
-        solve = jax.jit(lambda w, g=grid: finite_line_film(w, RADIUS, SPEED, 0.08, 2.2e-8, 2.26e11, PROFILE, 14.7e-3,
-                                                           12.7e-3, grid=g)).lower(loads[0]).compile()
-        compile_s = time.perf_counter() - start
-        for load in loads:
-            start = time.perf_counter()
-            result = jax.block_until_ready(solve(load))
-            run = time.perf_counter() - start
-            lines.append(f"| {load:.0f} N | {grid[0]} × {grid[1]} | {float(result.central) * 1e6:.4f} µm | "
-                         f"{float(result.minimum) * 1e6:.4f} µm | {float(result.minimum_position) * 1e3:.3f} mm | "
-                         f"{float(np.max(result.pressure)) / 1e9:.3f} GPa | {'yes' if bool(result.converged) else 'no'} | "
-                         f"{run:.1f} s | {compile_s:.1f} s |")
-            print(lines[-1], flush=True)
+    flooded, starved = level_rows(None), level_rows(OIL_LAYER)
+    lines = ["# Seed 003 finite line contact (2-D, dense Newton): accuracy against time", "",
+             "`python benchmarks/finite_line_ehl.py`: 1028 N, 1000 r/min, errors against the 2-D solution on 41 × 48 "
+             "(the finest grid the dense Newton takes in reasonable time). Formulas and 1-D: median of 5 runs; 2-D: one "
+             "run. Formulas and 1-D at mid-length, load on the flat length; their minimum film is the one of the "
+             "rolling direction (outlet constriction), not the roller-end one.", "",
+             *accuracy_table("Fully flooded", flooded), *accuracy_table("Starved, h_oil = 0.8 µm", starved)]
+    plot(flooded, starved, RESULTS / "finite_line_ehl.png")
+
+    solve, _ = finite_line_solver(GRIDS[-1], OIL_LAYER)
+    lines += ["### The paper's minimum films, h_oil = 0.8 µm, 33 × 48", "",
+              "| load | starved central film | starved minimum film | at y | paper | difference | converged | run |",
+              "|---|---|---|---|---|---|---|---|"]
+    for load, paper in PAPER_MINIMUM.items():
+        result, run = timed(solve, load)
+        lines.append(f"| {load:.0f} N | {float(result.central) * 1e6:.4f} µm | {float(result.minimum) * 1e6:.4f} µm | "
+                     f"{float(result.minimum_position) * 1e3:.3f} mm | {paper * 1e6:.3f} µm | "
+                     f"{(float(result.minimum) / paper - 1) * 100:+.1f} % | {'yes' if bool(result.converged) else 'NO'} | "
+                     f"{run:.1f} s |")
+        print(lines[-1], flush=True)
+    flooded_central = float(finite_line_solver(GRIDS[-1], None)[0](ROLLER_LOAD).central)
+    lines += ["", "### Starvation criterion Er = 1 − h_c/h_c,ff at 1028 N, 33 × 48 (paper: < 1 % at 2.0 µm, "
+              "> 1 % at 1.8 µm)", "", "| h_oil | central film | Er | converged |", "|---|---|---|---|"]
+    for layer in (1.8e-6, 2.0e-6):
+        solve, _ = finite_line_solver(GRIDS[-1], layer)
+        result = solve(ROLLER_LOAD)
+        lines.append(f"| {layer * 1e6:.1f} µm | {float(result.central) * 1e6:.4f} µm | "
+                     f"{(1 - float(result.central) / flooded_central) * 100:.2f} % | "
+                     f"{'yes' if bool(result.converged) else 'NO'} |")
+        print(lines[-1], flush=True)
     text = "\n".join(lines) + "\n"
-    (Path(__file__).resolve().parent / "results" / "finite_line_ehl.md").write_text(text)
+    (RESULTS / "finite_line_ehl.md").write_text(text)
     print(text)
 
 

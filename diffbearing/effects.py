@@ -23,6 +23,7 @@ import jax.numpy as jnp
 from . import ball_equilibrium, film_formulas, hertz, life
 from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
+from .finite_line_ehl import check_grid, finite_line_film
 from .line_ehl import check_nodes, density_ratio, line_film
 from .roller_contact import roller_contact
 from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, film_length, roller_modulus
@@ -450,8 +451,8 @@ DEFAULT_LINE_NODES = 513
 
 
 def film_settings(settings: dict, inputs: SceneInputs) -> int:
-    """Nodes of the line EHL level (fidelity.grid[0], default 513); ValueError for a bad grid or a
-    roller scene without entrainment speed."""
+    """Nodes of the line EHL level (fidelity.grid[0], default 513); ValueError for a bad grid (of
+    the line or the finite line level) or a roller scene without entrainment speed."""
     speed = inputs.operating.entrainment_speed
     if not isinstance(speed, jax.core.Tracer) and float(speed) <= 0:
         raise ValueError("effects.film needs an entrainment speed: give operating.inner_speed (or outer_speed) "
@@ -459,6 +460,8 @@ def film_settings(settings: dict, inputs: SceneInputs) -> int:
     nodes = settings["fidelity"].get("grid", [DEFAULT_LINE_NODES])[0]
     if settings["effects"].get("film") == "line":
         check_nodes(nodes)
+    if settings["effects"].get("film") == "finite_line":
+        finite_line_settings(settings)
     return nodes
 
 
@@ -512,6 +515,56 @@ register(Block(
     compute=_film_line,
 ))
 
+
+# The finite line level (film = "finite_line"): the 2-D EHL of the whole roller length, half
+# domain, on fidelity.grid = [nx, ny] (`finite_line_ehl.check_grid`).
+DEFAULT_FINITE_LINE_GRID = (33, 48)
+
+
+def finite_line_settings(settings: dict) -> tuple[int, int]:
+    """(nx, ny) of the finite line level: fidelity.grid, default [33, 48]; ValueError beyond the
+    dense Newton's size."""
+    return check_grid(settings["fidelity"].get("grid", DEFAULT_FINITE_LINE_GRID))
+
+
+def _finite_line(inputs: SceneInputs, settings: dict, oil_layer=None):
+    bearing, lubricant = inputs.bearing, inputs.lubricant
+    _, radius, speed, viscosity, pressure_viscosity, modulus = _roller_film_case(inputs)
+    return finite_line_film(inputs.operating.load, radius, speed, viscosity, pressure_viscosity, modulus, bearing.profile,
+                            bearing.length, film_length(bearing), grid=finite_line_settings(settings),
+                            viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law,
+                            oil_layer=oil_layer)
+
+
+_FINITE_LINE_FIELDS = ("central", "minimum", "minimum_position", "converged", "x", "y", "pressure", "thickness")
+
+
+def _film_finite_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    solved = _finite_line(inputs, settings)
+    return {"film.entrainment_speed": inputs.operating.entrainment_speed,
+            **{f"film.{name}": getattr(solved, name) for name in _FINITE_LINE_FIELDS}}
+
+
+def _finite_line_outputs(prefix: str, case: str):
+    return (
+        Output(f"{prefix}.minimum_position", "m", "mm", f"where the {case} h_min is, y from mid-length"),
+        Output(f"{prefix}.converged", "", "", f"the {case} finite line EHL Newton converged"),
+        Output(f"{prefix}.x", "m", "mm", "nodes along rolling (x), inlet at −4.5 b", in_report=False),
+        Output(f"{prefix}.y", "m", "mm", "cell centres along the roller from mid-length (y ≥ 0)", in_report=False),
+        Output(f"{prefix}.pressure", "Pa", "GPa", f"{case} film pressure p[x, y]", in_report=False),
+        Output(f"{prefix}.thickness", "m", "um", f"{case} film thickness (the gap where dry) h[x, y]",
+               in_report=False),
+    )
+
+
+register(Block(
+    name="film_finite_line",
+    bearing_types=ROLLER_TYPES,
+    enabled_by=("film", "finite_line"),
+    requires=("roller_geometry",),
+    outputs=(*_ROLLER_FILM_COMMON, *_finite_line_outputs("film", "flooded")),
+    compute=_film_finite_line,
+))
 
 # ---------------------------------------------------------------------------------------------
 # Starvation (effect starvation = true, with operating.oil_layer): the film of the same level
@@ -584,4 +637,28 @@ register(Block(
         Output("starvation.thickness", "m", "um", "starved film thickness h(x)", in_report=False),
     ),
     compute=_starvation_line,
+))
+
+
+def _starvation_finite_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    solved = _finite_line(inputs, settings, oil_layer=inputs.operating.oil_layer)
+    return {"starvation.oil_layer": inputs.operating.oil_layer,
+            "starvation.relative_error": 1.0 - solved.central / results["film.central"],
+            "starvation.meniscus": solved.meniscus,
+            **{f"starvation.{name}": getattr(solved, name) for name in _FINITE_LINE_FIELDS}}
+
+
+register(Block(
+    name="starvation_finite_line",
+    bearing_types=ROLLER_TYPES,
+    enabled_by=("starvation", True),
+    only_with=("film", ("finite_line",)),
+    requires=("film_finite_line",),
+    outputs=(
+        *_STARVATION_COMMON,
+        Output("starvation.meniscus", "m", "mm", "inlet meniscus x_m per y cell, where the pressure starts",
+               in_report=False),
+        *_finite_line_outputs("starvation", "starved"),
+    ),
+    compute=_starvation_finite_line,
 ))

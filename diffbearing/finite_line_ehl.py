@@ -1,4 +1,4 @@
-"""Numerical EHL of a finite line contact (roller on raceway, 2-D), fully flooded, by Newton.
+"""Numerical EHL of a finite line contact (roller on raceway, 2-D), flooded or starved, by Newton.
 
 Seed 003 (physics.md §4): the gap h = h₀ + x²/2R + g(y) + v(x, y) with g the roller's axial
 profile drop and v the elastic deflection of both half-spaces; isothermal Newtonian Reynolds
@@ -16,12 +16,22 @@ uniform over the last 10 % of the flat and the crowned end, where the pressure s
 constriction of the film sit. Symmetry (no flux) at Y = 0, p = 0 at the roller end.
 Cavitation: the Fischer–Burmeister complementarity of `line_ehl`, node by node.
 
-Solver: damped Newton with a dense Jacobian from the 1-D line solution extruded along the flat
-length, inside `lax.custom_root` so the derivatives are implicit (checked against central
-differences on a 17 × 16 grid). Dense means (nx−2)·ny ≤ 2500 unknowns: 3–7 s per solve at 25–41 × 48 on 2 cores
-after a 6–7 s compile (`benchmarks/finite_line_ehl.py`); finer grids need a matrix-free
-Newton–Krylov (not built). No load continuation yet: at seed 003's 2471 N the Newton from the
-extruded start does not converge, and the result says so.
+Starvation (physics.md §4 and §7): the mass-conserving θ-model written with its free boundary
+explicit. Each y cell has an inlet meniscus X_m,j (an unknown); upstream the oil layer rides on
+the surfaces (θh = h_oil, p = 0), downstream the film is full, and across the meniscus the mass
+flux is continuous: ρ̄h − (ρh³/12ηu) ∂p/∂x = h_oil. The meniscus cuts the grid between nodes; the
+discrete equations are made continuous in its position (`reynolds_from_meniscus`), and it is
+bounded to [inlet, outlet − Δ/2] by a box complementarity: at the inlet the column is flooded, at
+the upper bound no full film forms (the crowned ends, where the gap exceeds the oil layer).
+
+Solver: a dense Jacobian (jacfwd), Newton with Armijo backtracking and a Levenberg–Marquardt
+fallback where the piecewise smooth equations stall it, the meniscus moving at most a cell per
+step; from the 1-D line solution (starved alike) extruded along the flat; inside
+`lax.custom_root`, so the derivatives are implicit (checked against central differences on
+17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ 2500 unknowns; measured times and
+films in `benchmarks/finite_line_ehl.py`. Finer grids need a matrix-free Newton–Krylov (not
+built). No load continuation: at seed 003's 2471 N the 33 × 48 grid gives h < 0 at the end
+constriction (too coarse there) and the result says it did not converge.
 """
 
 import equinox as eqx
@@ -31,20 +41,21 @@ import numpy as np
 
 from .hertz import line_contact
 from .influence import love_rectangle
-from .line_ehl import (INLET, OUTLET, FluidParameters, _damped_newton, fischer_burmeister, line_film, reynolds_coefficients,
-                       rolling_terms)
-from .numerics import require_float64
+from .line_ehl import (INLET, OUTLET, FluidParameters, fischer_burmeister, line_film,
+                       reynolds_coefficients)
+from .numerics import require_float64, safe_sqrt
 from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 2500
-NEWTON_STEPS = 30
+NEWTON_STEPS = 60  # seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
 
 
 class FiniteLineFilm(eqx.Module):
     """Solution [SI] on the half domain y ≥ 0: x [m] (nx), y [m] cell centres (ny), pressure [Pa]
     and film [m] (nx, ny), central film at x = 0 on y = 0 [m], minimum film [m] and its y [m],
-    whether Newton converged (residual below the tolerance, positive film), that residual [-]."""
+    whether Newton converged (residual below the tolerance, positive film), that residual [-],
+    the inlet meniscus x_m [m] of each y cell (the domain inlet when flooded)."""
 
     x: jax.Array
     y: jax.Array
@@ -55,14 +66,16 @@ class FiniteLineFilm(eqx.Module):
     minimum_position: jax.Array
     converged: jax.Array
     residual: jax.Array
+    meniscus: jax.Array
 
 
-def axial_cells(count: int, flat_end: float, roller_end: float):
+def axial_cells(count: int, flat_end, roller_end):
     """Cell edges [m] on [0, roller_end]: a quarter of the cells over [0, FINE_START·flat_end],
-    the rest over the fine zone from there to the roller end (numpy: fixed by the geometry)."""
+    the rest over the fine zone from there to the roller end."""
     coarse = max(count // 4, 1)
     split = FINE_START * flat_end
-    return np.concatenate([np.linspace(0.0, split, coarse + 1), np.linspace(split, roller_end, count - coarse + 1)[1:]])
+    return jnp.concatenate([jnp.linspace(0.0, split, coarse + 1),
+                            jnp.linspace(split, roller_end, count - coarse + 1)[1:]])
 
 
 def check_grid(grid) -> tuple[int, int]:
@@ -74,10 +87,101 @@ def check_grid(grid) -> tuple[int, int]:
     return nx, ny
 
 
+def _newton_with_fallback(function, unknowns, steps: int, largest_change):
+    """Damped Newton (Armijo backtracking on ½‖F‖², dense Jacobian) for a piecewise smooth F: where
+    the Newton direction gives no decrease (a kink of the complementarity or of the meniscus
+    switching nodes), Levenberg–Marquardt steps (JᵀJ + μ diag JᵀJ) d = −JᵀF with μ raised ×10
+    from 1e-6 until the merit falls; a step that lowers nothing is not taken. Every step is
+    shortened so that no unknown changes by more than `largest_change` (per unknown: the
+    meniscus positions move at most a cell per step, so that they do not jump into the
+    pressurized zone)."""
+
+    def limited(direction):
+        return direction * jnp.minimum(1.0, jnp.min(largest_change / (jnp.abs(direction) + 1e-300)))
+
+    def merit(point):
+        return 0.5 * jnp.sum(function(point) ** 2)
+
+    def improve(current, residual, start):
+        jacobian = jax.jacfwd(function)(current)
+
+        def too_long(length):
+            return (~(merit(current + length * newton_direction) <= (1.0 - 1e-4 * length) * start)) & (length > 1e-4)
+
+        newton_direction = limited(jnp.linalg.solve(jacobian, -residual))
+        length = jax.lax.while_loop(too_long, lambda length: 0.5 * length, 1.0)
+        newton_point = current + length * newton_direction
+
+        def levenberg_marquardt(_):
+            normal = jacobian.T @ jacobian
+            gradient = jacobian.T @ residual
+            scale = jnp.diag(normal) + 1e-12
+
+            def trial(damping):
+                return current - limited(jnp.linalg.solve(normal + damping * jnp.diag(scale), gradient))
+
+            def no_decrease(damping):
+                return (~(merit(trial(damping)) < start)) & (damping < 1e6)
+
+            damping = jax.lax.while_loop(no_decrease, lambda damping: 10.0 * damping, 1e-6)
+            return trial(damping)
+
+        candidate = jax.lax.cond(merit(newton_point) < start, lambda _: newton_point, levenberg_marquardt, None)
+        return jnp.where(merit(candidate) < start, candidate, current)
+
+    def step(current, _):  # no work once the residual is at round-off
+        residual = function(current)
+        start = 0.5 * jnp.sum(residual**2)
+        busy = jnp.max(jnp.abs(residual)) > 1e-13
+        return jax.lax.cond(busy, improve, lambda current, *_: current, current, residual, start), None
+
+    return jax.lax.scan(step, unknowns, None, length=steps)[0]
+
+
+def _box_complementarity(position, lower, upper, excess):
+    """Zero exactly when lower ≤ position ≤ upper with excess = 0 inside, excess ≤ 0 at the lower
+    bound and excess ≥ 0 at the upper one (Billups' nesting of Fischer–Burmeister functions)."""
+    def fb(a, b):
+        return a + b - safe_sqrt(a**2 + b**2)
+
+    return fb(position - lower, -fb(upper - position, excess))
+
+
+def reynolds_from_meniscus(pressure, mass, flow, dry_flow, transverse, spacing, cells_from_meniscus, meniscus_mass,
+                           meniscus_flow):
+    """Reynolds residual L [-] (×Δ, axis 0 the rolling direction) at the interior nodes when the
+    pressure starts at an inlet meniscus inside the grid, column by column, written so that it is
+    continuous in the meniscus position (a Newton line search needs that):
+
+    - the first wet node k, s_k ∈ (0, 1] cells past the meniscus, takes its upstream face at the
+      meniscus (P = 0, ε and ρ̄H of the gap there) and its wedge term first order; its equation
+      is multiplied by s_k, so that as s_k → 0 it tends to −ε_face P_k/Δ;
+    - the dry nodes upstream take exactly that, −ε_face P/Δ: with Fischer–Burmeister, P = 0;
+    - the next node blends the wedge term from first to second order as s goes from 1 to 2.
+
+    With the meniscus on the inlet node this is (`line_ehl.rolling_terms` + transverse) × Δ.
+    `flow` is ε at the nodes, `dry_flow` ε of the gap at zero pressure, `transverse` the
+    ∂Y(ε ∂Y P) terms at the interior nodes."""
+    s = cells_from_meniscus[1:-1]
+    first = (s > 0) & (s <= 1)
+    s_first = jnp.where(first, s, 1.0)
+    face_down = 0.5 * (flow[2:] + flow[1:-1])
+    face_up = jnp.where(first, 0.5 * (meniscus_flow + flow[1:-1]), 0.5 * (flow[1:-1] + flow[:-2]))
+    gradient_up = jnp.where(first, pressure[1:-1] / s_first, pressure[1:-1] - pressure[:-2]) / spacing
+    poiseuille = face_down * (pressure[2:] - pressure[1:-1]) / spacing - face_up * gradient_up
+    mass_up = jnp.where(first, meniscus_mass, mass[:-2])
+    curvature = mass[1:-1] - 2.0 * mass[:-2] + jnp.concatenate([mass[:1], mass[:-3]])  # row 1 has weight 0
+    blend = jnp.clip(s - 1.0, 0.0, 1.0).at[0].set(0.0)
+    wet = poiseuille - (mass[1:-1] - mass_up) - blend * curvature / 2 + transverse * spacing
+    dry = -0.5 * (dry_flow[1:-1] + flow[1:-1]) * pressure[1:-1] / spacing
+    return jnp.where(s > 1, wet, jnp.where(first, s_first * wet, dry))
+
+
 def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile: RollerProfile,
-                     length: float, flat_length: float, grid=(33, 48), viscosity_law="roelands",
-                     density_law="dowson_higginson", tolerance=1e-10) -> FiniteLineFilm:
-    """Fully flooded isothermal EHL of a roller of finite length on its raceway (2-D, half domain).
+                     length, flat_length, grid=(33, 48), viscosity_law="roelands",
+                     density_law="dowson_higginson", tolerance=1e-10, oil_layer=None) -> FiniteLineFilm:
+    """Isothermal EHL of a roller of finite length on its raceway (2-D, half domain), fully
+    flooded or starved by an inlet oil layer.
 
     Args:
         load: roller load W [N] > 0.
@@ -87,69 +191,122 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         profile: the roller's axial profile (`roller_profile`); length: effective length l [m];
             flat_length: the length b and p_h are based on [m] (the flat of a circular profile).
         grid: (nx, ny) nodes along rolling and cells along the half roller (`check_grid`).
+        oil_layer: inlet oil supply layer h_oil [m], or None for fully flooded.
+
+    Starvation: each column y_j has its own inlet meniscus X_m,j, an unknown. Upstream of it the
+    oil layer rides on the surfaces (the partial film of the Elrod θ-model carries u·h_oil); the
+    full film starts at the meniscus with p = 0, and mass conservation across it fixes X_m,j:
+    ρ̄h − (ρh³/12ηu) ∂p/∂x = h_oil (taken on the faces a cell or two downstream, where the discrete
+    wedge term is in flux form; the meniscus taken as straight along y there). X_m,j lies in
+    [inlet, outlet − Δ/2]: at the inlet when the flooded column passes less than the supply (the
+    film is the flooded one); at the upper bound when no full film forms (the crowned ends, where
+    the gap exceeds the layer). The Newton starts from the starved 1-D line solution extruded
+    along the flat.
     """
     require_float64()
     nx, ny = check_grid(grid)
-    hertz_contact = line_contact(load / flat_length, radius, effective_modulus)
-    half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure
-    speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
-    fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
-
+    starved = oil_layer is not None
     x = np.linspace(INLET, OUTLET, nx)
     spacing = x[1] - x[0]
-    edges = jnp.asarray(axial_cells(ny, 0.5 * flat_length, 0.5 * length)) / half_width
-    y, widths = 0.5 * (edges[1:] + edges[:-1]), jnp.diff(edges)
-    # elastic film (1/2π) Σ P C: cell (j, k) and its mirror image at −y
-    offset_x = (x[:, None] - x[None, :])[:, None, :, None]
-    below = (y[:, None] - y[None, :])[None, :, None, :]
-    above = (y[:, None] + y[None, :])[None, :, None, :]  # the mirror image
-    half_cell = 0.5 * widths[None, None, None, :]
-    kernel = (love_rectangle(offset_x, below, 0.5 * spacing, half_cell)
-              + love_rectangle(offset_x, above, 0.5 * spacing, half_cell)).reshape(nx * ny, nx * ny) / (2 * np.pi)
-    profile_film = crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
-    load_target = 0.5 * np.pi * flat_length / half_width  # ∬P dX dY over the whole roller
+    highest_meniscus = OUTLET - 0.5 * spacing
+    centre = int(np.argmin(np.abs(x)))
 
-    def film(pressure, offset):
-        elastic = (kernel @ pressure.reshape(-1)).reshape(nx, ny)
-        return offset + 0.5 * jnp.asarray(x)[:, None] ** 2 + profile_film[None, :] + elastic
+    def contact_at(stage_load):
+        """The discrete equations under a roller load [N] (all lengths scale with its b), the film,
+        the start, and the scales."""
+        hertz_contact = line_contact(stage_load / flat_length, radius, effective_modulus)
+        half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure
+        speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
+        fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law,
+                                density_law)
+        edges = axial_cells(ny, 0.5 * flat_length, 0.5 * length) / half_width
+        y, widths = 0.5 * (edges[1:] + edges[:-1]), jnp.diff(edges)
+        # elastic film (1/2π) Σ P C: cell (j, k) and its mirror image at −y
+        offset_x = (x[:, None] - x[None, :])[:, None, :, None]
+        below = (y[:, None] - y[None, :])[None, :, None, :]
+        above = (y[:, None] + y[None, :])[None, :, None, :]  # the mirror image
+        half_cell = 0.5 * widths[None, None, None, :]
+        kernel = (love_rectangle(offset_x, below, 0.5 * spacing, half_cell)
+                  + love_rectangle(offset_x, above, 0.5 * spacing, half_cell)).reshape(nx * ny, nx * ny) / (2 * np.pi)
+        profile_film = crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
+        load_target = 0.5 * np.pi * flat_length / half_width  # ∬P dX dY over the whole roller
+        supply = oil_layer * radius / half_width**2 if starved else None  # H_oil
+
+        def film(pressure, offset):
+            elastic = (kernel @ pressure.reshape(-1)).reshape(nx, ny)
+            return offset + 0.5 * jnp.asarray(x)[:, None] ** 2 + profile_film[None, :] + elastic
+
+        def residual(unknowns):
+            pressure, offset, meniscus = unpack(unknowns)
+            height = film(pressure, offset)
+            density, flow = reynolds_coefficients(pressure, height, fluid)
+            # the meniscus of each column: cells from it to each node, the gap and ε there (p = 0)
+            cells = (jnp.asarray(x)[:, None] - jnp.clip(meniscus, INLET, highest_meniscus)[None, :]) / spacing
+            first = (cells[1:] > 0) & (cells[1:] <= 1)
+            meniscus_height = jnp.sum(jnp.where(first, cells[1:] * height[:-1] + (1 - cells[1:]) * height[1:], 0.0),
+                                      axis=0)
+            meniscus_flow = reynolds_coefficients(jnp.zeros(ny), meniscus_height, fluid)[1]
+            # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
+            flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
+            end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
+            flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
+            poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
+            dry_flow = reynolds_coefficients(jnp.zeros_like(height), height, fluid)[1]
+            reynolds = reynolds_from_meniscus(pressure, density * height, flow, dry_flow, poiseuille_y[1:-1], spacing,
+                                              cells, meniscus_height, meniscus_flow)
+            equations = fischer_burmeister(pressure[1:-1], reynolds)
+            balance = (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
+            result = jnp.append(equations.reshape(-1), balance)
+            if not starved:
+                return result
+            # mass across the meniscus: ρ̄H − ε ∂P/∂X of the full film = H_oil, taken where the
+            # wedge term is in flux form (second-order upwind face values (3m_i − m_{i−1})/2), on
+            # the faces k + 3/2 and k + 5/2 after the first wet node k, weighted s_k and 1 − s_k so
+            # that it is continuous as the meniscus crosses a node
+            mass = density * height
+            upwind = 0.5 * (3.0 * mass[:-1] - jnp.concatenate([mass[:1], mass[:-2]]))
+            face_flux = upwind - 0.5 * (flow[1:] + flow[:-1]) * jnp.diff(pressure, axis=0) / spacing
+            face_flux = jnp.concatenate([face_flux, jnp.repeat(height[-1:], 3, axis=0)])  # past the outlet: the gap
+            flux = jnp.sum(jnp.where(first, cells[1:] * face_flux[2:-1] + (1 - cells[1:]) * face_flux[3:], 0.0), axis=0)
+            return jnp.concatenate([result, _box_complementarity(meniscus, INLET, highest_meniscus,
+                                                                 flux / supply - 1.0)])
+
+        def start():
+            """The 1-D solution (starved alike) under the load per flat length, extruded over the
+            flat and tapered off over the first half-width of the crown, scaled to the load."""
+            line = line_film(stage_load / flat_length, radius, speed, viscosity, pressure_viscosity, effective_modulus,
+                             nodes=129, viscosity_law=viscosity_law, density_law=density_law, oil_layer=oil_layer)
+            line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure, left=0.0)
+            taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
+            pressure = line_pressure[:, None] * taper[None, :]
+            pressure = pressure * load_target / (2.0 * spacing * jnp.sum(pressure * widths))
+            offset = line.central * radius / half_width**2 - film(pressure, 0.0)[centre, 0]
+            guess = jnp.append(pressure[1:-1].reshape(-1), offset)
+            if starved:
+                guess = jnp.concatenate([guess, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus)])
+            return guess
+
+        return residual, film, start, (half_width, hertz_pressure, y)
 
     def unpack(unknowns):
-        return jnp.pad(unknowns[:-1].reshape(nx - 2, ny), ((1, 1), (0, 0))), unknowns[-1]
+        interior = (nx - 2) * ny
+        pressure = jnp.pad(unknowns[:interior].reshape(nx - 2, ny), ((1, 1), (0, 0)))
+        meniscus = unknowns[interior + 1:] if starved else jnp.full(ny, INLET)
+        return pressure, unknowns[interior], meniscus
 
-    def residual(unknowns):
-        pressure, offset = unpack(unknowns)
-        height = film(pressure, offset)
-        density, flow = reynolds_coefficients(pressure, height, fluid)
-        # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
-        flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
-        end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
-        flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
-        poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
-        reynolds = (rolling_terms(pressure, density * height, flow, spacing) + poiseuille_y[1:-1]) * spacing
-        complementarity = fischer_burmeister(pressure[1:-1], reynolds)
-        balance = (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
-        return jnp.append(complementarity.reshape(-1), balance)
-
-    # start: the 1-D solution under the load per flat length, extruded over the flat and tapered
-    # off over the first half-width of the crown, scaled to the load; H₀ matching its central film
-    line = line_film(*jax.lax.stop_gradient((load / flat_length, radius, speed, viscosity, pressure_viscosity,
-                                             effective_modulus)),
-                     nodes=129, viscosity_law=viscosity_law, density_law=density_law)
-    line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure)
-    taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
-    start = line_pressure[:, None] * taper[None, :]
-    start = start * load_target / (2.0 * spacing * jnp.sum(start * widths))
-    centre = int(np.argmin(np.abs(x)))
-    offset = line.central * radius / half_width**2 - film(start, 0.0)[centre, 0]
-    guess = jax.lax.stop_gradient(jnp.append(start[1:-1].reshape(-1), offset))
+    residual, film, start, (half_width, hertz_pressure, y) = contact_at(load)
+    fixed = jax.lax.stop_gradient  # the iterations before the implicit derivative carry none
+    # the meniscus positions move at most a cell per Newton step
+    largest_change = jnp.concatenate([jnp.full((nx - 2) * ny + 1, jnp.inf), jnp.full(ny if starved else 0, spacing)])
 
     solution = jax.lax.custom_root(
-        residual, guess, solve=lambda function, initial: _damped_newton(function, initial, NEWTON_STEPS),
+        residual, fixed(start()),
+        solve=lambda function, guess: _newton_with_fallback(function, guess, NEWTON_STEPS, largest_change),
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
-    error = jnp.max(jnp.abs(residual(jax.lax.stop_gradient(solution))))
-    pressure, offset = unpack(solution)
+    error = jnp.max(jnp.abs(residual(fixed(solution))))
+    pressure, offset, meniscus = unpack(solution)
     thickness = film(pressure, offset) * half_width**2 / radius
     lowest = jnp.argmin(thickness)
     return FiniteLineFilm(jnp.asarray(x) * half_width, y * half_width, pressure * hertz_pressure, thickness,
                           thickness[centre, 0], thickness.reshape(-1)[lowest], y[lowest % ny] * half_width,
-                          (error < tolerance) & (jnp.min(thickness) > 0), error)
+                          (error < tolerance) & (jnp.min(thickness) > 0), error, meniscus * half_width)

@@ -105,10 +105,40 @@ def plot_line_film(result, figure):
     figure.suptitle(f"{result.model.scene.title}: line EHL")
 
 
+def plot_finite_line_film(result, figure):
+    """Maps of the finite line EHL solution (the starved one when the scene names starvation) over
+    the half roller, and the film along the roller through its minimum, flooded and starved."""
+    values = result.values
+    prefix = "starvation" if "starvation.pressure" in values else "film"
+    x, y = np.asarray(values[f"{prefix}.x"]) * 1e3, np.asarray(values[f"{prefix}.y"]) * 1e3
+    pressure_axis, film_axis, line_axis = figure.subplots(1, 3)
+    shown = pressure_axis.pcolormesh(y, x, np.asarray(values[f"{prefix}.pressure"]) / 1e9, shading="nearest",
+                                     cmap="viridis")
+    figure.colorbar(shown, ax=pressure_axis, label="pressure [GPa]")
+    thickness = np.asarray(values[f"{prefix}.thickness"]) * 1e6
+    shown = film_axis.pcolormesh(y, x, thickness, shading="nearest", cmap="magma",
+                                 vmax=3 * float(values["film.central"]) * 1e6)
+    figure.colorbar(shown, ax=film_axis, label="film thickness [µm]")
+    case = "starved" if prefix == "starvation" else "flooded"
+    for axis, name in ((pressure_axis, "pressure"), (film_axis, "film")):
+        axis.set(xlabel="y from mid-length [mm]", ylabel="x, rolling [mm]", title=f"{case} {name}")
+    for name, label in (("film", "fully flooded"), ("starvation", "starved")):
+        if f"{name}.thickness" in values:
+            film = np.asarray(values[f"{name}.thickness"]) * 1e6
+            row = np.unravel_index(np.argmin(film), film.shape)[0]
+            line_axis.plot(np.asarray(values[f"{name}.y"]) * 1e3, film[row], label=f"{label}, at its h_min row")
+    line_axis.set(xlabel="y from mid-length [mm]", ylabel="film thickness [µm]", title="film along the roller",
+                  ylim=(0, 3 * float(values["film.central"]) * 1e6))
+    line_axis.grid(alpha=0.3)
+    line_axis.legend()
+    figure.suptitle(f"{result.model.scene.title}: finite line EHL, {len(x)} × {len(y)} half-domain grid")
+
+
 # Block name → plot; the last block of a run that has one draws the figure.
 PLOTS = {"raceway_contact": plot_hertz_load_curves, "roller_contact_slices": plot_contact_pressure,
          "roller_contact_influence": plot_contact_pressure, "film_line": plot_line_film,
-         "starvation_line": plot_line_film}
+         "starvation_line": plot_line_film, "film_finite_line": plot_finite_line_film,
+         "starvation_finite_line": plot_finite_line_film}
 
 
 def save_plot(result, path: str) -> None:

@@ -255,11 +255,16 @@ def format_report(result) -> str:
     if "displacement" in values:
         lines += _displacement_lines(values["displacement"])
     lines += _roller_pressure_lines(result)
-    for key, solve in (("film.converged", f"Newton, {len(values.get('film.x', ()))} nodes, fully flooded"),
-                       ("starvation.converged", "starved by the oil layer, meniscus by flux balance")):
+    if "film.y" in values:  # the finite line level
+        level, grid = "finite line EHL", f"{len(values['film.x'])} × {len(values['film.y'])} half-domain grid"
+        meniscus = "a meniscus per y cell by mass balance"
+    else:
+        level, grid, meniscus = "line EHL", f"{len(values.get('film.x', ()))} nodes", "meniscus by flux balance"
+    for key, solve in (("film.converged", f"Newton, {grid}, fully flooded"),
+                       ("starvation.converged", f"starved by the oil layer, {meniscus}")):
         if key in values:
             state = "converged" if bool(values[key]) else "DID NOT CONVERGE (values are the last iterate)"
-            lines.append(f"  line EHL ({solve}): {state}")
+            lines.append(f"  {level} ({solve}): {state}")
     if "force" in values and result.model.inputs.operating.axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
     if "stiffness" in values:

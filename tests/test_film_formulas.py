@@ -189,10 +189,39 @@ def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, shar
         assert film["x"][0] < starvation["meniscus"] == starvation["x"][0] < 0
 
 
-def test_seed003_as_published_lists_the_2d_level_as_not_computed(capsys, shared_scenes):
-    """The public scene names film = "finite_line" (not built): it runs, and says what it left out."""
-    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml")]) == 0
-    assert "Not computed (effect not available yet): film = 'finite_line', starvation" in capsys.readouterr().out
+def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scenes):
+    """Seed 003 at the finite line level on a 33 × 48 half-domain grid (physics.md §4, 1028 N,
+    1000 r/min): the flooded central film within 5 % of the paper's 1.207 µm; the minimum at the
+    end constriction, just past the flat's end (6.35 mm), for both films ("minimum sits at the
+    roller ends"); starved by h_oil = 0.8 µm, the minimum film within 15 % of the paper's
+    0.319 µm, and at mid-length the film below the supply over the density ratio (mass
+    conservation, as in the line contact); Er > 1 %; each y cell has its meniscus ahead of the
+    Hertz zone or, past the crown's start, none (the upper bound: no full film forms)."""
+    path = tmp_path / "finite_line.json"
+    code = cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 48]",
+                     "--json", str(path)])
+    out = capsys.readouterr().out
+    assert code == 0 and "finite line EHL (starved by the oil layer, a meniscus per y cell" in out
+    values = json.loads(path.read_text())
+    film, starvation = values["film"], values["starvation"]
+    assert film["converged"] is True and starvation["converged"] is True
+    assert film["central"] == pytest.approx(1.207e-6, rel=0.05)
+    assert starvation["minimum"] == pytest.approx(0.319e-6, rel=0.15)
+    assert 0.8e-6 / 1.16 < starvation["central"] < 0.8e-6 / 1.10 and starvation["relative_error"] > 0.01
+    for case in (film, starvation):
+        assert 6.35e-3 < case["minimum_position"] < 6.6e-3 and case["minimum"] < 0.6 * case["central"]
+        assert np.shape(case["pressure"]) == np.shape(case["thickness"]) == (33, 48) and len(case["y"]) == 48
+        assert np.min(case["pressure"]) >= -1e-9 * np.max(case["pressure"])
+    meniscus, y = np.array(starvation["meniscus"]), np.array(starvation["y"])
+    assert np.all(meniscus[y < 6.0e-3] < -1.2 * 111.32e-6) and np.all(meniscus[y > 6.6e-3] > 0)
+
+
+def test_seed003_as_published_asks_for_a_grid_the_dense_newton_can_take(capsys, shared_scenes):
+    """The public scene's grid [65, 129] (8127 unknowns) is beyond the dense Newton: exit 2 with
+    a one-line message naming fidelity.grid, its limit and a grid that works."""
+    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml")]) == 2
+    message = capsys.readouterr().err
+    assert "fidelity.grid" in message and "(nx − 2)·ny ≤ 2500" in message and "[33, 48]" in message
 
 
 def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path, shared_scenes):
