@@ -30,8 +30,9 @@ step; from the 1-D line solution (starved alike) extruded along the flat; inside
 `lax.custom_root`, so the derivatives are implicit (checked against central differences on
 17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ 2500 unknowns; measured times and
 films in `benchmarks/finite_line_ehl.py`. Finer grids need a matrix-free Newton–Krylov (not
-built). No load continuation: at seed 003's 2471 N the 33 × 48 grid gives h < 0 at the end
-constriction (too coarse there) and the result says it did not converge.
+built). At seed 003's 2471 N, Newton on 33 × 48 does not converge and the result says so (a load
+continuation, tried, reached a discrete solution with h < 0 at the end constriction: the grid is
+too coarse there, so it was left out).
 """
 
 import equinox as eqx
