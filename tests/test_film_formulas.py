@@ -213,7 +213,8 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scene
         assert np.shape(case["pressure"]) == np.shape(case["thickness"]) == (33, 48) and len(case["y"]) == 48
         assert np.min(case["pressure"]) >= -1e-9 * np.max(case["pressure"])
     meniscus, y = np.array(starvation["meniscus"]), np.array(starvation["y"])
-    assert np.all(meniscus[y < 6.0e-3] < -1.2 * 111.32e-6) and np.all(meniscus[y > 6.6e-3] > 0)
+    half_width = 111.32e-6  # Hertz b at the load per flat length (the report's)
+    assert np.all(meniscus[y < 6.0e-3] < -1.2 * half_width) and np.all(meniscus[y > 6.6e-3] > 0)
 
 
 def test_seed003_as_published_asks_for_a_grid_the_dense_newton_can_take(capsys, shared_scenes):
