@@ -476,10 +476,14 @@ def _film_formula(inputs: SceneInputs, settings: dict, results: dict) -> dict:
     return {"film.central": central, "film.minimum": minimum, "film.entrainment_speed": inputs.operating.entrainment_speed}
 
 
-def _film_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+def _line(inputs: SceneInputs, settings: dict, oil_layer=None):
     lubricant = inputs.lubricant
-    solved = line_film(*_roller_film_case(inputs), nodes=film_settings(settings, inputs),
-                       viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+    return line_film(*_roller_film_case(inputs), nodes=film_settings(settings, inputs), oil_layer=oil_layer,
+                     viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+
+
+def _film_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    solved = _line(inputs, settings)
     return {"film.central": solved.central, "film.minimum": solved.minimum, "film.converged": solved.converged,
             "film.entrainment_speed": inputs.operating.entrainment_speed, "film.x": solved.x,
             "film.pressure": solved.pressure, "film.thickness": solved.thickness}
@@ -596,9 +600,7 @@ def _starvation_formula(inputs: SceneInputs, settings: dict, results: dict) -> d
 
 def _starvation_line(inputs: SceneInputs, settings: dict, results: dict) -> dict:
     oil_layer = inputs.operating.oil_layer
-    lubricant = inputs.lubricant
-    solved = line_film(*_roller_film_case(inputs), nodes=film_settings(settings, inputs), oil_layer=oil_layer,
-                       viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+    solved = _line(inputs, settings, oil_layer)
     return {"starvation.oil_layer": oil_layer, "starvation.central": solved.central, "starvation.minimum": solved.minimum,
             "starvation.relative_error": 1.0 - solved.central / results["film.central"],
             "starvation.meniscus": solved.meniscus, "starvation.converged": solved.converged,

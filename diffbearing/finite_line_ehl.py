@@ -211,83 +211,62 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     spacing = x[1] - x[0]
     highest_meniscus = OUTLET - 0.5 * spacing
     centre = int(np.argmin(np.abs(x)))
+    hertz_contact = line_contact(load / flat_length, radius, effective_modulus)
+    half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure
+    speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
+    fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
+    edges = axial_cells(ny, 0.5 * flat_length, 0.5 * length) / half_width
+    y, widths = 0.5 * (edges[1:] + edges[:-1]), jnp.diff(edges)
+    # elastic film (1/2π) Σ P C: cell (j, k) and its mirror image at −y
+    offset_x = (x[:, None] - x[None, :])[:, None, :, None]
+    below = (y[:, None] - y[None, :])[None, :, None, :]
+    above = (y[:, None] + y[None, :])[None, :, None, :]  # the mirror image
+    half_cell = 0.5 * widths[None, None, None, :]
+    kernel = (love_rectangle(offset_x, below, 0.5 * spacing, half_cell)
+              + love_rectangle(offset_x, above, 0.5 * spacing, half_cell)).reshape(nx * ny, nx * ny) / (2 * np.pi)
+    profile_film = crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
+    load_target = 0.5 * np.pi * flat_length / half_width  # ∬P dX dY over the whole roller
+    supply = oil_layer * radius / half_width**2 if starved else None  # H_oil
 
-    def contact_at(stage_load):
-        """The discrete equations under a roller load [N] (all lengths scale with its b), the film,
-        the start, and the scales."""
-        hertz_contact = line_contact(stage_load / flat_length, radius, effective_modulus)
-        half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure
-        speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
-        fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law,
-                                density_law)
-        edges = axial_cells(ny, 0.5 * flat_length, 0.5 * length) / half_width
-        y, widths = 0.5 * (edges[1:] + edges[:-1]), jnp.diff(edges)
-        # elastic film (1/2π) Σ P C: cell (j, k) and its mirror image at −y
-        offset_x = (x[:, None] - x[None, :])[:, None, :, None]
-        below = (y[:, None] - y[None, :])[None, :, None, :]
-        above = (y[:, None] + y[None, :])[None, :, None, :]  # the mirror image
-        half_cell = 0.5 * widths[None, None, None, :]
-        kernel = (love_rectangle(offset_x, below, 0.5 * spacing, half_cell)
-                  + love_rectangle(offset_x, above, 0.5 * spacing, half_cell)).reshape(nx * ny, nx * ny) / (2 * np.pi)
-        profile_film = crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
-        load_target = 0.5 * np.pi * flat_length / half_width  # ∬P dX dY over the whole roller
-        supply = oil_layer * radius / half_width**2 if starved else None  # H_oil
+    def film(pressure, offset):
+        elastic = (kernel @ pressure.reshape(-1)).reshape(nx, ny)
+        return offset + 0.5 * jnp.asarray(x)[:, None] ** 2 + profile_film[None, :] + elastic
 
-        def film(pressure, offset):
-            elastic = (kernel @ pressure.reshape(-1)).reshape(nx, ny)
-            return offset + 0.5 * jnp.asarray(x)[:, None] ** 2 + profile_film[None, :] + elastic
+    def residual(unknowns):
+        pressure, offset, meniscus = unpack(unknowns)
+        height = film(pressure, offset)
+        density, flow = reynolds_coefficients(pressure, height, fluid)
+        # the meniscus of each column: cells from it to each node, the gap and ε there (p = 0)
+        cells = (jnp.asarray(x)[:, None] - jnp.clip(meniscus, INLET, highest_meniscus)[None, :]) / spacing
+        first = (cells[1:] > 0) & (cells[1:] <= 1)
+        meniscus_height = jnp.sum(jnp.where(first, cells[1:] * height[:-1] + (1 - cells[1:]) * height[1:], 0.0),
+                                  axis=0)
+        meniscus_flow = reynolds_coefficients(jnp.zeros(ny), meniscus_height, fluid)[1]
+        # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
+        flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
+        end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
+        flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
+        poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
+        dry_flow = reynolds_coefficients(jnp.zeros_like(height), height, fluid)[1]
+        reynolds = reynolds_from_meniscus(pressure, density * height, flow, dry_flow, poiseuille_y[1:-1], spacing,
+                                          cells, meniscus_height, meniscus_flow)
+        equations = fischer_burmeister(pressure[1:-1], reynolds)
+        balance = (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
+        result = jnp.append(equations.reshape(-1), balance)
+        if not starved:
+            return result
+        # mass across the meniscus: ρ̄H − ε ∂P/∂X of the full film = H_oil, taken where the
+        # wedge term is in flux form (second-order upwind face values (3m_i − m_{i−1})/2), on
+        # the faces k + 3/2 and k + 5/2 after the first wet node k, weighted s_k and 1 − s_k so
+        # that it is continuous as the meniscus crosses a node
+        mass = density * height
+        upwind = 0.5 * (3.0 * mass[:-1] - jnp.concatenate([mass[:1], mass[:-2]]))
+        face_flux = upwind - 0.5 * (flow[1:] + flow[:-1]) * jnp.diff(pressure, axis=0) / spacing
+        face_flux = jnp.concatenate([face_flux, jnp.repeat(height[-1:], 3, axis=0)])  # past the outlet: the gap
+        flux = jnp.sum(jnp.where(first, cells[1:] * face_flux[2:-1] + (1 - cells[1:]) * face_flux[3:], 0.0), axis=0)
+        return jnp.concatenate([result, _box_complementarity(meniscus, INLET, highest_meniscus,
+                                                             flux / supply - 1.0)])
 
-        def residual(unknowns):
-            pressure, offset, meniscus = unpack(unknowns)
-            height = film(pressure, offset)
-            density, flow = reynolds_coefficients(pressure, height, fluid)
-            # the meniscus of each column: cells from it to each node, the gap and ε there (p = 0)
-            cells = (jnp.asarray(x)[:, None] - jnp.clip(meniscus, INLET, highest_meniscus)[None, :]) / spacing
-            first = (cells[1:] > 0) & (cells[1:] <= 1)
-            meniscus_height = jnp.sum(jnp.where(first, cells[1:] * height[:-1] + (1 - cells[1:]) * height[1:], 0.0),
-                                      axis=0)
-            meniscus_flow = reynolds_coefficients(jnp.zeros(ny), meniscus_height, fluid)[1]
-            # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
-            flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
-            end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
-            flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
-            poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
-            dry_flow = reynolds_coefficients(jnp.zeros_like(height), height, fluid)[1]
-            reynolds = reynolds_from_meniscus(pressure, density * height, flow, dry_flow, poiseuille_y[1:-1], spacing,
-                                              cells, meniscus_height, meniscus_flow)
-            equations = fischer_burmeister(pressure[1:-1], reynolds)
-            balance = (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
-            result = jnp.append(equations.reshape(-1), balance)
-            if not starved:
-                return result
-            # mass across the meniscus: ρ̄H − ε ∂P/∂X of the full film = H_oil, taken where the
-            # wedge term is in flux form (second-order upwind face values (3m_i − m_{i−1})/2), on
-            # the faces k + 3/2 and k + 5/2 after the first wet node k, weighted s_k and 1 − s_k so
-            # that it is continuous as the meniscus crosses a node
-            mass = density * height
-            upwind = 0.5 * (3.0 * mass[:-1] - jnp.concatenate([mass[:1], mass[:-2]]))
-            face_flux = upwind - 0.5 * (flow[1:] + flow[:-1]) * jnp.diff(pressure, axis=0) / spacing
-            face_flux = jnp.concatenate([face_flux, jnp.repeat(height[-1:], 3, axis=0)])  # past the outlet: the gap
-            flux = jnp.sum(jnp.where(first, cells[1:] * face_flux[2:-1] + (1 - cells[1:]) * face_flux[3:], 0.0), axis=0)
-            return jnp.concatenate([result, _box_complementarity(meniscus, INLET, highest_meniscus,
-                                                                 flux / supply - 1.0)])
-
-        def start():
-            """The 1-D solution (starved alike) under the load per flat length, extruded over the
-            flat and tapered off over the first half-width of the crown, scaled to the load."""
-            line = line_film(stage_load / flat_length, radius, speed, viscosity, pressure_viscosity, effective_modulus,
-                             nodes=129, viscosity_law=viscosity_law, density_law=density_law, oil_layer=oil_layer)
-            line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure, left=0.0)
-            taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
-            pressure = line_pressure[:, None] * taper[None, :]
-            pressure = pressure * load_target / (2.0 * spacing * jnp.sum(pressure * widths))
-            offset = line.central * radius / half_width**2 - film(pressure, 0.0)[centre, 0]
-            guess = jnp.append(pressure[1:-1].reshape(-1), offset)
-            if starved:
-                guess = jnp.concatenate([guess, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus)])
-            return guess
-
-        return residual, film, start, (half_width, hertz_pressure, y)
 
     def unpack(unknowns):
         interior = (nx - 2) * ny
@@ -295,13 +274,24 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         meniscus = unknowns[interior + 1:] if starved else jnp.full(ny, INLET)
         return pressure, unknowns[interior], meniscus
 
-    residual, film, start, (half_width, hertz_pressure, y) = contact_at(load)
-    fixed = jax.lax.stop_gradient  # the iterations before the implicit derivative carry none
+    # start: the 1-D solution (starved alike) under the load per flat length, extruded over the
+    # flat and tapered off over the first half-width of the crown, scaled to the load
+    fixed = jax.lax.stop_gradient  # the start and the iterations carry no derivative
+    line = line_film(*fixed((load / flat_length, radius, speed, viscosity, pressure_viscosity, effective_modulus)),
+                     nodes=129, viscosity_law=viscosity_law, density_law=density_law, oil_layer=fixed(oil_layer))
+    line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure, left=0.0)
+    taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
+    start = line_pressure[:, None] * taper[None, :]
+    start = start * load_target / (2.0 * spacing * jnp.sum(start * widths))
+    offset = line.central * radius / half_width**2 - film(start, 0.0)[centre, 0]
+    guess = jnp.append(start[1:-1].reshape(-1), offset)
+    if starved:
+        guess = jnp.concatenate([guess, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus)])
     # the meniscus positions move at most a cell per Newton step
     largest_change = jnp.concatenate([jnp.full((nx - 2) * ny + 1, jnp.inf), jnp.full(ny if starved else 0, spacing)])
 
     solution = jax.lax.custom_root(
-        residual, fixed(start()),
+        residual, fixed(guess),
         solve=lambda function, guess: _newton_with_fallback(function, guess, NEWTON_STEPS, largest_change),
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
     error = jnp.max(jnp.abs(residual(fixed(solution))))
