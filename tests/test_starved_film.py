@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from diffbearing.film_formulas import moes_line_central, starved_film
-from diffbearing.line_ehl import density_ratio, line_film
+from diffbearing.line_ehl import density_ratio, line_film, moes_load_parameter
 
 from .helpers import assert_jvp_matches_central_difference
 from .test_film_formulas import SEED003_LINE, SEED003_LOAD_PER_LENGTH, seed003_entrainment_speed
@@ -139,22 +139,48 @@ def test_finite_line_derivatives_match_central_differences():
         assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-5)
 
 
-@pytest.mark.slow
-def test_starved_finite_line_derivatives_match_central_differences():
-    """Implicit derivative of the starved 2-D central and minimum film (a meniscus per y cell)
-    with respect to load and oil layer, forward and reverse, on a 25 × 16 grid (it converges there)."""
+@pytest.fixture(scope="module")
+def starved_finite_line():
+    """Seed 003's starved 2-D film on a 25 × 16 grid: (W [kN], h_oil [µm], speed factor) →
+    (h_c [µm], h_min [µm], converged)."""
     from diffbearing.finite_line_ehl import finite_line_film
     from diffbearing.roller_profile import roller_profile
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
-    def films(x):  # (W [kN], h_oil [µm]) → (h_c [µm], h_min [µm], converged)
-        result = finite_line_film(x[0] * 1e3, SEED003_LINE["radius"], seed003_entrainment_speed(), 0.08, 2.2e-8,
+    def films(x):
+        result = finite_line_film(x[0] * 1e3, SEED003_LINE["radius"], seed003_entrainment_speed() * x[2], 0.08, 2.2e-8,
                                   2.26e11, profile, 14.7e-3, 12.7e-3, grid=(25, 16), oil_layer=x[1] * 1e-6)
         return jnp.stack([result.central * 1e6, result.minimum * 1e6, result.converged.astype(float)])
 
-    point = jnp.array([1.028, 0.8])
-    function = jax.jit(films)
+    return films
+
+
+@pytest.mark.slow
+def test_starved_finite_line_derivatives_match_central_differences(starved_finite_line):
+    """Implicit derivative of the starved 2-D central and minimum film (a meniscus per y cell)
+    with respect to load and oil layer, forward and reverse, on a 25 × 16 grid (it converges there)."""
+    point = jnp.array([1.028, 0.8, 1.0])
+    function = jax.jit(starved_finite_line)
     assert float(function(point)[2]) == 1.0
-    for direction in jnp.eye(2):
+    for direction in jnp.eye(3)[:2]:
         assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-5)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("load, oil_layer, speed_factor", [(2.471, 0.8, 1.0), (1.028, 0.12, 1.0), (2.471, 0.8, 5e-4)],
+                         ids=["paper-heaviest-load", "tenth-of-flooded-film", "M-above-200"])
+def test_starved_finite_line_hard_cases_say_so_and_stay_finite(starved_finite_line, load, oil_layer, speed_factor):
+    """Hard cases of the 2-D starved solve on 25 × 16: the paper's heaviest load, an oil layer of
+    0.12 µm (a tenth of the flooded film), and that load at 1/2000 of the speed (Moes M ≈ 225
+    on the flat's length). Where Newton does not converge the result says so (converged = 0), and
+    values and derivatives (load, oil layer, speed) are still finite numbers."""
+    load_per_length = SEED003_LOAD_PER_LENGTH * load / 1.028
+    moes_m = moes_load_parameter(load_per_length, SEED003_LINE["radius"], seed003_entrainment_speed() * speed_factor,
+                                 0.08, 2.26e11)
+    assert float(moes_m) > (200 if speed_factor < 1 else 0)
+    point = jnp.array([load, oil_layer, speed_factor])
+    values = jax.jit(starved_finite_line)(point)
+    jacobian = jax.jit(jax.jacfwd(starved_finite_line))(point)
+    assert float(values[2]) in (0.0, 1.0)
+    assert bool(jnp.all(jnp.isfinite(values))) and bool(jnp.all(jnp.isfinite(jacobian)))
