@@ -21,7 +21,8 @@ import jax
 import jax.numpy as jnp
 
 from . import ball_equilibrium, film_formulas, hertz, life
-from .params import BallBearing, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
+from .cage_forces import cage_forces
+from .params import BallBearing, Cage, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
 from .finite_line_ehl import check_grid, finite_line_film
 from .line_ehl import check_nodes, density_ratio, line_film
@@ -44,6 +45,8 @@ class SceneInputs(eqx.Module):
     operating: Operating | RollerLoading
     lubricant: Lubricant | None = None
     roughness: jax.Array | None = None  # composite RMS roughness √(σ₁² + σ₂²) [m] of the contacting surfaces
+    cage: Cage | None = None
+    cage_offset: jax.Array | None = None  # (x, y) of the cage centre from the bearing axis [m]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -663,4 +666,52 @@ register(Block(
         *_finite_line_outputs("starvation", "starved"),
     ),
     compute=_starvation_finite_line,
+))
+
+# ---------------------------------------------------------------------------------------------
+# Cage (effect cage = true): quasi-static pocket and land forces at the scene's cage offset and
+# the restoring force f_inv (cage_forces.py; seed 000).
+
+
+def cage_settings(inputs: SceneInputs) -> None:
+    """ValueError for a cage effect without its inputs."""
+    if inputs.cage is None:
+        raise ValueError("effects.cage needs a [cage] table (cage.pocket_clearance, cage.guide_clearance, "
+                         "cage.land_width, ...)")
+    if inputs.lubricant is None:
+        raise ValueError("effects.cage needs a [lubricant] table (viscosity and density of the oil around the cage)")
+
+
+def _cage(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    solved = cage_forces(inputs.cage, inputs.bearing, inputs.operating, inputs.lubricant, inputs.cage_offset)
+    return {"cage.restoring_force": solved.restoring_force, "cage.force": solved.force, "cage.moment": solved.moment,
+            "cage.land_force": solved.land_force, "cage.land_eccentricity": solved.land_eccentricity,
+            "cage.land_contact": solved.land_contact, "cage.pocket_forces": solved.pocket_forces,
+            "cage.pushing": solved.pushing, "cage.resisting": solved.resisting, "cage.drag": solved.drag,
+            "cage.push": solved.push, "cage.load_zone": solved.load_zone, "cage.speed": solved.cage_speed,
+            "cage.offset": inputs.cage_offset}
+
+
+register(Block(
+    name="cage",
+    bearing_types=BALL_TYPES,
+    enabled_by=("cage", True),
+    requires=(),
+    outputs=(
+        Output("cage.restoring_force", "N", "N", "restoring force f_inv (resultant against the offset)"),
+        Output("cage.force", "N", "N", "resultant force on the cage [Fx, Fy, Fz]"),
+        Output("cage.moment", "N*m", "N*m", "resultant moment about the cage centre [Mx, My, Mz]"),
+        Output("cage.land_force", "N", "N", "force of land A (z = −s/2) and B (z = +s/2) [[Fx, Fy], [Fx, Fy]]"),
+        Output("cage.land_eccentricity", "", "", "relative eccentricity ε at land A and B"),
+        Output("cage.land_contact", "N", "N", "metal contact force at land A and B (0: full film)"),
+        Output("cage.pocket_forces", "N", "N", "force of each ball on the cage [Z × (Fx, Fy, Fz)]", in_report=False),
+        Output("cage.pushing", "", "", "weight of each ball as a pusher (0 to 1)", in_report=False),
+        Output("cage.resisting", "", "", "weight of each ball as a resister (0 to 1)", in_report=False),
+        Output("cage.drag", "N", "N", "oil drag on one orbiting ball f_v"),
+        Output("cage.push", "N", "N", "circumferential force of each pushing ball F_push"),
+        Output("cage.load_zone", "rad", "deg", "load zone 2ψ_l (Sjövall)"),
+        Output("cage.speed", "rad/s", "rpm", "cage speed ω_c"),
+        Output("cage.offset", "m", "um", "cage centre offset (x, y)"),
+    ),
+    compute=_cage,
 ))

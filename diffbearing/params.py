@@ -258,3 +258,77 @@ class Operating(eqx.Module):
         if self.axial_displacement is not None and _is_concrete(self.force) and np.any(np.asarray(self.force)[..., 2] != 0):
             raise ValueError("operating.force: Fz must be 0 with operating.axial_displacement "
                              "(the axial force follows from the prescribed displacement)")
+
+
+CAGE_POCKETS = ("outer_lock", "cylindrical")
+
+# Short-carbon-fibre PEEK (PEEK-CF30, seed 000's cage): representative moduli of machined parts;
+# the cage material only sets the ball–pocket Hertz stiffness, which hardly moves quasi-static forces.
+PEEK_CF30 = Material(13e9, 0.4, 1410.0, name="peek_cf30")
+
+
+class Cage(eqx.Module):
+    """A ball-bearing cage guided by two outer-ring lands, with cylindrical or outer-lock pockets.
+
+    Build it with `ball_cage(bearing, ...)`, which fills the geometry a scene leaves out. The
+    pocket diameter is D_w + c_p; the cage's outer radius at the lands is (d_land − c_g)/2; the
+    lands are centred at ±s/2 from the pocket row.
+    """
+
+    pocket_clearance: np.ndarray = eqx.field(converter=_as_float)  # c_p, diametral [m]
+    guide_clearance: np.ndarray = eqx.field(converter=_as_float)  # c_g, diametral, at the lands [m]
+    land_width: np.ndarray = eqx.field(converter=_as_float)  # L of each land [m]
+    land_diameter: np.ndarray = eqx.field(converter=_as_float)  # d_land, the outer ring's guiding bore [m]
+    land_spacing: np.ndarray = eqx.field(converter=_as_float)  # s, axial distance of the two land centres [m]
+    friction: np.ndarray = eqx.field(converter=_as_float)  # μ, ball–pocket and land metal contact [-]
+    film_threshold: np.ndarray = eqx.field(converter=_as_float)  # h_t, land film below which metal contact takes over [m]
+    contact_stiffness: np.ndarray = eqx.field(converter=_as_float)  # k_m of the land metal contact [N/m]
+    pushing_balls: np.ndarray = eqx.field(converter=_as_float)  # m, balls that drive the cage (a count)
+    resisting_balls: np.ndarray = eqx.field(converter=_as_float)  # n, balls that the cage drives (a count)
+    material: Material = PEEK_CF30
+    pocket: str = eqx.field(static=True, default="outer_lock")
+
+    def __check_init__(self):
+        if self.pocket not in CAGE_POCKETS:
+            raise ValueError(f"cage.pocket must be one of {CAGE_POCKETS}, got {self.pocket!r}")
+        for name in ("pocket_clearance", "guide_clearance", "land_width", "land_diameter", "land_spacing"):
+            check_range(f"cage.{name}", getattr(self, name), low=0.0, unit=" m")
+        check_range("cage.friction", self.friction, low=0.0, low_open=False)
+        check_range("cage.film_threshold", self.film_threshold, low=0.0, high=float(0.5 * self.guide_clearance)
+                    if _is_concrete(self.guide_clearance) else None, unit=" m", why="half the radial guide clearance")
+        check_range("cage.contact_stiffness", self.contact_stiffness, low=0.0, unit=" N/m")
+        check_range("cage.pushing_balls", self.pushing_balls, low=1.0, low_open=False)
+        check_range("cage.resisting_balls", self.resisting_balls, low=0.0, low_open=False)
+
+
+def ball_cage(bearing: BallBearing, *, pocket: str = "outer_lock", pocket_clearance, guide_clearance, land_width,
+              friction=0.1, land_diameter=None, land_spacing=None, film_threshold=1e-6, contact_stiffness=3e7,
+              pushing_balls, resisting_balls, material: Material = PEEK_CF30) -> Cage:
+    """A `Cage` for `bearing` (SI units), with the geometry a drawing may leave out filled in:
+    land bore d_land = d_m + 0.8 D_w (a B7005-class outer-ring shoulder) and land spacing
+    s = D_w + L (the lands just outside the pockets). Checks that an outer-lock pocket's mouth,
+    where the sphere meets the cage's outer surface, is narrower than the ball (else the pocket
+    would not lock) and that the balls fit the pockets; ValueError names the parameter."""
+    if land_diameter is None:
+        land_diameter = bearing.pitch_diameter + 0.8 * bearing.ball_diameter
+    if land_spacing is None:
+        land_spacing = bearing.ball_diameter + land_width
+    count = bearing.ball_count
+    for name, value in (("pushing_balls", pushing_balls), ("resisting_balls", resisting_balls)):
+        check_range(f"cage.{name}", value, low=0.0, high=float(count), low_open=False, high_open=False,
+                    why="bearing.balls")
+    if _is_concrete(pushing_balls, resisting_balls):
+        check_range("cage.resisting_balls", resisting_balls, high=float(count - pushing_balls), high_open=False,
+                    why="bearing.balls − cage.pushing_balls")
+    if pocket == "outer_lock" and _is_concrete(land_diameter, guide_clearance, pocket_clearance, bearing.ball_diameter):
+        ball_radius = 0.5 * float(bearing.ball_diameter)
+        pocket_radius = ball_radius + 0.5 * float(pocket_clearance)
+        lowest = math.sqrt(max(pocket_radius**2 - ball_radius**2, 0.0))
+        check_range("cage.land_diameter", land_diameter, low=float(bearing.pitch_diameter + guide_clearance) + 2 * lowest,
+                    high=float(bearing.pitch_diameter + bearing.ball_diameter), unit=" m",
+                    why="the outer-lock mouth √(R_pok² − (R_cage − d_m/2)²) must be narrower than the ball, "
+                        "and the land inside the outer raceway")
+    return Cage(pocket_clearance=pocket_clearance, guide_clearance=guide_clearance, land_width=land_width,
+                land_diameter=land_diameter, land_spacing=land_spacing, friction=friction,
+                film_threshold=film_threshold, contact_stiffness=contact_stiffness, pushing_balls=pushing_balls,
+                resisting_balls=resisting_balls, material=material, pocket=pocket)

@@ -13,11 +13,12 @@ import tomllib
 from pathlib import Path
 
 import jax
+import jax.numpy as jnp
 import numpy as np
 
 from . import effects as effect_registry
-from .params import (BEARING_STEEL, _as_float, LUBRICANTS, MATERIALS, Lubricant, Material, Operating, ball_bearing,
-                     check_range, wooster_pressure_viscosity)
+from .params import (BEARING_STEEL, _as_float, _is_concrete, LUBRICANTS, MATERIALS, Lubricant, Material, Operating,
+                     ball_bearing, ball_cage, check_range, wooster_pressure_viscosity)
 from .roller_geometry import RollerLoading, roller_bearing
 from .roller_profile import roller_profile
 from .schema import lookup, validate
@@ -148,8 +149,41 @@ def inputs_from_values(v: dict) -> effect_registry.SceneInputs:
         force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
         axial_displacement=v.get("operating.axial_displacement"),
     )
+    cage, offset = _cage(v, bearing, operating) if v.get("effects.cage", False) is not False else (None, None)
     return effect_registry.SceneInputs(bearing=bearing, operating=operating, lubricant=_lubricant(v),
-                                       roughness=_roughness(v))
+                                       roughness=_roughness(v), cage=cage, cage_offset=offset)
+
+
+def _cage(v: dict, bearing, operating):
+    """(Cage, centre offset (x, y) [m]) of a [cage] table. Pushing and resisting balls default to
+    the balls inside and outside the Sjövall load zone; given counts must fit in it."""
+    from .cage_forces import loaded_ball_count
+
+    for key in ("pocket_clearance", "guide_clearance", "land_width"):
+        if f"cage.{key}" not in v:
+            raise ValueError(f"effects.cage needs cage.{key}")
+    loaded = loaded_ball_count(bearing, operating.force)
+    count = bearing.ball_count
+    pushing = v.get("cage.pushing_balls", loaded)
+    resisting = v.get("cage.resisting_balls", count - loaded)
+    if _is_concrete(loaded, pushing, resisting):
+        zone = f"of the {int(loaded)} balls in the Sjövall load zone of operating.force"
+        check_range("cage.pushing_balls", pushing, low=1.0, high=float(loaded), low_open=False, high_open=False,
+                    why=f"balls that push are {zone}")
+        check_range("cage.resisting_balls", resisting, low=0.0, high=float(count - loaded), low_open=False,
+                    high_open=False, why=f"balls that resist are outside it ({count - int(loaded)} balls)")
+    optional = {name: v[f"cage.{name}"] for name in ("land_diameter", "land_spacing", "film_threshold", "contact_stiffness")
+                if f"cage.{name}" in v}
+    cage = ball_cage(bearing, pocket=v.get("cage.pocket", "outer_lock"), pocket_clearance=v["cage.pocket_clearance"],
+                     guide_clearance=v["cage.guide_clearance"], land_width=v["cage.land_width"],
+                     friction=v.get("cage.friction", 0.1), pushing_balls=pushing, resisting_balls=resisting, **optional)
+    eccentricity = v.get("cage.eccentricity", 0.0)
+    check_range("cage.eccentricity", eccentricity, low=0.0, low_open=False,
+                why="the cage offset over the radial guide clearance; above 1 the cage presses into the land")
+    force = jnp.asarray(operating.force)
+    direction = jnp.arctan2(force[1], force[0]) + v.get("cage.offset_angle", 0.0)
+    offset = eccentricity * 0.5 * cage.guide_clearance * jnp.stack([jnp.cos(direction), jnp.sin(direction)])
+    return cage, offset
 
 
 def _roughness(v: dict):
@@ -244,6 +278,8 @@ def build_model(scene: Scene) -> Model:
     if scene.bearing_type in effect_registry.ROLLER_TYPES and settings["effects"].get("film", False) is not False:
         effect_registry.film_settings(settings, inputs)
         effect_registry.starvation_settings(settings, inputs)
+    if settings["effects"].get("cage", False) is not False:
+        effect_registry.cage_settings(inputs)
     if settings["effects"].get("film", False) is not False and inputs.lubricant is None:
         raise ValueError("effects.film needs a [lubricant] table (lubricant.preset or lubricant.viscosity)")
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,

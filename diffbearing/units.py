@@ -19,6 +19,7 @@ SI_UNITS = {
     "viscosity": "Pa*s",
     "density": "kg/m^3",
     "inverse_pressure": "1/Pa",
+    "stiffness": "N/m",
     "dimensionless": "",
 }
 

@@ -1,0 +1,135 @@
+"""Cage forces under combined guidance (issue 6, seed 000): land bearings, pocket contact, the
+restoring force f_inv and the paper's trends through the CLI."""
+
+import json
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+from scipy.integrate import quad
+
+from diffbearing import cli
+from diffbearing.cage_forces import cage_forces
+from diffbearing.cage_lands import land_force
+from diffbearing.cage_pocket import circumferential_force, seat_ball
+from diffbearing.params import Lubricant, Operating, ball_bearing, ball_cage
+
+from .helpers import assert_jvp_matches_central_difference
+
+# B7005-class internal geometry of ../shared/scenes/seed000_cage_b7005.toml; the cage geometry
+# a scene leaves out is `ball_cage`'s default (land bore d_m + 0.8 D_w, land spacing D_w + L).
+B7005 = ball_bearing(ball_diameter=5.556e-3, pitch_diameter=36e-3, balls=17, inner_groove_ratio=0.52,
+                     outer_groove_ratio=0.53, contact_angle=np.radians(15.0))
+OIL = Lubricant(0.01, 2e-8, 870.0)
+GUIDE_RADIAL_CLEARANCE = 0.12e-3
+
+
+def seed000_forces(pocket="outer_lock", rpm=20000.0, pocket_clearance=0.26e-3, pushing=3, resisting=4):
+    """(x, y) [m] → CageForces of the seed 000 bearing."""
+    cage = ball_cage(B7005, pocket=pocket, pocket_clearance=pocket_clearance, guide_clearance=0.24e-3,
+                     land_width=2e-3, pushing_balls=pushing, resisting_balls=resisting)
+    operating = Operating(rpm * np.pi / 30.0, 0.0, [1120.0, 0.0, 400.0], [0.0, 0.0])
+    return lambda offset: cage_forces(cage, B7005, operating, OIL, offset)
+
+
+def offset_at(eccentricity, degrees):
+    angle = np.radians(degrees)
+    return eccentricity * GUIDE_RADIAL_CLEARANCE * jnp.array([np.cos(angle), np.sin(angle)])
+
+
+def test_land_force_is_the_integral_of_the_short_bearing_pressure():
+    """Ocvirk's closed forms against a quadrature of the short-bearing (half-Sommerfeld) pressure
+    (Hamrock, Schmid & Jacobson, Fundamentals of Fluid Film Lubrication, ch. 10). Cage offset e
+    along +x, turning at +ω: with φ measured from the thinnest film against the rotation, the gap
+    is h = C(1 − ε cos φ) and the positive pressure p = 3ηU ε C sin φ (L²/4 − z²)/(R h³) fills
+    0 < φ < π; on the cage it gives F_x = −∫ p cos φ dA (against the offset) and
+    F_y = +∫ p sin φ dA (a quarter turn ahead: forward whirl)."""
+    viscosity, clearance, width, radius, speed = 0.01, 0.12e-3, 2e-3, 20.1e-3, 900.0
+    for ratio in (0.1, 0.5, 0.8, 0.95):
+        surface = radius * speed
+
+        def pressure_integral(weight):
+            def integrand(phi):
+                gap = clearance * (1.0 - ratio * np.cos(phi))
+                return 3 * viscosity * surface * ratio * clearance * np.sin(phi) / (radius * gap**3) * weight(phi)
+            return quad(integrand, 0.0, np.pi, epsabs=0, epsrel=1e-12)[0] * width**3 / 6.0 * radius
+
+        force, _, _, contact = land_force(jnp.array([ratio * clearance, 0.0]), clearance, width, radius, speed, 0.0,
+                                          viscosity, 1e-9, 3e7, 0.1)
+        np.testing.assert_allclose(np.asarray(force), [-pressure_integral(np.cos), pressure_integral(np.sin)],
+                                   rtol=1e-9)
+        assert float(contact) == 0.0
+
+
+@pytest.fixture(scope="module")
+def restoring_and_jacobian():
+    """(x, y) [m] → (f_inv [N], ∂F_xy/∂(x, y) [N/m]) of the seed 000 outer-lock cage, compiled once."""
+    forces = seed000_forces()
+
+    def planar(offset):
+        return forces(offset).force[:2]
+
+    return jax.jit(lambda offset: (forces(offset).restoring_force, jax.jacfwd(planar)(offset)))
+
+
+@pytest.mark.parametrize("eccentricity", [0.0, 0.6, 0.999, 1.0, 1.3])
+def test_cage_force_and_gradient_stay_finite_up_to_and_into_the_land(restoring_and_jacobian, eccentricity):
+    """Hard case: the short-bearing force diverges as ε → 1; below the 1 µm film threshold
+    (ε_t = 0.99167) a metal contact takes over, so the force and its Jacobian are finite at the
+    centred cage, at contact (ε = 1) and pressed 36 µm into the land (ε = 1.3)."""
+    value, jacobian = restoring_and_jacobian(offset_at(eccentricity, 240.0))
+    assert np.isfinite(float(value)) and np.all(np.isfinite(np.asarray(jacobian)))
+    if eccentricity >= 1.0:  # in metal contact the land stiffness (2 × 3e7 N/m) dominates
+        assert float(-jnp.trace(jacobian)) > 2 * 3e7
+
+
+def test_land_force_is_continuous_where_metal_contact_takes_over():
+    """At ε_t = 1 − h_t/C the held film force plus a vanishing metal contact equals the film force
+    from below (continuity), and beyond it the force grows by k_m per metre of extra approach."""
+    clearance, threshold, stiffness = 0.12e-3, 1e-6, 3e7
+    limit = clearance - threshold
+
+    def normal_force(offset):
+        return -float(land_force(jnp.array([offset, 0.0]), clearance, 2e-3, 20.1e-3, 900.0, 0.0, 0.01, threshold,
+                                 stiffness, 0.1)[0][0])
+
+    below, above = normal_force(limit * (1 - 1e-12)), normal_force(limit * (1 + 1e-12))
+    assert above == pytest.approx(below, rel=1e-8)
+    assert normal_force(limit + 1e-6) - above == pytest.approx(stiffness * 1e-6, rel=1e-6)
+
+
+@pytest.mark.parametrize("sphere_offset, axial_offset", [(0.0, 0.0), (80e-6, 0.0), (130e-6, 0.0), (150e-6, 20e-6)])
+def test_seated_ball_carries_the_prescribed_circumferential_force(sphere_offset, axial_offset):
+    """`seat_ball` solves Q(δ) n_y(δ) = F to rounding, also where the pocket holds the ball
+    radially (x_s ≥ R_pok − R_b = 130 µm: the rigid-pocket force F/n_y would be infinite). There,
+    at 0.05 N, δ − δ_lo ≈ 1e-12 m rides on δ_lo = 21 µm, so δ itself carries F to ~3e-9 only."""
+    play, stiffness = 130e-6, 4.8e9
+    for force in (0.05, 1.2, 40.0):
+        approach = seat_ball(force, sphere_offset, axial_offset, play, stiffness)
+        carried = circumferential_force(approach, sphere_offset, axial_offset, play, stiffness)
+        assert float(carried) == pytest.approx(force, rel=1e-8)
+        assert 0 <= float(approach) < 1e-4
+
+
+def test_cage_at_rest_feels_no_force_and_has_finite_gradients():
+    """At zero speed there is no drag, no film and no push: every force is exactly zero, and the
+    derivative with respect to speed is finite."""
+    def restoring(rpm):
+        return seed000_forces(rpm=rpm)(offset_at(0.8, 240.0)).restoring_force
+
+    assert float(restoring(0.0)) == 0.0
+    assert np.isfinite(float(jax.grad(restoring)(0.0)))
+
+
+def test_restoring_force_derivatives_match_central_differences():
+    """f_inv and the resultant (F_x, F_y) against offset (x, y) [µm], diametral pocket clearance
+    [µm] and inner-ring speed [krpm], forward and reverse, at the seed 000 point (ε = 0.8, 240°)."""
+    def forces(p):
+        solved = seed000_forces(rpm=p[3] * 1e3, pocket_clearance=p[2] * 1e-6)(p[:2] * 1e-6)
+        return jnp.concatenate([solved.restoring_force[None], solved.force[:2]])
+
+    point = jnp.concatenate([offset_at(0.8, 240.0) * 1e6, jnp.array([260.0, 20.0])])
+    function = jax.jit(forces)
+    for direction in jnp.eye(4):
+        assert_jvp_matches_central_difference(function, point, direction, step=1e-4, rtol=1e-6, atol=1e-9)
