@@ -134,11 +134,80 @@ def plot_finite_line_film(result, figure):
     figure.suptitle(f"{result.model.scene.title}: finite line EHL, {len(x)} × {len(y)} half-domain grid")
 
 
+def restoring_force_against_offset_angle(inputs, angles):
+    """f_inv [N] (pocket kind × angle) of the scene's cage at its eccentricity, for offset angles
+    `angles` [rad] from the radial load direction, outer-lock and cylindrical pockets (vmapped)."""
+    import dataclasses
+
+    from .cage_forces import cage_forces
+
+    operating = inputs.operating
+    distance = jnp.linalg.norm(inputs.cage_offset)
+    load_direction = jnp.arctan2(operating.force[1], operating.force[0])
+    rows = []
+    for pocket in ("outer_lock", "cylindrical"):
+        cage = dataclasses.replace(inputs.cage, pocket=pocket)
+
+        def restoring(angle, cage=cage):
+            direction = load_direction + angle
+            offset = distance * jnp.stack([jnp.cos(direction), jnp.sin(direction)])
+            return cage_forces(cage, inputs.bearing, operating, inputs.lubricant, offset).restoring_force
+
+        rows.append(jax.jit(jax.vmap(restoring))(jnp.asarray(angles)))
+    return np.asarray(rows)
+
+
+def plot_cage_forces(result, figure):
+    """The cage in its radial plane with the force of each ball and of the lands, and f_inv against
+    the offset angle for both pocket kinds at the scene's eccentricity (the paper's Fig. 9)."""
+    values, inputs = result.values, result.model.inputs
+    bearing = inputs.bearing
+    cage_axis, angle_axis = figure.subplots(1, 2)
+    pitch = 0.5 * float(bearing.pitch_diameter) * 1e3
+    azimuth = np.arctan2(float(inputs.operating.force[1]), float(inputs.operating.force[0])) + 2 * np.pi * np.arange(
+        bearing.ball_count) / bearing.ball_count
+    circle = np.linspace(0, 2 * np.pi, 200)
+    cage_axis.plot(pitch * np.cos(circle), pitch * np.sin(circle), color="grey", lw=0.8)
+    forces = np.asarray(values["cage.pocket_forces"])
+    scale = 0.25 * pitch / max(np.abs(forces[:, :2]).max(), 1e-12)  # ball forces; the resultant is drawn at 0.5 d_m/2
+    for j, psi in enumerate(azimuth):
+        x, y = pitch * np.cos(psi), pitch * np.sin(psi)
+        role = "push" if values["cage.pushing"][j] > 0 else ("resist" if values["cage.resisting"][j] > 0 else "")
+        colour = {"push": "tab:red", "resist": "tab:blue", "": "lightgrey"}[role]
+        cage_axis.plot(x, y, "o", color=colour, ms=7)
+        if role:
+            cage_axis.arrow(x, y, forces[j, 0] * scale, forces[j, 1] * scale, color=colour, width=0.15,
+                            length_includes_head=True)
+    total = np.asarray(values["cage.force"])
+    length = 0.5 * pitch / max(np.hypot(total[0], total[1]), 1e-12)
+    cage_axis.arrow(0, 0, total[0] * length, total[1] * length, color="k", width=0.3, length_includes_head=True,
+                    label=f"resultant {np.hypot(total[0], total[1]):.3g} N (direction)")
+    offset = np.asarray(values["cage.offset"])
+    cage_axis.plot(*(offset / max(np.hypot(*offset), 1e-12) * 0.25 * pitch), "x", color="tab:green", ms=9,
+                   label=f"offset direction ({np.hypot(*offset) * 1e6:.3g} µm)")
+    cage_axis.plot([], [], "o", color="tab:red", label="pushing ball (force on cage)")
+    cage_axis.plot([], [], "o", color="tab:blue", label="resisting ball")
+    cage_axis.set(aspect="equal", xlabel="x [mm] (radial load along +x)", ylabel="y [mm]",
+                  title=f"forces on the cage; f_inv = {float(values['cage.restoring_force']):.3g} N")
+    cage_axis.legend(fontsize=7, loc="lower left")
+    angles = np.radians(np.arange(0.0, 360.0, 5.0))
+    outer_lock, cylindrical = restoring_force_against_offset_angle(inputs, angles)
+    angle_axis.plot(np.degrees(angles), outer_lock, label="outer-lock pocket")
+    angle_axis.plot(np.degrees(angles), cylindrical, "--", label="cylindrical pocket")
+    angle_axis.axhline(0.0, color="grey", lw=0.8)
+    angle_axis.set(xlabel="offset angle from the radial load [deg]", ylabel="restoring force f_inv [N]",
+                   title=f"f_inv at ε = {float(np.hypot(*offset) / (0.5 * float(inputs.cage.guide_clearance))):.2g}, "
+                         f"{float(values['cage.speed']) * 30 / np.pi:.0f} r/min cage")
+    angle_axis.grid(alpha=0.3)
+    angle_axis.legend()
+    figure.suptitle(f"{result.model.scene.title}")
+
+
 # Block name → plot; the last block of a run that has one draws the figure.
 PLOTS = {"raceway_contact": plot_hertz_load_curves, "roller_contact_slices": plot_contact_pressure,
          "roller_contact_influence": plot_contact_pressure, "film_line": plot_line_film,
          "starvation_line": plot_line_film, "film_finite_line": plot_finite_line_film,
-         "starvation_finite_line": plot_finite_line_film}
+         "starvation_finite_line": plot_finite_line_film, "cage": plot_cage_forces}
 
 
 def save_plot(result, path: str) -> None:
