@@ -6,7 +6,8 @@ bearing axis, x and y radial; ball j sits at azimuth ψ_j = φ_F + 2πj/Z on the
 (θx, θy) (small angles). Assumptions of the paper:
 
 1. steady rotation: the cage turns at the epicyclic speed ω_c = ω_o + (ω_i − ω_o)(1 − γ)/2,
-   γ = D_w cos α/d_m, and its spin is in moment balance;
+   γ = D_w cos α/d_m, its spin in moment balance on the pitch circle (item 3; the radial parts of
+   the wall normals and the friction leave a small M_z, which `moment` reports);
 2. balls in the load zone push the cage, the others resist it: `cage.pushing_balls` m balls
    nearest the load direction push, `cage.resisting_balls` n balls nearest the opposite
    direction resist (load zone by the Sjövall integrals, J_r/J_a = F_r tan α/F_a);

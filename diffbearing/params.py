@@ -308,7 +308,8 @@ def ball_cage(bearing: BallBearing, *, pocket: str = "outer_lock", pocket_cleara
     land bore d_land = d_m + 0.8 D_w (a B7005-class outer-ring shoulder) and land spacing
     s = D_w + L (the lands just outside the pockets). Checks that an outer-lock pocket's mouth,
     where the sphere meets the cage's outer surface, is narrower than the ball (else the pocket
-    would not lock) and that the balls fit the pockets; ValueError names the parameter."""
+    would not lock) and that the pushing and resisting counts fit the bearing; ValueError names
+    the parameter."""
     if land_diameter is None:
         land_diameter = bearing.pitch_diameter + 0.8 * bearing.ball_diameter
     if land_spacing is None:

@@ -167,11 +167,11 @@ def _cage(v: dict, bearing, operating):
     pushing = v.get("cage.pushing_balls", loaded)
     resisting = v.get("cage.resisting_balls", count - loaded)
     if _is_concrete(loaded, pushing, resisting):
-        zone = f"of the {int(loaded)} balls in the Sjövall load zone of operating.force"
         check_range("cage.pushing_balls", pushing, low=1.0, high=float(loaded), low_open=False, high_open=False,
-                    why=f"balls that push are {zone}")
+                    why=f"pushing balls are among the {int(loaded)} balls in the Sjövall load zone of operating.force")
         check_range("cage.resisting_balls", resisting, low=0.0, high=float(count - loaded), low_open=False,
-                    high_open=False, why=f"balls that resist are outside it ({count - int(loaded)} balls)")
+                    high_open=False, why=f"resisting balls are among the {count - int(loaded)} balls outside "
+                                         "the Sjövall load zone of operating.force")
     optional = {name: v[f"cage.{name}"] for name in ("land_diameter", "land_spacing", "film_threshold", "contact_stiffness")
                 if f"cage.{name}" in v}
     cage = ball_cage(bearing, pocket=v.get("cage.pocket", "outer_lock"), pocket_clearance=v["cage.pocket_clearance"],

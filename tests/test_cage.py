@@ -209,3 +209,10 @@ def test_seed000_outer_lock_beats_cylindrical_at_most_offset_angles(seed000_cli,
                             for a in angles])
     capsys.readouterr()
     assert np.mean(outer_lock > cylindrical) > 0.5
+
+
+def test_more_pushing_balls_than_the_load_zone_holds_exits_2(shared_scenes, capsys):
+    """Bad input: 12 pushing balls where the Sjövall load zone of the scene's load holds 11."""
+    code = cli.main(["run", str(shared_scenes / "seed000_cage_b7005.toml"), "--set", "cage.pushing_balls=12"])
+    error = capsys.readouterr().err
+    assert code == 2 and "cage.pushing_balls" in error and "11 balls in the Sjövall load zone" in error
