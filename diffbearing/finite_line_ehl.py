@@ -44,7 +44,7 @@ from .hertz import line_contact
 from .influence import love_rectangle
 from .line_ehl import (INLET, OUTLET, FluidParameters, fischer_burmeister, line_film,
                        reynolds_coefficients)
-from .numerics import require_float64, safe_sqrt
+from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 2500
@@ -141,11 +141,9 @@ def _newton_with_fallback(function, unknowns, steps: int, largest_change):
 
 def _box_complementarity(position, lower, upper, excess):
     """Zero exactly when lower ≤ position ≤ upper with excess = 0 inside, excess ≤ 0 at the lower
-    bound and excess ≥ 0 at the upper one (Billups' nesting of Fischer–Burmeister functions)."""
-    def fb(a, b):
-        return a + b - safe_sqrt(a**2 + b**2)
-
-    return fb(position - lower, -fb(upper - position, excess))
+    bound and excess ≥ 0 at the upper one (Billups' nesting of Fischer–Burmeister functions,
+    φ(a, b) = a + b − √(a² + b²) = `fischer_burmeister(a, −b)`)."""
+    return fischer_burmeister(position - lower, fischer_burmeister(upper - position, -excess))
 
 
 def reynolds_from_meniscus(pressure, mass, flow, dry_flow, transverse, spacing, cells_from_meniscus, meniscus_mass,
@@ -266,7 +264,6 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         flux = jnp.sum(jnp.where(first, cells[1:] * face_flux[2:-1] + (1 - cells[1:]) * face_flux[3:], 0.0), axis=0)
         return jnp.concatenate([result, _box_complementarity(meniscus, INLET, highest_meniscus,
                                                              flux / supply - 1.0)])
-
 
     def unpack(unknowns):
         interior = (nx - 2) * ny
