@@ -88,16 +88,19 @@ def ball_roles(ball_count: int, pushing_balls, resisting_balls):
 def loaded_ball_count(bearing: BallBearing, force):
     """Balls inside the Sjövall load zone for the load [Fx, Fy, Fz] [N], ball 0 on the load line
     (a float count; traceable)."""
-    half_zone = load_zone_half_angle(load_zone_parameter(_load_ratio(bearing, jnp.asarray(force))))
     angles = 2.0 * np.pi * np.arange(bearing.ball_count) / bearing.ball_count
-    return jnp.sum(jnp.abs(np.angle(np.exp(1j * angles))) <= half_zone).astype(float)
+    return jnp.sum(jnp.abs(np.angle(np.exp(1j * angles))) <= load_zone_half(bearing, force)).astype(float)
 
 
-def _load_ratio(bearing: BallBearing, force):
+def load_zone_half(bearing: BallBearing, force):
+    """ψ_l [rad], half the Sjövall load zone for the load [Fx, Fy, Fz] [N]: J_r/J_a = F_r tan α/F_a,
+    clipped to (0.6, 1) (every ball loaded below, a single one above)."""
+    force = jnp.asarray(force)
     radial = safe_norm(force[:2])
     axial = jnp.abs(force[2])
     ratio = radial * jnp.tan(bearing.free_contact_angle) / jnp.where(axial > 0, axial, 1.0)
-    return jnp.clip(jnp.where(axial > 0, ratio, _RATIO_RANGE[1]), *_RATIO_RANGE)
+    ratio = jnp.clip(jnp.where(axial > 0, ratio, _RATIO_RANGE[1]), *_RATIO_RANGE)
+    return load_zone_half_angle(load_zone_parameter(ratio))
 
 
 def cage_forces(cage: Cage, bearing: BallBearing, operating: Operating, lubricant: Lubricant, offset,
@@ -122,11 +125,11 @@ def cage_forces(cage: Cage, bearing: BallBearing, operating: Operating, lubrican
     swing = half_spacing * jnp.stack([tilt[1], -tilt[0]])
     clearance = 0.5 * cage.guide_clearance
     cage_radius = 0.5 * (cage.land_diameter - cage.guide_clearance)
-    lands = [land_force(offset + sign * swing, clearance, cage.land_width, cage_radius, cage_speed,
-                        operating.outer_speed, lubricant.viscosity, cage.film_threshold, cage.contact_stiffness,
-                        cage.friction) for sign in (-1.0, 1.0)]
-    land_forces = jnp.stack([land[0] for land in lands])
-    land_torque = lands[0][1] + lands[1][1]
+    land_forces, land_torques, land_eccentricity, land_contact = jax.vmap(
+        lambda sign: land_force(offset + sign * swing, clearance, cage.land_width, cage_radius, cage_speed,
+                                operating.outer_speed, lubricant.viscosity, cage.film_threshold,
+                                cage.contact_stiffness, cage.friction))(jnp.array([-1.0, 1.0]))
+    land_torque = jnp.sum(land_torques)
 
     pushing, resisting = ball_roles(count, cage.pushing_balls, cage.resisting_balls)
     push = (cage.resisting_balls * drag * pitch_radius - rotation * land_torque) / (
@@ -165,9 +168,8 @@ def cage_forces(cage: Cage, bearing: BallBearing, operating: Operating, lubrican
               + jnp.array([0.0, 0.0, 1.0]) * land_torque)
     distance = safe_norm(offset)
     direction = jnp.where(distance > 0, offset / jnp.where(distance > 0, distance, 1.0), 0.0)
-    half_zone = load_zone_half_angle(load_zone_parameter(_load_ratio(bearing, operating.force)))
     return CageForces(
         restoring_force=-(force[:2] @ direction), force=force, moment=moment, land_force=land_forces,
-        land_eccentricity=jnp.stack([land[2] for land in lands]), land_contact=jnp.stack([land[3] for land in lands]),
-        pocket_forces=pocket_forces, pushing=pushing, resisting=resisting, drag=drag, push=push,
-        load_zone=2.0 * half_zone, cage_speed=cage_speed)
+        land_eccentricity=land_eccentricity, land_contact=land_contact, pocket_forces=pocket_forces,
+        pushing=pushing, resisting=resisting, drag=drag, push=push,
+        load_zone=2.0 * load_zone_half(bearing, operating.force), cage_speed=cage_speed)

@@ -216,3 +216,23 @@ def test_more_pushing_balls_than_the_load_zone_holds_exits_2(shared_scenes, caps
     code = cli.main(["run", str(shared_scenes / "seed000_cage_b7005.toml"), "--set", "cage.pushing_balls=12"])
     error = capsys.readouterr().err
     assert code == 2 and "cage.pushing_balls" in error and "11 balls in the Sjövall load zone" in error
+
+
+@pytest.mark.parametrize("eccentricity", [0.8, 1.1])
+def test_cage_moment_land_and_pocket_force_derivatives_match_central_differences(eccentricity):
+    """The other differentiable cage outputs — moment, land forces, eccentricities and metal
+    contact, each ball's force, the push — against offset (x, y) [µm] and tilt (θx, θy) [mrad],
+    forward and reverse, in full film (ε = 0.8) and pressed into the land (ε = 1.1)."""
+    cage = ball_cage(B7005, pocket_clearance=0.26e-3, guide_clearance=0.24e-3, land_width=2e-3, pushing_balls=3,
+                     resisting_balls=4)
+    operating = Operating(20000.0 * np.pi / 30.0, 0.0, [1120.0, 0.0, 400.0], [0.0, 0.0])
+
+    def outputs(p):
+        solved = cage_forces(cage, B7005, operating, OIL, p[:2] * 1e-6, p[2:] * 1e-3)
+        return jnp.concatenate([solved.moment * 1e3, solved.land_force.ravel(), solved.land_eccentricity,
+                                solved.land_contact, solved.pocket_forces.ravel(), solved.push[None]])
+
+    point = jnp.concatenate([offset_at(eccentricity, 240.0) * 1e6, jnp.array([0.3, -0.2])])
+    function = jax.jit(outputs)
+    for direction in jnp.eye(4):
+        assert_jvp_matches_central_difference(function, point, direction, step=1e-4, rtol=1e-6, atol=1e-8)
