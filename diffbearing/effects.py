@@ -24,7 +24,7 @@ from . import ball_equilibrium, film_formulas, hertz, life
 from .cage_forces import cage_forces
 from .params import BallBearing, Cage, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
-from .finite_line_ehl import check_grid, finite_line_film
+from .finite_line_ehl import finite_line_film, half_domain_grid
 from .line_ehl import check_nodes, density_ratio, line_film
 from .roller_contact import roller_contact
 from .roller_geometry import ROLLER_KINDS, RollerBearing, RollerLoading, equivalent_radius, film_length, roller_modulus
@@ -524,14 +524,15 @@ register(Block(
 
 
 # The finite line level (film = "finite_line"): the 2-D EHL of the whole roller length, half
-# domain, on fidelity.grid = [nx, ny] (`finite_line_ehl.check_grid`).
-DEFAULT_FINITE_LINE_GRID = (33, 48)
+# domain, on fidelity.grid = [nx, ny]: nx nodes along rolling by ny cells along the whole roller,
+# of which the ⌈ny/2⌉ on y ≥ 0 are solved (`finite_line_ehl.half_domain_grid`).
+DEFAULT_FINITE_LINE_GRID = (33, 96)
 
 
 def finite_line_settings(settings: dict) -> tuple[int, int]:
-    """(nx, ny) of the finite line level: fidelity.grid, default [33, 48]; ValueError beyond the
-    dense Newton's size."""
-    return check_grid(settings["fidelity"].get("grid", DEFAULT_FINITE_LINE_GRID))
+    """(nx, ny on the half domain) of the finite line level from fidelity.grid (whole roller
+    length), default [33, 96]; ValueError beyond the dense Newton's size."""
+    return half_domain_grid(settings["fidelity"].get("grid", DEFAULT_FINITE_LINE_GRID))
 
 
 def _finite_line(inputs: SceneInputs, settings: dict, oil_layer=None):

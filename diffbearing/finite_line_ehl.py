@@ -24,15 +24,19 @@ discrete equations are made continuous in its position (`reynolds_from_meniscus`
 bounded to [inlet, outlet − Δ/2] by a box complementarity: at the inlet the column is flooded, at
 the upper bound no full film forms (the crowned ends, where the gap exceeds the oil layer).
 
-Solver: a dense Jacobian (jacfwd), Newton with Armijo backtracking and a Levenberg–Marquardt
-fallback where the piecewise smooth equations stall it, the meniscus moving at most a cell per
-step; from the 1-D line solution (starved alike) extruded along the flat; inside
-`lax.custom_root`, so the derivatives are implicit (checked against central differences on
-17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ 2500 unknowns; measured times and
-films in `benchmarks/finite_line_ehl.py`. Finer grids need a matrix-free Newton–Krylov (not
-built). At seed 003's 2471 N, Newton on 33 × 48 does not converge and the result says so (a load
-continuation, tried, reached a discrete solution with h < 0 at the end constriction: the grid is
-too coarse there, so it was left out).
+Solver: Newton with a dense Jacobian, assembled as J = ∂F/∂u|_H + (∂F/∂H)·K from colored
+forward derivatives of the column-local equations and the influence matrix K
+(`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
+was 3× slower on 65 × 65); Armijo backtracking and a Levenberg–Marquardt fallback where the
+piecewise smooth equations stall it, the meniscus moving at most a cell per step; from the 1-D
+line solution (starved alike) extruded along the flat; inside `lax.custom_root`, so the
+derivatives are implicit (checked against central differences on 17 × 16 flooded and 25 × 16
+starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
+1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
+`fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
+are solved (`half_domain_grid`). At seed 003's 2471 N, Newton on 33 × 48 and 65 × 65 does not
+converge and the result says so (a load continuation, tried, reached a discrete solution with
+h < 0 at the end constriction, so it was left out).
 """
 
 import equinox as eqx
@@ -47,7 +51,7 @@ from .line_ehl import (INLET, OUTLET, FluidParameters, fischer_burmeister, line_
 from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
-MAX_UNKNOWNS = 2500
+MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
 NEWTON_STEPS = 60  # seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
 
@@ -80,15 +84,31 @@ def axial_cells(count: int, flat_end, roller_end):
 
 
 def check_grid(grid) -> tuple[int, int]:
-    """ValueError unless (nx, ny) fits the dense Newton: nx ≥ 17, ny ≥ 8, (nx − 2)·ny ≤ MAX_UNKNOWNS."""
+    """(nx, ny) of the half domain; ValueError unless the dense Newton takes it: nx ≥ 17 nodes
+    along rolling, ny ≥ 8 cells on y ≥ 0, (nx − 2)·ny ≤ MAX_UNKNOWNS."""
     nx, ny = (int(n) for n in grid)
     if nx < 17 or ny < 8 or (nx - 2) * ny > MAX_UNKNOWNS:
-        raise ValueError(f"fidelity.grid: the finite-line EHL (dense Newton) needs nx ≥ 17, ny ≥ 8 and (nx − 2)·ny ≤ "
-                         f"{MAX_UNKNOWNS}, got {[nx, ny]} ((nx − 2)·ny = {(nx - 2) * ny}); e.g. [33, 48]")
+        raise ValueError(f"grid: the finite-line EHL (dense Newton, half domain) needs nx ≥ 17, ny ≥ 8 and "
+                         f"(nx − 2)·ny ≤ {MAX_UNKNOWNS}, got {[nx, ny]} ((nx − 2)·ny = {(nx - 2) * ny})")
     return nx, ny
 
 
-def _newton_with_fallback(function, unknowns, steps: int, largest_change):
+def half_domain_grid(grid) -> tuple[int, int]:
+    """(nx, ⌈ny/2⌉): a grid of nx nodes along rolling by ny cells along the whole roller length
+    (a scene's `fidelity.grid`), solved on the half y ≥ 0 by symmetry; ValueError, naming
+    `fidelity.grid`, unless the half fits the dense Newton (`check_grid`)."""
+    nx, ny = (int(n) for n in grid)
+    half = (ny + 1) // 2
+    try:
+        return check_grid((nx, half))
+    except ValueError:
+        raise ValueError(f"fidelity.grid = [nx, ny] (nodes along rolling, cells along the whole roller; half solved "
+                         f"by symmetry): the finite-line EHL (dense Newton) needs nx ≥ 17, ny ≥ 15 and "
+                         f"(nx − 2)·⌈ny/2⌉ ≤ {MAX_UNKNOWNS}, got {[nx, ny]} ((nx − 2)·⌈ny/2⌉ = {(nx - 2) * half}); "
+                         f"e.g. [65, 129]") from None
+
+
+def _newton_with_fallback(function, jacobian_of, unknowns, steps: int, largest_change):
     """Damped Newton (Armijo backtracking on ½‖F‖², dense Jacobian) for a piecewise smooth F: where
     the Newton direction gives no decrease (a kink of the complementarity or of the meniscus
     switching nodes), Levenberg–Marquardt steps (JᵀJ + μ diag JᵀJ) d = −JᵀF with μ raised ×10
@@ -104,7 +124,7 @@ def _newton_with_fallback(function, unknowns, steps: int, largest_change):
         return 0.5 * jnp.sum(function(point) ** 2)
 
     def improve(current, residual, start):
-        jacobian = jax.jacfwd(function)(current)
+        jacobian = jacobian_of(current)
 
         def too_long(length):
             return (~(merit(current + length * newton_direction) <= (1.0 - 1e-4 * length) * start)) & (length > 1e-4)
@@ -176,6 +196,47 @@ def reynolds_from_meniscus(pressure, mass, flow, dry_flow, transverse, spacing, 
     return jnp.where(s > 1, wet, jnp.where(first, s_first * wet, dry))
 
 
+def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
+    """Jacobian [-] of column-local equations under elastic coupling, by coloring.
+
+    `local(interior, height, meniscus)` → (R, ny): the equations of column j depend on the
+    interior pressure P (nx − 2, ny) and the film H (nx, ny) of columns j − 1, j, j + 1 only, and
+    on the meniscus of column j; H = H₀ + K·P with `influence` K = ∂H/∂P (nx, ny, nx − 2, ny),
+    dense. Forward derivatives with one tangent per x row and per column class j mod 3
+    (Curtis–Powell–Reid coloring) give ∂F/∂P|_H and ∂F/∂H exactly in 3(2nx − 2) + 4 passes of the
+    local equations; J = ∂F/∂P|_H + (∂F/∂H)·K then follows by contracting ∂F/∂H with the three
+    columns of K it touches — about 3·R·nx²·ny² operations instead of the (nx·ny)³ of one
+    forward pass per unknown through K.
+
+    Returns (∂F/∂P (ny, R, nx − 2, ny) indexed [j, r, a, b] for equation (r, j) and unknown
+    P[a, b]; ∂F/∂H₀ (R, ny) for a uniform film offset; ∂F[r, j]/∂X_m,j (R, ny))."""
+    rows, ny = interior.shape
+    nx = height.shape[0]
+    _, linear = jax.linearize(local, interior, height, meniscus)
+    columns = jnp.arange(ny)
+    colour = columns % 3
+    in_class = (colour[None, :] == jnp.arange(3)[:, None]).astype(interior.dtype)  # (3, ny)
+
+    def seeds(count):  # [c, i] → the unit tangent on row i of every column of class c
+        return jnp.eye(count)[None, :, :, None] * in_class[:, None, None, :]
+
+    zero_p, zero_h, zero_m = jnp.zeros_like(interior), jnp.zeros_like(height), jnp.zeros_like(meniscus)
+    by_pressure = jax.vmap(jax.vmap(lambda tangent: linear(tangent, zero_h, zero_m)))(seeds(rows))  # [c, a, r, j]
+    by_height = jax.vmap(jax.vmap(lambda tangent: linear(zero_p, tangent, zero_m)))(seeds(nx))  # [c, i, r, j]
+    by_meniscus = jax.vmap(lambda tangent: linear(zero_p, zero_h, tangent))(in_class)  # [c, r, j]
+    offset_column = linear(zero_p, jnp.ones_like(height), zero_m)
+    jacobian = jnp.zeros((ny, by_pressure.shape[2], rows, ny), interior.dtype)
+    for shift in (-1, 0, 1):  # equation column j, unknown column j + shift: the one of its class
+        neighbour = columns + shift
+        inside = ((neighbour >= 0) & (neighbour < ny))[:, None, None]
+        neighbour = jnp.clip(neighbour, 0, ny - 1)
+        by_film = by_height[neighbour % 3, :, :, columns] * inside  # [j, i, r]: ∂F[r, j]/∂H[i, j + shift]
+        jacobian = jacobian + jnp.einsum("jir,ijab->jrab", by_film, influence[:, neighbour])
+        direct = by_pressure[neighbour % 3, :, :, columns] * inside  # [j, a, r]
+        jacobian = jacobian.at[columns, :, :, neighbour].add(jnp.transpose(direct, (0, 2, 1)))
+    return jacobian, offset_column, by_meniscus[colour, :, columns].T
+
+
 def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile: RollerProfile,
                      length, flat_length, grid=(33, 48), viscosity_law="roelands",
                      density_law="dowson_higginson", tolerance=1e-10, oil_layer=None) -> FiniteLineFilm:
@@ -230,9 +291,9 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         elastic = (kernel @ pressure.reshape(-1)).reshape(nx, ny)
         return offset + 0.5 * jnp.asarray(x)[:, None] ** 2 + profile_film[None, :] + elastic
 
-    def residual(unknowns):
-        pressure, offset, meniscus = unpack(unknowns)
-        height = film(pressure, offset)
+    def equations(pressure, height, meniscus):
+        """The local equations, (R, ny) with R = nx − 2 (+ 1 when starved): the Reynolds
+        complementarity of each interior node, then the meniscus equation of each column."""
         density, flow = reynolds_coefficients(pressure, height, fluid)
         # the meniscus of each column: cells from it to each node, the gap and ε there (p = 0)
         cells = (jnp.asarray(x)[:, None] - jnp.clip(meniscus, INLET, highest_meniscus)[None, :]) / spacing
@@ -248,11 +309,9 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         dry_flow = reynolds_coefficients(jnp.zeros_like(height), height, fluid)[1]
         reynolds = reynolds_from_meniscus(pressure, density * height, flow, dry_flow, poiseuille_y[1:-1], spacing,
                                           cells, meniscus_height, meniscus_flow)
-        equations = fischer_burmeister(pressure[1:-1], reynolds)
-        balance = (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
-        result = jnp.append(equations.reshape(-1), balance)
+        complementarity = fischer_burmeister(pressure[1:-1], reynolds)
         if not starved:
-            return result
+            return complementarity
         # mass across the meniscus: ρ̄H − ε ∂P/∂X of the full film = H_oil, taken where the
         # wedge term is in flux form (second-order upwind face values (3m_i − m_{i−1})/2), on
         # the faces k + 3/2 and k + 5/2 after the first wet node k, weighted s_k and 1 − s_k so
@@ -262,8 +321,42 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         face_flux = upwind - 0.5 * (flow[1:] + flow[:-1]) * jnp.diff(pressure, axis=0) / spacing
         face_flux = jnp.concatenate([face_flux, jnp.repeat(height[-1:], 3, axis=0)])  # past the outlet: the gap
         flux = jnp.sum(jnp.where(first, cells[1:] * face_flux[2:-1] + (1 - cells[1:]) * face_flux[3:], 0.0), axis=0)
-        return jnp.concatenate([result, _box_complementarity(meniscus, INLET, highest_meniscus,
-                                                             flux / supply - 1.0)])
+        meniscus_equation = _box_complementarity(meniscus, INLET, highest_meniscus, flux / supply - 1.0)
+        return jnp.concatenate([complementarity, meniscus_equation[None, :]])
+
+    def balance(pressure):
+        return (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
+
+    def residual(unknowns):
+        """Residual [-]: the Reynolds complementarity at the interior nodes (row-major, x first),
+        the load balance, then (starved) the meniscus equation of each column."""
+        pressure, offset, meniscus = unpack(unknowns)
+        local = equations(pressure, film(pressure, offset), meniscus)
+        result = jnp.append(local[:nx - 2].reshape(-1), balance(pressure))
+        return jnp.concatenate([result, local[nx - 2]]) if starved else result
+
+    def jacobian(unknowns):
+        """∂residual/∂unknowns [-], dense, assembled as J = ∂F/∂u|_H + (∂F/∂H)·K rather than by
+        one forward pass per unknown through the influence matrix K (`local_and_elastic_jacobian`)."""
+        pressure, offset, meniscus = unpack(unknowns)
+        blocks, offset_column, meniscus_diagonal = local_and_elastic_jacobian(
+            lambda interior, height, menisci: equations(jnp.pad(interior, ((1, 1), (0, 0))), height, menisci),
+            pressure[1:-1], film(pressure, offset), meniscus, kernel.reshape(nx, ny, nx, ny)[:, :, 1:-1, :])
+        interior = (nx - 2) * ny
+        rows = blocks.shape[1]  # nx − 2, or nx − 1 with the meniscus equations
+        # rows (r, j) → equation order: Reynolds r < nx − 2 row-major, the balance, the menisci
+        by_row = jnp.transpose(blocks, (1, 0, 2, 3)).reshape(rows * ny, interior)
+        pressure_columns = jnp.concatenate([by_row[:interior], jax.grad(balance)(pressure)[None, 1:-1].reshape(1, -1),
+                                            by_row[interior:]])
+        offset_column = jnp.concatenate([offset_column[:nx - 2].reshape(-1), jnp.zeros(1),
+                                         offset_column[nx - 2:].reshape(-1)])
+        matrix = jnp.concatenate([pressure_columns, offset_column[:, None]], axis=1)
+        if not starved:
+            return matrix
+        meniscus_columns = jnp.concatenate([
+            (meniscus_diagonal[:nx - 2, :, None] * jnp.eye(ny)[None]).reshape(interior, ny), jnp.zeros((1, ny)),
+            jnp.diag(meniscus_diagonal[nx - 2])])
+        return jnp.concatenate([matrix, meniscus_columns], axis=1)
 
     def unpack(unknowns):
         interior = (nx - 2) * ny
@@ -289,7 +382,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
 
     solution = jax.lax.custom_root(
         residual, fixed(guess),
-        solve=lambda function, guess: _newton_with_fallback(function, guess, NEWTON_STEPS, largest_change),
+        solve=lambda function, guess: _newton_with_fallback(function, jacobian, guess, NEWTON_STEPS,
+                                                            largest_change),
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
     error = jnp.max(jnp.abs(residual(fixed(solution))))
     pressure, offset, meniscus = unpack(solution)

@@ -94,7 +94,8 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "race_control": Key("choice", choices=("outer", "inner"), doc="raceway control hypothesis of the ball kinematics"),
         "hertz_constants": Key("choice", choices=("contact_angle", "free_contact_angle"),
                                doc="Hertz constants of the ball contacts at their current angle or at α0"),
-        "grid": Key("integers", length=2, doc="[nx, ny] cells along rolling and along the roller"),
+        "grid": Key("integers", length=2,
+                    doc="[nx, ny] cells along rolling and along the whole roller (2-D EHL solves the half y ≥ 0)"),
         "tolerance": Key("number"),
     },
     "profile": {

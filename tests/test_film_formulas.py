@@ -190,7 +190,7 @@ def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, shar
 
 
 def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scenes):
-    """Seed 003 at the finite line level on a 33 × 48 half-domain grid (physics.md §4, 1028 N,
+    """Seed 003 at the finite line level on a 33 × 96 grid (48 cells on the half domain; physics.md §4, 1028 N,
     1000 r/min): the flooded central film within 5 % of the paper's 1.207 µm; the minimum at the
     end constriction, just past the flat's end (6.35 mm), for both films ("minimum sits at the
     roller ends"); starved by h_oil = 0.8 µm, the minimum film within 15 % of the paper's
@@ -198,7 +198,7 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scene
     conservation, as in the line contact); Er > 1 %; each y cell has its meniscus ahead of the
     Hertz zone or, past the crown's start, none (the upper bound: no full film forms)."""
     path = tmp_path / "finite_line.json"
-    code = cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 48]",
+    code = cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
                      "--json", str(path)])
     out = capsys.readouterr().out
     assert code == 0 and "finite line EHL (starved by the oil layer, a meniscus per y cell" in out
@@ -217,12 +217,29 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scene
     assert np.all(meniscus[y < 6.0e-3] < -1.2 * half_width) and np.all(meniscus[y > 6.6e-3] > 0)
 
 
-def test_seed003_as_published_asks_for_a_grid_the_dense_newton_can_take(capsys, shared_scenes):
-    """The public scene's grid [65, 129] (8127 unknowns) is beyond the dense Newton: exit 2 with
-    a one-line message naming fidelity.grid, its limit and a grid that works."""
-    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml")]) == 2
+def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys, shared_scenes):
+    """A grid whose half domain is beyond the dense Newton ([129, 257]: 127 × 129 = 16383
+    unknowns) exits 2 with a one-line message naming fidelity.grid, its limit and a grid that works."""
+    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[129, 257]"]) == 2
     message = capsys.readouterr().err
-    assert "fidelity.grid" in message and "(nx − 2)·ny ≤ 2500" in message and "[33, 48]" in message
+    assert "fidelity.grid" in message and "(nx − 2)·⌈ny/2⌉ ≤ 4200" in message and "[65, 129]" in message
+
+
+@pytest.mark.slow
+def test_seed003_as_published_through_the_cli(tmp_path, shared_scenes):
+    """The public scene as written (grid [65, 129]: 65 × 65 on the half domain, 1028 N,
+    h_oil = 0.8 µm): both Newton solves converge; the flooded central film within 5 % of the
+    paper's 1.207 µm and the starved minimum within 15 % of its 0.319 µm (physics.md §4), at the
+    roller end; Er > 1 % (starved at 0.8 µm)."""
+    path = tmp_path / "published.json"
+    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--json", str(path)]) == 0
+    values = json.loads(path.read_text())
+    film, starvation = values["film"], values["starvation"]
+    assert film["converged"] is True and starvation["converged"] is True
+    assert np.shape(film["pressure"]) == (65, 65)
+    assert film["central"] == pytest.approx(1.207e-6, rel=0.05)
+    assert starvation["minimum"] == pytest.approx(0.319e-6, rel=0.15)
+    assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3 and starvation["relative_error"] > 0.01
 
 
 def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path, shared_scenes):
