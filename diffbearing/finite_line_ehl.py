@@ -34,9 +34,10 @@ derivatives are implicit (checked against central differences on 17 × 16 floode
 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
 1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
-are solved (`half_domain_grid`). At seed 003's 2471 N, Newton on 33 × 48 and 65 × 65 does not
-converge and the result says so (a load continuation, tried, reached a discrete solution with
-h < 0 at the end constriction, so it was left out).
+are solved (`half_domain_grid`). Starved at 0.8 µm, Newton does not converge at seed 003's
+2471 N (33 × 48 and 65 × 65) nor at 1607 N on 65 × 65, and the result says so: the iterate has
+h < 0 at the end constriction, where the cells are too coarse (a load continuation, tried,
+reached such a discrete solution, so it was left out).
 """
 
 import equinox as eqx
