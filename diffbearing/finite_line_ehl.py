@@ -341,14 +341,12 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         one forward pass per unknown through the influence matrix K (`local_and_elastic_jacobian`)."""
         pressure, offset, meniscus = unpack(unknowns)
         blocks, offset_column, meniscus_diagonal = local_and_elastic_jacobian(
-            lambda interior, height, menisci: equations(jnp.pad(interior, ((1, 1), (0, 0))), height, menisci),
-            pressure[1:-1], film(pressure, offset), meniscus, kernel.reshape(nx, ny, nx, ny)[:, :, 1:-1, :])
-        interior = (nx - 2) * ny
+            lambda inner, height, menisci: equations(jnp.pad(inner, ((1, 1), (0, 0))), height, menisci),
+            pressure[1:-1], film(pressure, offset), meniscus, influence)
         rows = blocks.shape[1]  # nx − 2, or nx − 1 with the meniscus equations
         # rows (r, j) → equation order: Reynolds r < nx − 2 row-major, the balance, the menisci
         by_row = jnp.transpose(blocks, (1, 0, 2, 3)).reshape(rows * ny, interior)
-        pressure_columns = jnp.concatenate([by_row[:interior], jax.grad(balance)(pressure)[None, 1:-1].reshape(1, -1),
-                                            by_row[interior:]])
+        pressure_columns = jnp.concatenate([by_row[:interior], balance_row, by_row[interior:]])
         offset_column = jnp.concatenate([offset_column[:nx - 2].reshape(-1), jnp.zeros(1),
                                          offset_column[nx - 2:].reshape(-1)])
         matrix = jnp.concatenate([pressure_columns, offset_column[:, None]], axis=1)
@@ -359,8 +357,12 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             jnp.diag(meniscus_diagonal[nx - 2])])
         return jnp.concatenate([matrix, meniscus_columns], axis=1)
 
+    # constant parts of the Jacobian: ∂H/∂P at the interior nodes, the (linear) load balance row
+    influence = kernel.reshape(nx, ny, nx, ny)[:, :, 1:-1, :]
+    balance_row = jax.grad(balance)(jnp.zeros((nx, ny)))[1:-1].reshape(1, -1)
+    interior = (nx - 2) * ny
+
     def unpack(unknowns):
-        interior = (nx - 2) * ny
         pressure = jnp.pad(unknowns[:interior].reshape(nx - 2, ny), ((1, 1), (0, 0)))
         meniscus = unknowns[interior + 1:] if starved else jnp.full(ny, INLET)
         return pressure, unknowns[interior], meniscus
