@@ -132,3 +132,29 @@ def ball_spin(relative_speed, pitch_diameter, ball_diameter, contact_angle):
     ratio = ball_diameter * jnp.cos(contact_angle) / pitch_diameter
     magnitude = pitch_diameter / (2.0 * ball_diameter) * (1.0 - ratio**2) * relative_speed
     return magnitude * jnp.stack([-jnp.sin(contact_angle), jnp.zeros_like(contact_angle), -jnp.cos(contact_angle)])
+
+
+def pocket_impact_force(ball_offset, approach_rate, pocket_radius, ball_radius, spin, friction, stiffness, damping,
+                        kind: str):
+    """(force on the cage [N], contact point [m]), both (radial, circumferential) in the pocket
+    frame, of a ball whose centre sits at `ball_offset` (x_b, y_b) [m] from the pocket centre in
+    the cage's mid-plane and approaches the wall at `approach_rate` δ̇ [m/s]: the dynamic,
+    penetration-based counterpart of `seat_ball` + `pocket_force` (cage_dynamics.py).
+
+    Approach δ = ρ − (R_pok − R_b), ρ = |(x_s, y_b)| (module docstring); normal force
+    Hunt–Crossley Q = K δ^{3/2} max(1 + α δ̇, 0) with damping α [s/m] (`damping`; Hunt & Crossley,
+    J. Appl. Mech. 42, 1975), along n = (x_s, y_b)/ρ; Coulomb friction μQ along the in-plane part
+    of the wall sliding ω_b × (R_b n), as in `pocket_force`. Zero where the ball is free."""
+    radial, circumferential = ball_offset
+    sphere_offset = radial_distance_on_sphere(radial, kind)
+    distance = safe_norm(jnp.stack([sphere_offset, circumferential]))
+    approach = distance - (pocket_radius - ball_radius)
+    touching = distance > 0
+    normal = jnp.where(touching, jnp.stack([sphere_offset, circumferential]) / jnp.where(touching, distance, 1.0), 0.0)
+    load = stiffness * positive_power(approach, 1.5) * jnp.maximum(1.0 + damping * approach_rate, 0.0)
+    sliding = jnp.cross(spin, ball_radius * jnp.stack([normal[0], normal[1], 0.0]))
+    speed = safe_norm(sliding)
+    drag_direction = jnp.where(speed > 0, sliding[:2] / jnp.where(speed > 0, speed, 1.0), 0.0)
+    force = load * (normal + friction * drag_direction)
+    contact = jnp.stack([radial - sphere_offset, 0.0]) + pocket_radius * normal
+    return force, contact

@@ -21,7 +21,9 @@ import jax
 import jax.numpy as jnp
 
 from . import ball_equilibrium, film_formulas, hertz, life
+from .cage_dynamics import epicyclic_cage_speed, simulate_cage
 from .cage_forces import cage_forces
+from .cage_stability import cage_stability
 from .params import BallBearing, Cage, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
 from .finite_line_ehl import finite_line_film, half_domain_grid
@@ -47,6 +49,7 @@ class SceneInputs(eqx.Module):
     roughness: jax.Array | None = None  # composite RMS roughness √(σ₁² + σ₂²) [m] of the contacting surfaces
     cage: Cage | None = None
     cage_offset: jax.Array | None = None  # (x, y) of the cage centre from the bearing axis [m]
+    cage_duration: jax.Array | None = None  # time simulated by effects.cage = "dynamics" [s]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -715,4 +718,59 @@ register(Block(
         Output("cage.offset", "m", "um", "cage centre offset (x, y)"),
     ),
     compute=_cage,
+))
+
+# Cage dynamics (effect cage = "dynamics"): the orbit from the scene's cage offset, its stability
+# measures (cage_dynamics.py), and the linear whirl stability at the quasi-static equilibrium
+# (cage_stability.py).
+
+ORBIT_SAMPLES = 1024
+
+
+def default_cage_duration(inputs: SceneInputs):
+    """Ten revolutions of the epicyclic cage [s] (0.1 s at rest)."""
+    speed = jnp.abs(epicyclic_cage_speed(inputs.bearing, inputs.operating))
+    return jnp.where(speed > 0, 20.0 * jnp.pi / jnp.where(speed > 0, speed, 1.0), 0.1)
+
+
+def _cage_dynamics(inputs: SceneInputs, settings: dict, results: dict) -> dict:
+    duration = default_cage_duration(inputs) if inputs.cage_duration is None else inputs.cage_duration
+    orbit = simulate_cage(inputs.cage, inputs.bearing, inputs.operating, inputs.lubricant, inputs.cage_offset,
+                          duration, ORBIT_SAMPLES)
+    stability = cage_stability(inputs.cage, inputs.bearing, inputs.operating, inputs.lubricant)
+    return {"cage.orbit.t": orbit.t, "cage.orbit.x": orbit.centre[:, 0], "cage.orbit.y": orbit.centre[:, 1],
+            "cage.orbit.converged": orbit.converged, "cage.orbit.land_contact": orbit.land_contact,
+            "cage.whirl_radius": orbit.whirl_radius, "cage.mean_offset": orbit.mean_offset,
+            "cage.decay_rate": orbit.decay_rate, "cage.whirl_frequency": orbit.whirl_frequency,
+            "cage.spectrum.frequency": orbit.frequency, "cage.spectrum.amplitude": orbit.spectrum,
+            "cage.speed": orbit.cage_speed, "cage.offset": inputs.cage_offset,
+            "cage.stability.equilibrium": stability.equilibrium, "cage.stability.eccentricity": stability.eccentricity,
+            "cage.stability.decay_rate": stability.decay_rate, "cage.stability.converged": stability.converged}
+
+
+register(Block(
+    name="cage_dynamics",
+    bearing_types=BALL_TYPES,
+    enabled_by=("cage", "dynamics"),
+    requires=(),
+    outputs=(
+        Output("cage.offset", "m", "um", "cage centre offset at the start (x, y)"),
+        Output("cage.speed", "rad/s", "rpm", "epicyclic cage speed ω_m"),
+        Output("cage.orbit.converged", "", "", "the time integration reached the end"),
+        Output("cage.whirl_radius", "m", "um", "whirl radius: RMS of |c − c̄| over the second half"),
+        Output("cage.mean_offset", "m", "um", "mean cage offset |c̄| over the second half"),
+        Output("cage.decay_rate", "1/s", "1/s", "decay rate of the whirl amplitude (> 0: dies out)"),
+        Output("cage.whirl_frequency", "Hz", "Hz", "dominant whirl frequency (forward > 0)"),
+        Output("cage.stability.equilibrium", "m", "um", "equilibrium offset (x, y), quasi-static"),
+        Output("cage.stability.eccentricity", "", "", "equilibrium offset / radial guide clearance"),
+        Output("cage.stability.decay_rate", "1/s", "1/s", "linear whirl decay rate there (> 0: stable)"),
+        Output("cage.stability.converged", "", "", "the equilibrium Newton converged"),
+        Output("cage.orbit.t", "s", "ms", "orbit sample times", in_report=False),
+        Output("cage.orbit.x", "m", "um", "cage centre x(t)", in_report=False),
+        Output("cage.orbit.y", "m", "um", "cage centre y(t)", in_report=False),
+        Output("cage.orbit.land_contact", "N", "N", "metal contact force at one land over time", in_report=False),
+        Output("cage.spectrum.frequency", "Hz", "Hz", "whirl spectrum frequencies (signed)", in_report=False),
+        Output("cage.spectrum.amplitude", "m", "um", "whirl spectrum amplitude", in_report=False),
+    ),
+    compute=_cage_dynamics,
 ))

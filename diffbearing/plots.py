@@ -203,11 +203,44 @@ def plot_cage_forces(result, figure):
     figure.suptitle(f"{result.model.scene.title}")
 
 
+def plot_cage_orbit(result, figure):
+    """The cage centre's orbit in the radial plane inside its guide clearance and the whirl
+    spectrum of its second half (effect cage = "dynamics")."""
+    values, inputs = result.values, result.model.inputs
+    orbit_axis, spectrum_axis = figure.subplots(1, 2)
+    x, y = np.asarray(values["cage.orbit.x"]) * 1e6, np.asarray(values["cage.orbit.y"]) * 1e6
+    circle = np.linspace(0, 2 * np.pi, 200)
+    guide = 0.5 * float(inputs.cage.guide_clearance) * 1e6
+    orbit_axis.plot(guide * np.cos(circle), guide * np.sin(circle), color="grey", lw=1.0,
+                    label=f"guide clearance C = {guide:.0f} µm (radial)")
+    half = len(x) // 2
+    orbit_axis.plot(x[:half + 1], y[:half + 1], color="tab:blue", lw=0.6, alpha=0.5, label="first half")
+    orbit_axis.plot(x[half:], y[half:], color="tab:red", lw=0.8, label="second half (measured)")
+    orbit_axis.plot(x[0], y[0], "o", color="k", ms=5, label="start")
+    equilibrium = np.asarray(values["cage.stability.equilibrium"]) * 1e6
+    orbit_axis.plot(*equilibrium, "x", color="tab:green", ms=9, label="quasi-static equilibrium (prescribed roles)")
+    orbit_axis.set(aspect="equal", xlabel="x [µm] (radial load along +x)", ylabel="y [µm]",
+                   title=f"cage orbit: whirl radius {float(values['cage.whirl_radius']) * 1e6:.3g} µm, "
+                         f"{float(values['cage.orbit.t'][-1]) * 1e3:.3g} ms")
+    orbit_axis.legend(fontsize=7, loc="lower left")
+    frequency = np.asarray(values["cage.spectrum.frequency"])
+    spectrum_axis.plot(frequency, np.asarray(values["cage.spectrum.amplitude"]) * 1e6)
+    cage_hz = float(values["cage.speed"]) / (2 * np.pi)
+    for multiple in (-1, 1):
+        spectrum_axis.axvline(multiple * cage_hz, color="grey", ls=":", lw=0.8)
+    spectrum_axis.set(xlabel="whirl frequency [Hz] (forward > 0; dotted: ± cage speed)", ylabel="amplitude [µm]",
+                      xlim=(-12 * max(cage_hz, 1.0), 12 * max(cage_hz, 1.0)),
+                      title=f"whirl spectrum: peak at {float(values['cage.whirl_frequency']):.4g} Hz")
+    spectrum_axis.grid(alpha=0.3)
+    figure.suptitle(f"{result.model.scene.title}")
+
+
 # Block name → plot; the last block of a run that has one draws the figure.
 PLOTS = {"raceway_contact": plot_hertz_load_curves, "roller_contact_slices": plot_contact_pressure,
          "roller_contact_influence": plot_contact_pressure, "film_line": plot_line_film,
          "starvation_line": plot_line_film, "film_finite_line": plot_finite_line_film,
-         "starvation_finite_line": plot_finite_line_film, "cage": plot_cage_forces}
+         "starvation_finite_line": plot_finite_line_film, "cage": plot_cage_forces,
+         "cage_dynamics": plot_cage_orbit}
 
 
 def save_plot(result, path: str) -> None:

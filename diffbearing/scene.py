@@ -150,8 +150,12 @@ def inputs_from_values(v: dict) -> effect_registry.SceneInputs:
         axial_displacement=v.get("operating.axial_displacement"),
     )
     cage, offset = _cage(v, bearing, operating) if v.get("effects.cage", False) is not False else (None, None)
+    duration = v.get("cage.duration")
+    if duration is not None:
+        check_range("cage.duration", duration, low=0.0, unit=" s")
     return effect_registry.SceneInputs(bearing=bearing, operating=operating, lubricant=_lubricant(v),
-                                       roughness=_roughness(v), cage=cage, cage_offset=offset)
+                                       roughness=_roughness(v), cage=cage, cage_offset=offset,
+                                       cage_duration=None if duration is None else _as_float(duration))
 
 
 def _cage(v: dict, bearing, operating):

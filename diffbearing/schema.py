@@ -129,6 +129,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
         "offset_angle": _q("angle", "from the radial load direction"),
         "pushing_balls": Key("integer", doc="default: the balls in the load zone"),
         "resisting_balls": Key("integer", doc="default: the balls outside the load zone"),
+        "duration": _q("time", "time simulated by effects.cage = 'dynamics'; default 10 cage revolutions"),
     },
 }
 

@@ -20,6 +20,7 @@ SI_UNITS = {
     "density": "kg/m^3",
     "inverse_pressure": "1/Pa",
     "stiffness": "N/m",
+    "time": "s",
     "dimensionless": "",
 }
 
