@@ -10,6 +10,9 @@ from .ball_equilibrium import (
     solve_equilibrium as solve_equilibrium,
     stiffness_matrix as stiffness_matrix,
 )
+from .cage_dynamics import CageOrbit as CageOrbit, DynamicsSettings as DynamicsSettings, simulate_cage as simulate_cage
+from .cage_forces import CageForces as CageForces, cage_forces as cage_forces
+from .cage_stability import CageStability as CageStability, cage_stability as cage_stability
 from .elliptic import complete_elliptic_integrals as complete_elliptic_integrals
 from .hertz import (
     LineContact as LineContact,
@@ -38,10 +41,12 @@ from .params import (
     BEARING_STEEL as BEARING_STEEL,
     SILICON_NITRIDE as SILICON_NITRIDE,
     BallBearing as BallBearing,
+    Cage as Cage,
     Lubricant as Lubricant,
     Material as Material,
     Operating as Operating,
     ball_bearing as ball_bearing,
+    ball_cage as ball_cage,
     iso_vg_oil as iso_vg_oil,
     radial_clearance as radial_clearance,
 )
