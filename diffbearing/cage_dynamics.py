@@ -21,9 +21,9 @@ follow from the motion:
 
 Integrator: diffrax's Tsit5 with a PID step controller on the scaled state (`state_scale`). The
 steps shrink through each pocket impact (tens of microseconds) and the squeeze film near a land,
-and open up in free flight. Measured on the seed 000 cage at 20000 r/min over 5 ms: Tsit5 took
-935 steps (0.2 s) and gave the whirl radius of Kvaerno5 (an implicit ESDIRK) to 3 × 10⁻⁶ relative,
-while Kvaerno5 took 5790 steps and 20 s — the stiffness is oscillatory (contacts), which an
+and open up in free flight. `python benchmarks/cage_whirl_ratio.py`: over 5 ms of the seed 000
+cage at 20000 r/min, Tsit5 takes 0.11 s and Kvaerno5 (an implicit ESDIRK) 20.7 s, with whirl radii
+equal to 5 × 10⁻⁶ relative — the stiffness is oscillatory (contacts), which an
 implicit scheme must resolve too. A scan of fixed steps would be held to the shortest impact
 throughout. Reverse-mode derivatives come from diffrax's checkpointed adjoint, but over many
 revolutions the orbit is an impact oscillator whose measures are not differentiable in any useful
