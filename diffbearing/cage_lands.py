@@ -121,8 +121,9 @@ def squeeze_film_force(position, velocity, clearance, width, radius, surface_spe
     of Fluid Film Lubrication*, 2nd ed., ch. 10 and §12.2), so ∫p dz = −η L³ S/h³; the film
     carries pressure where S < 0 (half-Sommerfeld), a half circle θ = π − β + φ, φ ∈ [0, π], with
     S = A sin(θ + β). The force −R ∫ ∫p dz (cos θ, sin θ) dθ is integrated over that arc.
-    At rest it is `ocvirk_force_factors` (test_cage.py); the squeeze term ∂_t h gives the land's
-    damping, and a whirl at ω_s/2 carries no load (the classical half-frequency whirl).
+    At rest it is `ocvirk_force_factors` (tests/test_cage_dynamics.py); the squeeze term ∂_t h
+    gives the land's damping, and a whirl at ω_s/2 carries no load (the classical half-frequency
+    whirl).
     """
     x, y = position
     x_rate, y_rate = velocity

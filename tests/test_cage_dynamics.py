@@ -10,7 +10,7 @@ import pytest
 
 from diffbearing import cli
 from diffbearing.cage_dynamics import DynamicsSettings, orbit_measures, simulate_cage
-from diffbearing.cage_lands import squeeze_film_force
+from diffbearing.cage_lands import land_force, squeeze_film_force
 from diffbearing.cage_stability import cage_stability
 from diffbearing.params import Operating, ball_cage
 
@@ -43,6 +43,18 @@ def test_whirling_land_film_is_the_integral_of_the_half_sommerfeld_pressure(rati
     want = -radius * np.array([np.sum(line_load * np.cos(theta)), np.sum(line_load * np.sin(theta))]) * 2 * np.pi / 400_000
     got = squeeze_film_force(jnp.asarray(position), jnp.asarray(velocity), clearance, width, radius, speeds, viscosity)
     np.testing.assert_allclose(np.asarray(got), want, rtol=1e-6)
+
+
+@pytest.mark.parametrize("ratio", [1e-3, 0.5, 0.95, 0.99])
+def test_land_film_at_rest_is_the_ocvirk_closed_form(ratio):
+    """At zero velocity the arc quadrature equals the Ocvirk force of `land_force` (film only: a
+    threshold too thin to reach), at any offset direction, to 1e-11 relative."""
+    clearance, width, radius, viscosity, speed = 0.12e-3, 2e-3, 20.1e-3, 0.01, 900.0
+    for angle in (0.3, 2.0, 4.5):
+        position = ratio * clearance * jnp.array([np.cos(angle), np.sin(angle)])
+        want, _, _, _ = land_force(position, clearance, width, radius, speed, 0.0, viscosity, 1e-12, 3e7, 0.1)
+        got = squeeze_film_force(position, jnp.zeros(2), clearance, width, radius, speed, viscosity)
+        np.testing.assert_allclose(np.asarray(got), np.asarray(want), rtol=1e-11)
 
 
 def test_half_frequency_whirl_carries_no_load():
