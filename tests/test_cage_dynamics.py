@@ -135,7 +135,7 @@ def stability_decay():
     return jax.jit(decay)
 
 
-@pytest.mark.parametrize("rpm", [1800.0, 20000.0])
+@pytest.mark.parametrize("rpm", [pytest.param(1800.0, marks=pytest.mark.slow), 20000.0])
 def test_stability_objective_gradient_matches_central_difference(stability_decay, rpm):
     """The design objective of the pocket-clearance notebook: d σ / d(c_p/c_g) by implicit
     differentiation through the equilibrium Newton and the eigenvalues, against a central
