@@ -36,7 +36,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 from timing import median_time  # noqa: E402
 
 from diffbearing import cage_dynamics  # noqa: E402
-from diffbearing.cage_dynamics import epicyclic_cage_speed, simulate_cage  # noqa: E402
+from diffbearing.cage_dynamics import simulate_cage  # noqa: E402
+from diffbearing.cage_forces import epicyclic_cage_speed  # noqa: E402
 from diffbearing.cage_stability import cage_stability  # noqa: E402
 from diffbearing.params import Lubricant, Operating, ball_bearing, ball_cage  # noqa: E402
 

@@ -11,7 +11,7 @@ from .ball_equilibrium import (
     stiffness_matrix as stiffness_matrix,
 )
 from .cage_dynamics import CageOrbit as CageOrbit, DynamicsSettings as DynamicsSettings, simulate_cage as simulate_cage
-from .cage_forces import CageForces as CageForces, cage_forces as cage_forces
+from .cage_forces import CageForces as CageForces, cage_forces as cage_forces, epicyclic_cage_speed as epicyclic_cage_speed
 from .cage_stability import CageStability as CageStability, cage_stability as cage_stability
 from .elliptic import complete_elliptic_integrals as complete_elliptic_integrals
 from .hertz import (

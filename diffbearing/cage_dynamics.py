@@ -41,9 +41,9 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from .cage_forces import ball_drag, load_zone_half
+from .cage_forces import ball_drag, epicyclic_cage_speed, load_zone_half
 from .cage_lands import whirling_land_force
-from .cage_pocket import ball_spin, pocket_impact_force, pocket_stiffness
+from .cage_pocket import ball_spin, pocket_impact_force, pocket_stiffness, radial_distance_on_sphere
 from .numerics import safe_norm
 from .params import BallBearing, Cage, Lubricant, Operating
 
@@ -85,7 +85,6 @@ class DynamicsSettings(eqx.Module):
 
     pocket_damping: jax.Array = eqx.field(converter=jnp.asarray, default=10.0)  # Hunt–Crossley α [s/m]
     traction_time: jax.Array = eqx.field(converter=jnp.asarray, default=5e-5)  # τ_t of the raceway hold [s]
-    cage_mass: jax.Array | None = None  # [kg]; None: `cage_mass_properties`
     rtol: float = eqx.field(static=True, default=1e-5)  # of the scaled state (`state_scale`)
     atol: float = eqx.field(static=True, default=1e-5)
     max_steps: int = eqx.field(static=True, default=200_000)
@@ -95,7 +94,7 @@ def cage_mass_properties(cage: Cage, bearing: BallBearing):
     """(mass [kg], polar moment of inertia [kg·m²]) of the cage estimated as a ring of the cage's
     material between radii R_o = (d_land − c_g)/2 and d_m − R_o, of width s + L, less Z
     cylindrical pockets of diameter D_w + c_p (about 3.7 g for the B7005-class scene)."""
-    outer = 0.5 * (cage.land_diameter - cage.guide_clearance)
+    outer = cage.outer_radius
     inner = bearing.pitch_diameter - outer
     width = cage.land_spacing + cage.land_width
     pocket_radius = 0.5 * (bearing.ball_diameter + cage.pocket_clearance)
@@ -105,10 +104,12 @@ def cage_mass_properties(cage: Cage, bearing: BallBearing):
     return mass, 0.5 * mass * (outer**2 + inner**2)
 
 
-def epicyclic_cage_speed(bearing: BallBearing, operating: Operating):
-    """ω_m = ω_o + (ω_i − ω_o)(1 − γ)/2 [rad/s], γ = D_w cos α/d_m (pure rolling)."""
-    gamma = bearing.ball_diameter * jnp.cos(bearing.free_contact_angle) / bearing.pitch_diameter
-    return operating.outer_speed + 0.5 * (operating.inner_speed - operating.outer_speed) * (1.0 - gamma)
+def cage_land_force(cage: Cage, operating: Operating, lubricant: Lubricant, position, velocity, cage_speed):
+    """`whirling_land_force` of one land for the cage centre at `position` [m] moving at
+    `velocity` [m/s], the cage turning at `cage_speed` [rad/s]: (force, torque, ε, N_m)."""
+    return whirling_land_force(position, velocity, 0.5 * cage.guide_clearance, cage.land_width, cage.outer_radius,
+                               cage_speed, operating.outer_speed, lubricant.viscosity, cage.film_threshold,
+                               cage.contact_stiffness, cage.friction)
 
 
 def cage_vector_field(t, state: CageMotion, args):
@@ -135,7 +136,7 @@ def cage_vector_field(t, state: CageMotion, args):
 
     def approach(centre, phase, lag, time):
         offset = ball_in_pocket(centre, phase, lag, time)
-        sphere = jnp.maximum(offset[:, 0], 0.0) if cage.pocket == "outer_lock" else jnp.zeros(count)
+        sphere = radial_distance_on_sphere(offset[:, 0], cage.pocket)
         return safe_norm(jnp.stack([sphere, offset[:, 1]], -1), axis=-1)
 
     positions = (state.centre, state.phase, state.ball_lag, jnp.asarray(t, float))
@@ -158,14 +159,10 @@ def cage_vector_field(t, state: CageMotion, args):
     arms = (pitch_radius + contact[:, :1]) * radial + contact[:, 1:] * tangential
     pocket_torque = jnp.sum(arms[:, 0] * pocket_forces[:, 1] - arms[:, 1] * pocket_forces[:, 0])
 
-    cage_speed = orbital + state.spin
-    land, land_torque, _, _ = whirling_land_force(
-        state.centre, state.velocity, 0.5 * cage.guide_clearance, cage.land_width,
-        0.5 * (cage.land_diameter - cage.guide_clearance), cage_speed, operating.outer_speed, lubricant.viscosity,
-        cage.film_threshold, cage.contact_stiffness, cage.friction)
+    land, land_torque, _, _ = cage_land_force(cage, operating, lubricant, state.centre, state.velocity,
+                                              orbital + state.spin)
 
     mass, inertia = cage_mass_properties(cage, bearing)
-    mass = mass if settings.cage_mass is None else settings.cage_mass
     acceleration = (jnp.sum(pocket_forces, 0) + 2.0 * land) / mass
     spin_rate = (pocket_torque + 2.0 * land_torque) / inertia
 
@@ -208,14 +205,12 @@ def simulate_cage(cage: Cage, bearing: BallBearing, operating: Operating, lubric
                                                                                   atol=settings.atol),
         max_steps=settings.max_steps, throw=False)
     states = jax.tree.map(jnp.multiply, solution.ys, scale)
-    clearance = 0.5 * cage.guide_clearance
-    land_contact = jax.vmap(lambda c, v, w: whirling_land_force(
-        c, v, clearance, cage.land_width, 0.5 * (cage.land_diameter - cage.guide_clearance), w,
-        operating.outer_speed, lubricant.viscosity, cage.film_threshold, cage.contact_stiffness,
-        cage.friction)[3])(states.centre, states.velocity, epicyclic_cage_speed(bearing, operating) + states.spin)
+    orbital = epicyclic_cage_speed(bearing, operating)
+    land_contact = jax.vmap(lambda c, v, w: cage_land_force(cage, operating, lubricant, c, v, w)[3])(
+        states.centre, states.velocity, orbital + states.spin)
     measures = orbit_measures(times, states.centre)
     return CageOrbit(t=times, centre=states.centre, spin=states.spin,
-                     cage_speed=epicyclic_cage_speed(bearing, operating), land_contact=land_contact,
+                     cage_speed=orbital, land_contact=land_contact,
                      converged=solution.result == diffrax.RESULTS.successful, **measures)
 
 

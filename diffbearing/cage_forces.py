@@ -55,6 +55,12 @@ class CageForces(eqx.Module):
     cage_speed: jax.Array  # ω_c [rad/s]
 
 
+def epicyclic_cage_speed(bearing: BallBearing, operating: Operating):
+    """ω_c = ω_o + (ω_i − ω_o)(1 − γ)/2 [rad/s], γ = D_w cos α/d_m (pure rolling)."""
+    gamma = bearing.ball_diameter * jnp.cos(bearing.free_contact_angle) / bearing.pitch_diameter
+    return operating.outer_speed + 0.5 * (operating.inner_speed - operating.outer_speed) * (1.0 - gamma)
+
+
 def ball_drag(orbital_speed, ball_diameter, density, viscosity):
     """Oil drag ½ C_D ρ v² (π D_w²/4) [N] on a ball orbiting at v [m/s] (paper eq. 16, after Deng
     et al., *Rolling bearing design principles*), C_D of a sphere by Schiller–Naumann below
@@ -116,7 +122,7 @@ def cage_forces(cage: Cage, bearing: BallBearing, operating: Operating, lubrican
     angle = bearing.free_contact_angle
 
     relative = operating.inner_speed - operating.outer_speed
-    cage_speed = operating.outer_speed + 0.5 * relative * (1.0 - bearing.ball_diameter * jnp.cos(angle) / bearing.pitch_diameter)
+    cage_speed = epicyclic_cage_speed(bearing, operating)
     rotation = jnp.sign(cage_speed)
     drag = ball_drag(cage_speed * pitch_radius, bearing.ball_diameter, lubricant.density, lubricant.viscosity)
 
@@ -124,9 +130,8 @@ def cage_forces(cage: Cage, bearing: BallBearing, operating: Operating, lubrican
     half_spacing = 0.5 * cage.land_spacing
     swing = half_spacing * jnp.stack([tilt[1], -tilt[0]])
     clearance = 0.5 * cage.guide_clearance
-    cage_radius = 0.5 * (cage.land_diameter - cage.guide_clearance)
     land_forces, land_torques, land_eccentricity, land_contact = jax.vmap(
-        lambda sign: land_force(offset + sign * swing, clearance, cage.land_width, cage_radius, cage_speed,
+        lambda sign: land_force(offset + sign * swing, clearance, cage.land_width, cage.outer_radius, cage_speed,
                                 operating.outer_speed, lubricant.viscosity, cage.film_threshold,
                                 cage.contact_stiffness, cage.friction))(jnp.array([-1.0, 1.0]))
     land_torque = jnp.sum(land_torques)

@@ -21,9 +21,8 @@ import jax.numpy as jnp
 import lineax as lx
 import optimistix as optx
 
-from .cage_dynamics import cage_mass_properties, epicyclic_cage_speed
-from .cage_forces import cage_forces
-from .cage_lands import whirling_land_force
+from .cage_dynamics import cage_land_force, cage_mass_properties
+from .cage_forces import cage_forces, epicyclic_cage_speed
 from .params import BallBearing, Cage, Lubricant, Operating
 
 EQUILIBRIUM_SOLVER = optx.Newton(rtol=1e-10, atol=1e-10)
@@ -59,10 +58,8 @@ def cage_stability(cage: Cage, bearing: BallBearing, operating: Operating, lubri
     equilibrium = clearance * solution.value
     stiffness = -jax.jacfwd(lambda c: cage_forces(cage, bearing, operating, lubricant, c).force[:2])(equilibrium)
     cage_speed = epicyclic_cage_speed(bearing, operating)
-    land_radius = 0.5 * (cage.land_diameter - cage.guide_clearance)
-    damping = -2.0 * jax.jacfwd(lambda v: whirling_land_force(
-        equilibrium, v, clearance, cage.land_width, land_radius, cage_speed, operating.outer_speed,
-        lubricant.viscosity, cage.film_threshold, cage.contact_stiffness, cage.friction)[0])(jnp.zeros(2))
+    damping = -2.0 * jax.jacfwd(
+        lambda v: cage_land_force(cage, operating, lubricant, equilibrium, v, cage_speed)[0])(jnp.zeros(2))
     mass, _ = cage_mass_properties(cage, bearing)
     system = jnp.block([[jnp.zeros((2, 2)), jnp.eye(2)], [-stiffness / mass, -damping / mass]])
     eigenvalues = jnp.linalg.eigvals(system)

@@ -21,8 +21,8 @@ import jax
 import jax.numpy as jnp
 
 from . import ball_equilibrium, film_formulas, hertz, life
-from .cage_dynamics import epicyclic_cage_speed, simulate_cage
-from .cage_forces import cage_forces
+from .cage_dynamics import simulate_cage
+from .cage_forces import cage_forces, epicyclic_cage_speed
 from .cage_stability import cage_stability
 from .params import BallBearing, Cage, Lubricant, Operating, groove_curvature_centre_distance, radial_clearance
 from .raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature

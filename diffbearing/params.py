@@ -288,6 +288,11 @@ class Cage(eqx.Module):
     material: Material = PEEK_CF30
     pocket: str = eqx.field(static=True, default="outer_lock")
 
+    @property
+    def outer_radius(self):
+        """R = (d_land − c_g)/2 [m], the cage's outer radius at the lands."""
+        return 0.5 * (self.land_diameter - self.guide_clearance)
+
     def __check_init__(self):
         if self.pocket not in CAGE_POCKETS:
             raise ValueError(f"cage.pocket must be one of {CAGE_POCKETS}, got {self.pocket!r}")

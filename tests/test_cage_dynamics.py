@@ -14,7 +14,7 @@ from diffbearing.cage_lands import land_force, squeeze_film_force
 from diffbearing.cage_stability import cage_stability
 from diffbearing.params import Operating, ball_cage
 
-from .helpers import central_difference_jvp
+from .helpers import assert_jvp_matches_central_difference, central_difference_jvp
 from .test_cage import B7005, GUIDE_RADIAL_CLEARANCE, OIL
 
 SCENE = "../shared/scenes/seed000_cage_b7005.toml"
@@ -55,6 +55,21 @@ def test_land_film_at_rest_is_the_ocvirk_closed_form(ratio):
         want, _, _, _ = land_force(position, clearance, width, radius, speed, 0.0, viscosity, 1e-12, 3e7, 0.1)
         got = squeeze_film_force(position, jnp.zeros(2), clearance, width, radius, speed, viscosity)
         np.testing.assert_allclose(np.asarray(got), np.asarray(want), rtol=1e-11)
+
+
+@pytest.mark.parametrize("ratio", [0.0, 0.5, 0.99])
+def test_whirling_land_film_derivatives_match_central_differences(ratio):
+    """d(film force)/d(position, velocity) — the land stiffness and damping of `cage_stability`
+    — forward and reverse against a central difference, at the centred cage (where the arc's
+    phase and split angles switch to their guarded branches), at ε = 0.5 and at ε = 0.99."""
+    clearance = 0.12e-3
+    point = (ratio * clearance * jnp.array([np.cos(0.7), np.sin(0.7)]), jnp.array([-0.004, 0.011]))
+    direction = (jnp.array([0.3e-6, -0.2e-6]), jnp.array([1e-3, 2e-3]))
+
+    def force(point):
+        return squeeze_film_force(point[0], point[1], clearance, 2e-3, 20.1e-3, 900.0, 0.01)
+
+    assert_jvp_matches_central_difference(force, point, direction, 1e-3, rtol=1e-6, atol=1e-12)
 
 
 def test_half_frequency_whirl_carries_no_load():
