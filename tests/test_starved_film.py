@@ -186,7 +186,8 @@ def test_starved_finite_line_hard_cases_say_so_and_stay_finite(starved_finite_li
     assert bool(jnp.all(jnp.isfinite(values))) and bool(jnp.all(jnp.isfinite(jacobian)))
 
 
-@pytest.mark.parametrize("oil_layer", [pytest.param(None, marks=pytest.mark.slow), 0.8e-6], ids=["flooded", "starved"])
+@pytest.mark.slow
+@pytest.mark.parametrize("oil_layer", [None, 0.8e-6], ids=["flooded", "starved"])
 def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_layer):
     """The Newton's Jacobian, assembled from colored local derivatives and the influence matrix
     (`local_and_elastic_jacobian`), equals jax.jacfwd of the residual to round-off (an exact
