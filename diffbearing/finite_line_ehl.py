@@ -29,15 +29,20 @@ forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
 was 3× slower on 65 × 65); Armijo backtracking and a Levenberg–Marquardt fallback where the
 piecewise smooth equations stall it, the meniscus moving at most a cell per step; from the 1-D
-line solution (starved alike) extruded along the flat; inside `lax.custom_root`, so the
+line solution (starved alike) extruded along the flat. Where that Newton fails (seed 003 starved
+at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with h < 0 at the end
+constriction), a load continuation: Newton again at 65, 80, 90 and 100 % of the load
+(`LOAD_PATH`), the first stage from the 1-D start at its load, each next from the previous
+solution; the dimensionless grid stays the full load's. Inside `lax.custom_root`, so the
 derivatives are implicit (checked against central differences on 17 × 16 flooded and 25 × 16
 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
 1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
-are solved (`half_domain_grid`). Starved at 0.8 µm, Newton does not converge at seed 003's
-2471 N (33 × 48 and 65 × 65) nor at 1607 N on 65 × 65, and the result says so: the iterate has
-h < 0 at the end constriction, where the cells are too coarse (a load continuation, tried,
-reached such a discrete solution, so it was left out).
+are solved (`half_domain_grid`). The discrete problem is not always unique at the roller end:
+1607 N on 65 × 65 converges to a minimum film of 0.273 µm through `LOAD_PATH` and to 0.230 µm
+through the stages (0.5, 0.7, 0.85, 1) (one meniscus per y cell is a simplification of the
+θ-model's partial film there). Near the flooded limit (h_oil = 1.8 µm at 1028 N) Newton and the
+continuation stall, and the result says so.
 """
 
 import equinox as eqx
@@ -53,7 +58,8 @@ from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
-NEWTON_STEPS = 60  # seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
+NEWTON_STEPS = 60  # per load stage; seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
+LOAD_PATH = (0.65, 0.8, 0.9, 1.0)  # the load continuation's stages, fractions of the load
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
 
 
@@ -240,7 +246,8 @@ def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
 
 def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile: RollerProfile,
                      length, flat_length, grid=(33, 48), viscosity_law="roelands",
-                     density_law="dowson_higginson", tolerance=1e-10, oil_layer=None) -> FiniteLineFilm:
+                     density_law="dowson_higginson", tolerance=1e-10, oil_layer=None,
+                     load_path=LOAD_PATH) -> FiniteLineFilm:
     """Isothermal EHL of a roller of finite length on its raceway (2-D, half domain), fully
     flooded or starved by an inlet oil layer.
 
@@ -253,6 +260,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             flat_length: the length b and p_h are based on [m] (the flat of a circular profile).
         grid: (nx, ny) nodes along rolling and cells along the half roller (`check_grid`).
         oil_layer: inlet oil supply layer h_oil [m], or None for fully flooded.
+        load_path: the load continuation's stages, increasing fractions of the load in (0, 1]
+            ending at 1, taken only where Newton at the load from the 1-D start fails.
 
     Starvation: each column y_j has its own inlet meniscus X_m,j, an unknown. Upstream of it the
     oil layer rides on the surfaces (the partial film of the Elrod θ-model carries u·h_oil); the
@@ -266,6 +275,9 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     """
     require_float64()
     nx, ny = check_grid(grid)
+    if not (len(load_path) > 0 and load_path[-1] == 1.0 and all(0 < a < b for a, b in zip(load_path, load_path[1:]))
+            and load_path[0] > 0):
+        raise ValueError(f"load_path: increasing load fractions in (0, 1] ending at 1.0, got {load_path}")
     starved = oil_layer is not None
     x = np.linspace(INLET, OUTLET, nx)
     spacing = x[1] - x[0]
@@ -325,15 +337,16 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         meniscus_equation = _box_complementarity(meniscus, INLET, highest_meniscus, flux / supply - 1.0)
         return jnp.concatenate([complementarity, meniscus_equation[None, :]])
 
-    def balance(pressure):
-        return (2.0 * spacing * jnp.sum(pressure * widths) - load_target) / load_target * 0.5 * np.pi
+    def balance(pressure, fraction=1.0):
+        return (2.0 * spacing * jnp.sum(pressure * widths) - fraction * load_target) / load_target * 0.5 * np.pi
 
-    def residual(unknowns):
+    def residual(unknowns, fraction=1.0):
         """Residual [-]: the Reynolds complementarity at the interior nodes (row-major, x first),
-        the load balance, then (starved) the meniscus equation of each column."""
+        the load balance (at `fraction` of the load: the continuation's stages), then (starved)
+        the meniscus equation of each column."""
         pressure, offset, meniscus = unpack(unknowns)
         local = equations(pressure, film(pressure, offset), meniscus)
-        result = jnp.append(local[:nx - 2].reshape(-1), balance(pressure))
+        result = jnp.append(local[:nx - 2].reshape(-1), balance(pressure, fraction))
         return jnp.concatenate([result, local[nx - 2]]) if starved else result
 
     def jacobian(unknowns):
@@ -367,26 +380,50 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         meniscus = unknowns[interior + 1:] if starved else jnp.full(ny, INLET)
         return pressure, unknowns[interior], meniscus
 
-    # start: the 1-D solution (starved alike) under the load per flat length, extruded over the
-    # flat and tapered off over the first half-width of the crown, scaled to the load
-    fixed = jax.lax.stop_gradient  # the start and the iterations carry no derivative
-    line = line_film(*fixed((load / flat_length, radius, speed, viscosity, pressure_viscosity, effective_modulus)),
-                     nodes=129, viscosity_law=viscosity_law, density_law=density_law, oil_layer=fixed(oil_layer))
-    line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure, left=0.0)
+    # starts, at the load and at the continuation's first stage: the 1-D solution (starved alike)
+    # under that load per flat length, extruded over the flat and tapered off over the first
+    # half-width of the crown, scaled to that load
+    fixed = jax.lax.stop_gradient  # the starts and the iterations carry no derivative
     taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
-    start = line_pressure[:, None] * taper[None, :]
-    start = start * load_target / (2.0 * spacing * jnp.sum(start * widths))
-    offset = line.central * radius / half_width**2 - film(start, 0.0)[centre, 0]
-    guess = jnp.append(start[1:-1].reshape(-1), offset)
-    if starved:
-        guess = jnp.concatenate([guess, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus)])
+    starts = []
+    for fraction in (1.0, load_path[0]):
+        line = line_film(*fixed((fraction * load / flat_length, radius, speed, viscosity, pressure_viscosity,
+                                 effective_modulus)),
+                         nodes=129, viscosity_law=viscosity_law, density_law=density_law, oil_layer=fixed(oil_layer))
+        line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure, left=0.0)
+        start = line_pressure[:, None] * taper[None, :]
+        start = start * fraction * load_target / (2.0 * spacing * jnp.sum(start * widths))
+        offset = line.central * radius / half_width**2 - film(start, 0.0)[centre, 0]
+        guess = jnp.append(start[1:-1].reshape(-1), offset)
+        if starved:
+            guess = jnp.concatenate([guess, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus)])
+        starts.append(fixed(guess))
     # the meniscus positions move at most a cell per Newton step
     largest_change = jnp.concatenate([jnp.full((nx - 2) * ny + 1, jnp.inf), jnp.full(ny if starved else 0, spacing)])
 
+    def solved(unknowns):
+        pressure, offset, _ = unpack(unknowns)
+        return (jnp.max(jnp.abs(residual(unknowns))) < tolerance) & (jnp.min(film(pressure, offset)) > 0)
+
+    def newton_then_continuation(_, guess):
+        """Newton at the load from `guess`; where that fails, Newton again through the load stages
+        `load_path`, each from the previous one's solution, the first from its own start."""
+        stage_loads = jnp.asarray((1.0, *load_path))
+
+        def stage(state):
+            index, unknowns = state
+            unknowns = jnp.where(index == 1, starts[1], unknowns)
+            return index + 1, _newton_with_fallback(lambda point: residual(point, stage_loads[index]), jacobian,
+                                                    unknowns, NEWTON_STEPS, largest_change)
+
+        def more(state):
+            index, unknowns = state
+            return (index == 0) | ((index < stage_loads.size) & ~((index == 1) & solved(unknowns)))
+
+        return jax.lax.while_loop(more, stage, (0, guess))[1]
+
     solution = jax.lax.custom_root(
-        residual, fixed(guess),
-        solve=lambda function, guess: _newton_with_fallback(function, jacobian, guess, NEWTON_STEPS,
-                                                            largest_change),
+        residual, starts[0], solve=newton_then_continuation,
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
     error = jnp.max(jnp.abs(residual(fixed(solution))))
     pressure, offset, meniscus = unpack(solution)

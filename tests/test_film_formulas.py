@@ -217,6 +217,23 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scene
     assert np.all(meniscus[y < 6.0e-3] < -1.2 * half_width) and np.all(meniscus[y > 6.6e-3] > 0)
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("load, paper_minimum", [(1607.0, 0.215e-6), (2471.0, 0.159e-6)])
+def test_seed003_heavier_loads_through_the_cli(tmp_path, shared_scenes, load, paper_minimum):
+    """Seed 003 starved by h_oil = 0.8 µm at the paper's two heavier loads on a 33 × 96 grid: both
+    Newton solves converge (at 2471 N through the load continuation), the starved minimum film is
+    within 15 % of the paper's (physics.md §4: 0.215 µm at 1607 N, 0.159 µm at 2471 N) and sits at
+    the roller end, past the flat's end (6.35 mm)."""
+    path = tmp_path / "heavier.json"
+    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
+                     "--set", f'contact.load="{load:.0f} N"', "--json", str(path)]) == 0
+    values = json.loads(path.read_text())
+    film, starvation = values["film"], values["starvation"]
+    assert film["converged"] is True and starvation["converged"] is True
+    assert starvation["minimum"] == pytest.approx(paper_minimum, rel=0.15)
+    assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3
+
+
 def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys, shared_scenes):
     """A grid whose half domain is beyond the dense Newton ([129, 257]: 127 × 129 = 16383
     unknowns) exits 2 with a one-line message naming fidelity.grid, its limit and a grid that works."""

@@ -209,4 +209,4 @@ def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_laye
     jax.block_until_ready(finite_line_ehl.finite_line_film(1028.0, SEED003_LINE["radius"], seed003_entrainment_speed(),
                                                            0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                                                            grid=(17, 9), oil_layer=oil_layer))
-    assert len(differences) == 1 and differences[0] < 1e-13
+    assert differences and max(differences) < 1e-13  # one per Newton stage run (one step each: continued)
