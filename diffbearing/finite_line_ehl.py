@@ -39,9 +39,9 @@ starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (6
 1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
 are solved (`half_domain_grid`). The discrete problem is not always unique at the roller end:
-1607 N on 65 × 65 converges to a minimum film of 0.273 µm through `LOAD_PATH` and to 0.230 µm
-through the stages (0.5, 0.7, 0.85, 1) (one meniscus per y cell is a simplification of the
-θ-model's partial film there). Near the flooded limit (h_oil = 1.8 µm at 1028 N) Newton and the
+1607 N on 65 × 65 converges to a minimum film of 0.273 µm through `LOAD_PATH` and, in a scratch
+copy of this solver, to 0.230 µm through the stages (0.5, 0.7, 0.85, 1) (one meniscus per y cell
+is a simplification of the θ-model's partial film there). Near the flooded limit (h_oil = 1.8 µm at 1028 N) Newton and the
 continuation stall, and the result says so.
 """
 
