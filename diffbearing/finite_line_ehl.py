@@ -41,8 +41,8 @@ starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (6
 are solved (`half_domain_grid`). The discrete problem is not always unique at the roller end:
 1607 N on 65 × 65 converges to a minimum film of 0.273 µm through `LOAD_PATH` and, in a scratch
 copy of this solver, to 0.230 µm through the stages (0.5, 0.7, 0.85, 1) (one meniscus per y cell
-is a simplification of the θ-model's partial film there). Near the flooded limit (h_oil = 1.8 µm at 1028 N) Newton and the
-continuation stall, and the result says so.
+is a simplification of the θ-model's partial film there). Near the flooded limit (h_oil = 1.8 µm
+at 1028 N) Newton and the continuation stall, and the result says so.
 """
 
 import equinox as eqx
@@ -275,8 +275,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     """
     require_float64()
     nx, ny = check_grid(grid)
-    if not (len(load_path) > 0 and load_path[-1] == 1.0 and all(0 < a < b for a, b in zip(load_path, load_path[1:]))
-            and load_path[0] > 0):
+    if not (load_path and load_path[-1] == 1.0 and all(a < b for a, b in zip((0.0, *load_path), load_path))):
         raise ValueError(f"load_path: increasing load fractions in (0, 1] ending at 1.0, got {load_path}")
     starved = oil_layer is not None
     x = np.linspace(INLET, OUTLET, nx)
@@ -380,13 +379,13 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         meniscus = unknowns[interior + 1:] if starved else jnp.full(ny, INLET)
         return pressure, unknowns[interior], meniscus
 
-    # starts, at the load and at the continuation's first stage: the 1-D solution (starved alike)
-    # under that load per flat length, extruded over the flat and tapered off over the first
-    # half-width of the crown, scaled to that load
     fixed = jax.lax.stop_gradient  # the starts and the iterations carry no derivative
     taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
-    starts = []
-    for fraction in (1.0, load_path[0]):
+
+    def start_at(fraction):
+        """Start at `fraction` of the load: the 1-D solution (starved alike) under that load per
+        flat length, extruded over the flat and tapered off over the first half-width of the
+        crown, scaled to that load."""
         line = line_film(*fixed((fraction * load / flat_length, radius, speed, viscosity, pressure_viscosity,
                                  effective_modulus)),
                          nodes=129, viscosity_law=viscosity_law, density_law=density_law, oil_layer=fixed(oil_layer))
@@ -397,38 +396,42 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         guess = jnp.append(start[1:-1].reshape(-1), offset)
         if starved:
             guess = jnp.concatenate([guess, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus)])
-        starts.append(fixed(guess))
+        return fixed(guess)
+
     # the meniscus positions move at most a cell per Newton step
     largest_change = jnp.concatenate([jnp.full((nx - 2) * ny + 1, jnp.inf), jnp.full(ny if starved else 0, spacing)])
 
-    def solved(unknowns):
+    def error_and_solved(unknowns):
+        """(largest residual [-], whether it is below the tolerance with a positive film)."""
         pressure, offset, _ = unpack(unknowns)
-        return (jnp.max(jnp.abs(residual(unknowns))) < tolerance) & (jnp.min(film(pressure, offset)) > 0)
+        error = jnp.max(jnp.abs(residual(unknowns)))
+        return error, (error < tolerance) & (jnp.min(film(pressure, offset)) > 0)
 
     def newton_then_continuation(_, guess):
         """Newton at the load from `guess`; where that fails, Newton again through the load stages
-        `load_path`, each from the previous one's solution, the first from its own start."""
+        `load_path`, each from the previous one's solution, the first from its own start (the
+        1-D solve for it runs only then)."""
         stage_loads = jnp.asarray((1.0, *load_path))
 
         def stage(state):
             index, unknowns = state
-            unknowns = jnp.where(index == 1, starts[1], unknowns)
+            unknowns = jax.lax.cond(index == 1, lambda: start_at(load_path[0]), lambda: unknowns)
             return index + 1, _newton_with_fallback(lambda point: residual(point, stage_loads[index]), jacobian,
                                                     unknowns, NEWTON_STEPS, largest_change)
 
         def more(state):
             index, unknowns = state
-            return (index == 0) | ((index < stage_loads.size) & ~((index == 1) & solved(unknowns)))
+            return (index == 0) | ((index < stage_loads.size) & ~((index == 1) & error_and_solved(unknowns)[1]))
 
         return jax.lax.while_loop(more, stage, (0, guess))[1]
 
     solution = jax.lax.custom_root(
-        residual, starts[0], solve=newton_then_continuation,
+        residual, start_at(1.0), solve=newton_then_continuation,
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
-    error = jnp.max(jnp.abs(residual(fixed(solution))))
+    error, converged = error_and_solved(fixed(solution))
     pressure, offset, meniscus = unpack(solution)
     thickness = film(pressure, offset) * half_width**2 / radius
     lowest = jnp.argmin(thickness)
     return FiniteLineFilm(jnp.asarray(x) * half_width, y * half_width, pressure * hertz_pressure, thickness,
                           thickness[centre, 0], thickness.reshape(-1)[lowest], y[lowest % ny] * half_width,
-                          (error < tolerance) & (jnp.min(thickness) > 0), error, meniscus * half_width)
+                          converged, error, meniscus * half_width)

@@ -210,3 +210,16 @@ def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_laye
                                                            0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                                                            grid=(17, 9), oil_layer=oil_layer))
     assert differences and max(differences) < 1e-13  # one per Newton stage run (one step each: continued)
+
+
+@pytest.mark.parametrize("load_path", [(), (0.5, 0.9), (0.8, 0.6, 1.0), (0.0, 1.0)])
+def test_finite_line_load_path_outside_its_range_raises(load_path):
+    """A load continuation path that is not increasing fractions in (0, 1] ending at 1 is a
+    ValueError naming `load_path`, raised before any solve."""
+    from diffbearing.finite_line_ehl import finite_line_film
+    from diffbearing.roller_profile import roller_profile
+
+    profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+    with pytest.raises(ValueError, match="load_path"):
+        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+                         grid=(17, 16), load_path=load_path)
