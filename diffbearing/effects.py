@@ -74,6 +74,9 @@ class Block:
     compute: Callable[[SceneInputs, dict, dict], dict]
     uses: tuple[str, ...] = ()
     only_with: tuple[str, tuple] | None = None  # (effect key, values): another effect it refines must be one of these
+    # swept point by point (`jax.lax.map`), not under `jax.vmap`: the numerical EHL solvers, whose
+    # vmapped compiled batch of 1-D line solves ran past 150 s where one solve takes 0.03 s
+    sequential_sweep: bool = False
 
 
 REGISTRY: dict[str, Block] = {}
@@ -512,6 +515,7 @@ register(Block(
 
 register(Block(
     name="film_line",
+    sequential_sweep=True,
     bearing_types=ROLLER_TYPES,
     enabled_by=("film", "line"),
     requires=("roller_geometry",),
@@ -570,6 +574,7 @@ def _finite_line_outputs(prefix: str, case: str):
 
 register(Block(
     name="film_finite_line",
+    sequential_sweep=True,
     bearing_types=ROLLER_TYPES,
     enabled_by=("film", "finite_line"),
     requires=("roller_geometry",),
@@ -633,6 +638,7 @@ register(Block(
 
 register(Block(
     name="starvation_line",
+    sequential_sweep=True,
     bearing_types=ROLLER_TYPES,
     enabled_by=("starvation", True),
     only_with=("film", ("line",)),
@@ -659,6 +665,7 @@ def _starvation_finite_line(inputs: SceneInputs, settings: dict, results: dict) 
 
 register(Block(
     name="starvation_finite_line",
+    sequential_sweep=True,
     bearing_types=ROLLER_TYPES,
     enabled_by=("starvation", True),
     only_with=("film", ("finite_line",)),

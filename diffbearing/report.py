@@ -177,7 +177,9 @@ def format_sweep_report(result) -> str:
     axes = result.sweep_axes
     shape = tuple(len(v) for v in axes.values())
     grid = f"{' × '.join(str(n) for n in shape)} = " if len(shape) > 1 else ""
-    lines += ["", f"Sweep over {grid}{int(np.prod(shape))} points ({', '.join(axes)}), one vmapped batch"]
+    batch = ("mapped point by point (iterative EHL solver)" if any(b.sequential_sweep for b in result.model.blocks)
+             else "one vmapped batch")
+    lines += ["", f"Sweep over {grid}{int(np.prod(shape))} points ({', '.join(axes)}), {batch}"]
     grids = np.meshgrid(*[np.arange(n) for n in shape], indexing="ij")
     flat_index = [g.ravel() for g in grids]
     columns = []
@@ -198,6 +200,12 @@ def format_sweep_report(result) -> str:
         columns.append(("p_max [GPa]", [_format_number(p / 1e9) for p in values["contact.max_pressure"]]))
         columns.append(("δ [µm]", [_format_number(d * 1e6) for d in values["contact.approach"]]))
         columns.append(("contact", ["converged" if c else "NO" for c in values["contact.converged"]]))
+    for prefix, name in (("film", "film"), ("starvation", "starved")):
+        if f"{prefix}.central" in values and np.ndim(values[f"{prefix}.central"]) == 1:  # roller contacts
+            columns.append((f"{name} h_c [µm]", [_format_number(h * 1e6) for h in values[f"{prefix}.central"]]))
+            columns.append((f"{name} h_min [µm]", [_format_number(h * 1e6) for h in values[f"{prefix}.minimum"]]))
+            if f"{prefix}.converged" in values:
+                columns.append((name, ["converged" if c else "NO" for c in values[f"{prefix}.converged"]]))
     if "life.L10r" in values:
         columns.append(("L10r [1e6 rev]", [_format_number(x) for x in values["life.L10r"]]))
     widths = [max(len(h), *(len(c) for c in cells)) + 2 for h, cells in columns]

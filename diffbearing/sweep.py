@@ -7,7 +7,9 @@
 Each entry is {start, stop, num} (scalars, or vectors interpolated componentwise) or an explicit
 list; several entries form a grid (first key = first axis). Each point's parameter pytrees are
 built inside the vmapped function from the swept SI values, so any numeric key can be swept; keys
-that change array shapes (`bearing.balls`) or choices cannot. The batch runs in chunks of
+that change array shapes (`bearing.balls`) or choices cannot. Blocks marked `sequential_sweep`
+(the numerical EHL solvers) are mapped over the points one after another inside the compiled
+function (`jax.lax.map`) instead. The batch runs in chunks of
 `CHUNK` points through one compiled function (a tqdm bar counts the chunks); with several JAX
 devices each chunk is sharded over them along the batch axis (`jax.sharding`). Output arrays gain
 the grid's leading axes.
@@ -86,7 +88,10 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
         values.update(swept)
         return evaluate(inputs_from_values(values))
 
-    batched = jax.jit(jax.vmap(point))
+    if any(block.sequential_sweep for block in model.blocks):  # iterative EHL solvers: one point after another
+        batched = jax.jit(lambda swept: jax.lax.map(point, swept))
+    else:
+        batched = jax.jit(jax.vmap(point))
     sharding = NamedSharding(Mesh(np.array(devices), ("batch",)), PartitionSpec("batch")) if len(devices) > 1 else None
 
     def chunk_inputs(start):

@@ -92,3 +92,21 @@ def test_sharded_sweep_matches_single_device(swept, scene_file):
     subprocess.run([sys.executable, "-c", code], check=True, env=env)
     sharded = np.load(scene_file.parent / "sharded.npy")
     np.testing.assert_allclose(sharded, swept.values["displacement"], rtol=1e-9, atol=1e-15)
+
+
+def test_sweep_of_the_starved_line_film_equals_single_runs(shared_scenes, tmp_path):
+    """A sweep through the iterative 1-D EHL solver (seed 003, line film, starved) runs its points
+    one after another (`sequential_sweep`; the vmapped batch of two solves ran past 150 s) and
+    each point equals a single run at that load."""
+    scene = tmp_path / "line_sweep.toml"
+    text = (shared_scenes / "seed003_starved_roller.toml").read_text().replace('film = "finite_line"', 'film = "line"')
+    scene.write_text(text.split("[fidelity]")[0] + '[sweep]\n"contact.load" = ["1000 N", "1600 N"]\n')
+    swept = run_model(build_model(load_scene(str(scene))), progress=False).values
+    assert swept["starvation.minimum"].shape == (2,) and np.all(swept["starvation.converged"])
+    single_scene = tmp_path / "line_single.toml"
+    single_scene.write_text(text.split("[fidelity]")[0])
+    for index, load in enumerate(("1000 N", "1600 N")):
+        single = run_model(build_model(load_scene(str(single_scene), [f'contact.load="{load}"'])),
+                           progress=False).values
+        for key in ("film.central", "starvation.central", "starvation.minimum"):
+            np.testing.assert_allclose(swept[key][index], single[key], rtol=1e-9)
