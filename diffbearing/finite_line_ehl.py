@@ -247,7 +247,7 @@ def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
 def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile: RollerProfile,
                      length, flat_length, grid=(33, 48), viscosity_law="roelands",
                      density_law="dowson_higginson", tolerance=1e-10, oil_layer=None,
-                     load_path=LOAD_PATH) -> FiniteLineFilm:
+                     load_path=LOAD_PATH, start: FiniteLineFilm | None = None) -> FiniteLineFilm:
     """Isothermal EHL of a roller of finite length on its raceway (2-D, half domain), fully
     flooded or starved by an inlet oil layer.
 
@@ -262,6 +262,11 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         oil_layer: inlet oil supply layer h_oil [m], or None for fully flooded.
         load_path: the load continuation's stages, increasing fractions of the load in (0, 1]
             ending at 1, taken only where Newton at the load from the 1-D start fails.
+        start: a solution on the same grid (a flooded one has its menisci at the inlet) to start Newton from
+            instead of the 1-D line solution: a continuation in any argument, taken in steps
+            small enough that each converges. Seed 003 at 1.8 µm (1028 N, 33 × 48), where Newton
+            from the 1-D start and the load continuation fail, converges from 2.0 µm in steps of
+            0.02 µm (2–5 Newton steps each; one step of 0.1 µm does not converge).
 
     Starvation: each column y_j has its own inlet meniscus X_m,j, an unknown. Upstream of it the
     oil layer rides on the surfaces (the partial film of the Elrod θ-model carries u·h_oil); the
@@ -425,8 +430,17 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
 
         return jax.lax.while_loop(more, stage, (0, guess))[1]
 
+    def warm_start(previous):
+        """`start`'s pressure, film offset and menisci in this solve's dimensionless variables."""
+        pressure = previous.pressure / hertz_pressure
+        offset = previous.central * radius / half_width**2 - film(pressure, 0.0)[centre, 0]
+        guess = jnp.append(pressure[1:-1].reshape(-1), offset)
+        return fixed(jnp.concatenate([guess, previous.meniscus / half_width]) if starved else guess)
+
+    if start is not None and start.pressure.shape != (nx, ny):
+        raise ValueError(f"start: a solution on the grid {(nx, ny)} (half domain), got one on {start.pressure.shape}")
     solution = jax.lax.custom_root(
-        residual, start_at(1.0), solve=newton_then_continuation,
+        residual, start_at(1.0) if start is None else warm_start(start), solve=newton_then_continuation,
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
     error, converged = error_and_solved(fixed(solution))
     pressure, offset, meniscus = unpack(solution)

@@ -223,3 +223,33 @@ def test_finite_line_load_path_outside_its_range_raises(load_path):
     with pytest.raises(ValueError, match="load_path"):
         finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                          grid=(17, 16), load_path=load_path)
+
+
+@pytest.mark.slow
+def test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivative():
+    """A Newton started from a neighbouring solution (`start=`, 17 × 16, starved at 0.85 µm, solved
+    at 0.8 µm) converges to the solution from the 1-D start, films and menisci to 1e-8, and gives
+    the same ∂h_min/∂h_oil (the start is not differentiated; the derivative is the implicit one)."""
+    from diffbearing.finite_line_ehl import finite_line_film
+    from diffbearing.roller_profile import roller_profile
+
+    profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+
+    def solve(oil_layer, start=None):  # oil layer [µm]
+        return finite_line_film(1028.0, SEED003_LINE["radius"], seed003_entrainment_speed(), 0.08, 2.2e-8, 2.26e11,
+                                profile, 14.7e-3, 12.7e-3, grid=(17, 16), oil_layer=oil_layer * 1e-6, start=start)
+
+    cold = jax.jit(solve)(0.8)
+    neighbour = jax.jit(solve)(0.85)
+    warm = jax.jit(solve)(0.8, neighbour)
+    assert bool(cold.converged) and bool(warm.converged)
+    assert float(neighbour.minimum) != pytest.approx(float(cold.minimum), rel=1e-3)  # the start is elsewhere
+    for name in ("central", "minimum", "meniscus", "pressure"):
+        np.testing.assert_allclose(getattr(warm, name), getattr(cold, name), rtol=1e-8, atol=1e-8 * float(
+            jnp.max(jnp.abs(getattr(cold, name)))), err_msg=name)
+    slope_cold = jax.grad(lambda h: solve(h).minimum * 1e6)(0.8)
+    slope_warm = jax.grad(lambda h: solve(h, neighbour).minimum * 1e6)(0.8)
+    assert float(slope_warm) == pytest.approx(float(slope_cold), rel=1e-8)
+    with pytest.raises(ValueError, match="start"):
+        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+                         grid=(17, 17), oil_layer=0.8e-6, start=cold)
