@@ -42,7 +42,9 @@ are solved (`half_domain_grid`). The discrete problem is not always unique at th
 1607 N on 65 × 65 converges to a minimum film of 0.273 µm through `LOAD_PATH` and, in a scratch
 copy of this solver, to 0.230 µm through the stages (0.5, 0.7, 0.85, 1) (one meniscus per y cell
 is a simplification of the θ-model's partial film there). Near the flooded limit (h_oil = 1.8 µm
-at 1028 N) Newton and the continuation stall, and the result says so.
+at 1028 N) Newton and the load continuation stall from the 1-D start, and the result says so; a
+continuation in the oil layer from 2.0 µm, each solve started from the previous one (`start`),
+reaches it.
 """
 
 import equinox as eqx
