@@ -268,7 +268,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             instead of the 1-D line solution: a continuation in any argument, taken in steps
             small enough that each converges. Seed 003 at 1.8 µm (1028 N, 33 × 48), where Newton
             from the 1-D start and the load continuation fail, converges from 2.0 µm in steps of
-            0.02 µm (2–5 Newton steps each; one step of 0.1 µm does not converge).
+            0.02 µm (about 2 s each; one step of 0.1 µm does not converge).
 
     Starvation: each column y_j has its own inlet meniscus X_m,j, an unknown. Upstream of it the
     oil layer rides on the surfaces (the partial film of the Elrod θ-model carries u·h_oil); the
@@ -284,6 +284,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     nx, ny = check_grid(grid)
     if not (load_path and load_path[-1] == 1.0 and all(a < b for a, b in zip((0.0, *load_path), load_path))):
         raise ValueError(f"load_path: increasing load fractions in (0, 1] ending at 1.0, got {load_path}")
+    if start is not None and start.pressure.shape != (nx, ny):
+        raise ValueError(f"start: a solution on the grid {(nx, ny)} (half domain), got one on {start.pressure.shape}")
     starved = oil_layer is not None
     x = np.linspace(INLET, OUTLET, nx)
     spacing = x[1] - x[0]
@@ -389,6 +391,13 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     fixed = jax.lax.stop_gradient  # the starts and the iterations carry no derivative
     taper = jnp.clip(0.5 * flat_length / half_width + 1.0 - y, 0.0, 1.0)
 
+    def unknowns_from(pressure, central, meniscus):
+        """Newton's unknowns [-], without derivative, from a pressure P (nx, ny), the central film
+        [m] that fixes the offset H₀, and (starved) the menisci X_m (ny)."""
+        offset = central * radius / half_width**2 - film(pressure, 0.0)[centre, 0]
+        guess = jnp.append(pressure[1:-1].reshape(-1), offset)
+        return fixed(jnp.concatenate([guess, meniscus]) if starved else guess)
+
     def start_at(fraction):
         """Start at `fraction` of the load: the 1-D solution (starved alike) under that load per
         flat length, extruded over the flat and tapered off over the first half-width of the
@@ -399,11 +408,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         line_pressure = jnp.interp(jnp.asarray(x), line.x / half_width, line.pressure / hertz_pressure, left=0.0)
         start = line_pressure[:, None] * taper[None, :]
         start = start * fraction * load_target / (2.0 * spacing * jnp.sum(start * widths))
-        offset = line.central * radius / half_width**2 - film(start, 0.0)[centre, 0]
-        guess = jnp.append(start[1:-1].reshape(-1), offset)
-        if starved:
-            guess = jnp.concatenate([guess, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus)])
-        return fixed(guess)
+        return unknowns_from(start, line.central, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus))
 
     # the meniscus positions move at most a cell per Newton step
     largest_change = jnp.concatenate([jnp.full((nx - 2) * ny + 1, jnp.inf), jnp.full(ny if starved else 0, spacing)])
@@ -432,17 +437,10 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
 
         return jax.lax.while_loop(more, stage, (0, guess))[1]
 
-    def warm_start(previous):
-        """`start`'s pressure, film offset and menisci in this solve's dimensionless variables."""
-        pressure = previous.pressure / hertz_pressure
-        offset = previous.central * radius / half_width**2 - film(pressure, 0.0)[centre, 0]
-        guess = jnp.append(pressure[1:-1].reshape(-1), offset)
-        return fixed(jnp.concatenate([guess, previous.meniscus / half_width]) if starved else guess)
-
-    if start is not None and start.pressure.shape != (nx, ny):
-        raise ValueError(f"start: a solution on the grid {(nx, ny)} (half domain), got one on {start.pressure.shape}")
     solution = jax.lax.custom_root(
-        residual, start_at(1.0) if start is None else warm_start(start), solve=newton_then_continuation,
+        residual, start_at(1.0) if start is None else unknowns_from(start.pressure / hertz_pressure, start.central,
+                                                                     start.meniscus / half_width),
+        solve=newton_then_continuation,
         tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
     error, converged = error_and_solved(fixed(solution))
     pressure, offset, meniscus = unpack(solution)
