@@ -29,7 +29,11 @@ forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
 was 3× slower on 65 × 65); Armijo backtracking and a Levenberg–Marquardt fallback where the
 piecewise smooth equations stall it, the meniscus moving at most a cell per step; from the 1-D
-line solution (starved alike) extruded along the flat. Where that Newton fails (seed 003 starved
+line solution (starved alike) extruded along the flat. Starved, each Newton first solves for the
+pressure and H₀ with the menisci held at their start (`HELD_MENISCUS_STEPS`), then releases them:
+from the start's pressure the flux through the columns is wrong, and the menisci, moved by it,
+went off where Newton could not bring them back (seed 003 at h_oil = 1.8 µm and 2.1 µm, 1028 N,
+33 × 48, did not converge without it; they do with it). Where that Newton fails (seed 003 starved
 at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with h < 0 at the end
 constriction), a load continuation: Newton again at 65, 80, 90 and 100 % of the load
 (`LOAD_PATH`), the first stage from the 1-D start at its load, each next from the previous
@@ -41,10 +45,7 @@ starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (6
 are solved (`half_domain_grid`). The discrete problem is not always unique at the roller end:
 1607 N on 65 × 65 converges to a minimum film of 0.273 µm through `LOAD_PATH` and, in a scratch
 copy of this solver, to 0.230 µm through the stages (0.5, 0.7, 0.85, 1) (one meniscus per y cell
-is a simplification of the θ-model's partial film there). Near the flooded limit (h_oil = 1.8 µm
-at 1028 N) Newton and the load continuation stall from the 1-D start, and the result says so; a
-continuation in the oil layer from 2.0 µm, each solve started from the previous one (`start`),
-reaches it.
+is a simplification of the θ-model's partial film there).
 """
 
 import equinox as eqx
@@ -60,6 +61,7 @@ from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
+HELD_MENISCUS_STEPS = 30  # starved: Newton steps on pressure and H₀ with the menisci held, before the full Newton
 NEWTON_STEPS = 60  # per load stage; seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
 LOAD_PATH = (0.65, 0.8, 0.9, 1.0)  # the load continuation's stages, fractions of the load
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
@@ -266,9 +268,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             ending at 1, taken only where Newton at the load from the 1-D start fails.
         start: a solution on the same grid (a flooded one has its menisci at the inlet) to start Newton from
             instead of the 1-D line solution: a continuation in any argument, taken in steps
-            small enough that each converges. Seed 003 at 1.8 µm (1028 N, 33 × 48), where Newton
-            from the 1-D start and the load continuation fail, converges from 2.0 µm in steps of
-            0.02 µm (about 2 s each; one step of 0.1 µm does not converge).
+            small enough that each converges (seed 003 from 2.0 to 1.8 µm, 1028 N, 33 × 48: steps
+            of 0.02 µm, about 2 s each).
 
     Starvation: each column y_j has its own inlet meniscus X_m,j, an unknown. Upstream of it the
     oil layer rides on the surfaces (the partial film of the Elrod θ-model carries u·h_oil); the
@@ -419,15 +420,33 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         error = jnp.max(jnp.abs(residual(unknowns)))
         return error, (error < tolerance) & (jnp.min(film(pressure, offset)) > 0)
 
+    def with_menisci_held(unknowns, fraction):
+        """Starved: Newton on the Reynolds equations and the load balance (at `fraction` of the
+        load) for the pressure and H₀, the menisci held where `unknowns` has them; flooded: `unknowns`."""
+        if not starved:
+            return unknowns
+        menisci = unknowns[interior + 1:]
+
+        def held(point):
+            return residual(jnp.concatenate([point, menisci]), fraction)[:interior + 1]
+
+        def held_jacobian(point):
+            return jacobian(jnp.concatenate([point, menisci]))[:interior + 1, :interior + 1]
+
+        settled = _newton_with_fallback(held, held_jacobian, unknowns[:interior + 1], HELD_MENISCUS_STEPS,
+                                        jnp.full(interior + 1, jnp.inf))
+        return jnp.concatenate([settled, menisci])
+
     def newton_then_continuation(_, guess):
         """Newton at the load from `guess`; where that fails, Newton again through the load stages
         `load_path`, each from the previous one's solution, the first from its own start (the
-        1-D solve for it runs only then)."""
+        1-D solve for it runs only then). Each stage starts with the menisci held."""
         stage_loads = jnp.asarray((1.0, *load_path))
 
         def stage(state):
             index, unknowns = state
             unknowns = jax.lax.cond(index == 1, lambda: start_at(load_path[0]), lambda: unknowns)
+            unknowns = with_menisci_held(unknowns, stage_loads[index])
             return index + 1, _newton_with_fallback(lambda point: residual(point, stage_loads[index]), jacobian,
                                                     unknowns, NEWTON_STEPS, largest_change)
 

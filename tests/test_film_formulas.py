@@ -234,6 +234,27 @@ def test_seed003_heavier_loads_through_the_cli(tmp_path, shared_scenes, load, pa
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("oil_layer", [1.8, 2.0])
+def test_seed003_starvation_criterion_through_the_cli(tmp_path, shared_scenes, oil_layer):
+    """Seed 003's starvation criterion on a 33 × 96 grid at 1028 N: at h_oil = 2.0 and 1.8 µm both
+    solves converge, and Er < 1 %. The paper has Er < 1 % at 2.0 µm and > 1 % at 1.8 µm; by mass
+    conservation the middle of the roller cannot starve while the supply exceeds the ρ̄h that its
+    flooded film carries (1.33 µm here), so its columns stay flooded (their menisci on the domain
+    inlet) and h_c is the flooded one. The crowned ends, where the film is thinnest, do starve:
+    the starved minimum film lies below the flooded one."""
+    path = tmp_path / "criterion.json"
+    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
+                     "--set", f'operating.oil_layer="{oil_layer} um"', "--json", str(path)]) == 0
+    values = json.loads(path.read_text())
+    film, starvation = values["film"], values["starvation"]
+    assert film["converged"] is True and starvation["converged"] is True
+    assert 0.0 <= starvation["relative_error"] < 0.01
+    middle = np.array(starvation["y"]) < 3.0e-3
+    assert np.all(np.array(starvation["meniscus"])[middle] == starvation["x"][0])
+    assert starvation["minimum"] < 0.95 * film["minimum"]
+
+
 def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys, shared_scenes):
     """A grid whose half domain is beyond the dense Newton ([129, 257]: 127 × 129 = 16383
     unknowns) exits 2 with a one-line message naming fidelity.grid, its limit and a grid that works."""
