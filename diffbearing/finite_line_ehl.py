@@ -29,16 +29,15 @@ forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
 was 3× slower on 65 × 65); Armijo backtracking and a Levenberg–Marquardt fallback where the
 piecewise smooth equations stall it, the meniscus moving at most a cell per step; from the 1-D
-line solution (starved alike) extruded along the flat. Starved, each Newton first solves for the
-pressure and H₀ with the menisci held at their start (`HELD_MENISCUS_STEPS`), then releases them:
-from the start's pressure the flux through the columns is wrong, and the menisci, moved by it,
-went off where Newton could not bring them back (seed 003 at h_oil = 1.8 µm and 2.1 µm, 1028 N,
-33 × 48, did not converge without it; they do with it). Where that Newton fails (seed 003 starved
-at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with h < 0 at the end
-constriction), a load continuation: Newton again at 65, 80, 90 and 100 % of the load
-(`LOAD_PATH`), the first stage from the 1-D start at its load, each next from the previous
-solution; the dimensionless grid stays the full load's. Inside `lax.custom_root`, so the
-derivatives are implicit (checked against central differences on 17 × 16 flooded and 25 × 16
+line solution (starved alike) extruded along the flat. Where that Newton fails (seed 003
+starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with h < 0 at the end
+constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton again at 65, 80,
+90 and 100 % of the load (`LOAD_PATH`), the first stage from the 1-D start at its load, each next
+from the previous solution. Starved, each stage first solves for the pressure and H₀ with the
+menisci held (Newton without the fallback, `HELD_MENISCUS_STEPS`), then releases them: from a
+start's pressure the flux through the columns is off, and menisci that move with it can end
+where Newton stalls (1.8 µm converged only with the held menisci). The dimensionless grid stays
+the full load's. Inside `lax.custom_root`, so the derivatives are implicit (checked against central differences on 17 × 16 flooded and 25 × 16
 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
 1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
@@ -61,7 +60,7 @@ from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
-HELD_MENISCUS_STEPS = 30  # starved: Newton steps on pressure and H₀ with the menisci held, before the full Newton
+HELD_MENISCUS_STEPS = 30  # starved load stages: Newton steps on pressure and H₀ with the menisci held
 NEWTON_STEPS = 60  # per load stage; seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
 LOAD_PATH = (0.65, 0.8, 0.9, 1.0)  # the load continuation's stages, fractions of the load
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
@@ -119,11 +118,12 @@ def half_domain_grid(grid) -> tuple[int, int]:
                          f"e.g. [65, 129]") from None
 
 
-def _newton_with_fallback(function, jacobian_of, unknowns, steps: int, largest_change):
+def _newton_with_fallback(function, jacobian_of, unknowns, steps: int, largest_change, fallback: bool = True):
     """Damped Newton (Armijo backtracking on ½‖F‖², dense Jacobian) for a piecewise smooth F: where
     the Newton direction gives no decrease (a kink of the complementarity or of the meniscus
     switching nodes), Levenberg–Marquardt steps (JᵀJ + μ diag JᵀJ) d = −JᵀF with μ raised ×10
-    from 1e-6 until the merit falls; a step that lowers nothing is not taken. Every step is
+    from 1e-6 until the merit falls (unless `fallback` is False); a step that lowers nothing is
+    not taken, and the iteration stops there. Every step is
     shortened so that no unknown changes by more than `largest_change` (per unknown: the
     meniscus positions move at most a cell per step, so that they do not jump into the
     pressurized zone)."""
@@ -158,16 +158,19 @@ def _newton_with_fallback(function, jacobian_of, unknowns, steps: int, largest_c
             damping = jax.lax.while_loop(no_decrease, lambda damping: 10.0 * damping, 1e-6)
             return trial(damping)
 
-        candidate = jax.lax.cond(merit(newton_point) < start, lambda _: newton_point, levenberg_marquardt, None)
+        candidate = (jax.lax.cond(merit(newton_point) < start, lambda _: newton_point, levenberg_marquardt, None)
+                     if fallback else newton_point)
         return jnp.where(merit(candidate) < start, candidate, current)
 
-    def step(current, _):  # no work once the residual is at round-off
+    def step(state, _):  # no work once the residual is at round-off or a step has lowered nothing
+        current, moving = state
         residual = function(current)
         start = 0.5 * jnp.sum(residual**2)
-        busy = jnp.max(jnp.abs(residual)) > 1e-13
-        return jax.lax.cond(busy, improve, lambda current, *_: current, current, residual, start), None
+        busy = moving & (jnp.max(jnp.abs(residual)) > 1e-13)
+        following = jax.lax.cond(busy, improve, lambda current, *_: current, current, residual, start)
+        return (following, moving & ~(busy & jnp.all(following == current))), None
 
-    return jax.lax.scan(step, unknowns, None, length=steps)[0]
+    return jax.lax.scan(step, (unknowns, jnp.asarray(True)), None, length=steps)[0][0]
 
 
 def _box_complementarity(position, lower, upper, excess):
@@ -434,19 +437,21 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             return jacobian(jnp.concatenate([point, menisci]))[:interior + 1, :interior + 1]
 
         settled = _newton_with_fallback(held, held_jacobian, unknowns[:interior + 1], HELD_MENISCUS_STEPS,
-                                        jnp.full(interior + 1, jnp.inf))
+                                        jnp.full(interior + 1, jnp.inf), fallback=False)
         return jnp.concatenate([settled, menisci])
 
     def newton_then_continuation(_, guess):
         """Newton at the load from `guess`; where that fails, Newton again through the load stages
         `load_path`, each from the previous one's solution, the first from its own start (the
-        1-D solve for it runs only then). Each stage starts with the menisci held."""
+        1-D solve for it runs only then); starved, each load stage with the menisci held first."""
         stage_loads = jnp.asarray((1.0, *load_path))
 
         def stage(state):
             index, unknowns = state
             unknowns = jax.lax.cond(index == 1, lambda: start_at(load_path[0]), lambda: unknowns)
-            unknowns = with_menisci_held(unknowns, stage_loads[index])
+            if starved:
+                unknowns = jax.lax.cond(index > 0, lambda: with_menisci_held(unknowns, stage_loads[index]),
+                                        lambda: unknowns)
             return index + 1, _newton_with_fallback(lambda point: residual(point, stage_loads[index]), jacobian,
                                                     unknowns, NEWTON_STEPS, largest_change)
 

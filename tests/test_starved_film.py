@@ -197,12 +197,12 @@ def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_laye
 
     newton, differences = finite_line_ehl._newton_with_fallback, []
 
-    def compare_then_solve(function, jacobian_of, unknowns, steps, largest_change):
+    def compare_then_solve(function, jacobian_of, unknowns, steps, largest_change, **options):
         point = unknowns * (1.0 + 0.01 * jnp.sin(jnp.arange(unknowns.size)))  # off the solution, every entry moved
         forward = jax.jacfwd(function)(point)
         error = jnp.max(jnp.abs(jacobian_of(point) - forward)) / jnp.max(jnp.abs(forward))
         jax.debug.callback(lambda value: differences.append(float(value)), error)
-        return newton(function, jacobian_of, unknowns, 1, largest_change)
+        return newton(function, jacobian_of, unknowns, 1, largest_change, **options)
 
     monkeypatch.setattr(finite_line_ehl, "_newton_with_fallback", compare_then_solve)
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
