@@ -47,8 +47,8 @@ OIL_LAYER = 0.8e-6
 GRIDS = ((25, 48), (33, 48), (41, 48))
 REFERENCE_GRID = (65, 65)  # the public scene's [65, 129]
 # (grid, loads [N], oil layers [m]): on 65 × 65, 2471 N and the Er pair are left out of this run:
-# 2471 N spent over 10 minutes in the continuation's first stage (1606 N) without converging, and
-# 1.8 µm does not converge on 33 × 48 either (README)
+# 2471 N spent over 10 minutes in the continuation's first stage (1606 N) without converging
+# (README), and the Er pair's oil-layer continuation would take about 10 minutes there
 PAPER_CASES = (((33, 48), (1028.0, 1607.0, 2471.0), (1.8e-6, 2.0e-6)),
                (REFERENCE_GRID, (1028.0, 1607.0), ()))
 CONTINUATION_STEP = 0.02e-6  # the oil-layer continuation's step [m] (the Er pair)
@@ -158,17 +158,19 @@ def starvation_criterion(grid, layers):
                      f"{'yes' if bool(result.converged) else 'NO'} | {'–' if np.isnan(run) else f'{run:.1f} s'} |")
         print(lines[-1], flush=True)
 
+    from_line_start = {}
     for layer in layers:
-        result, run = timed(finite_line_solver(grid, layer)[0], ROLLER_LOAD)
-        row(f"2-D {name}, from the 1-D start", layer, result, flooded, run)
+        from_line_start[layer], run = timed(finite_line_solver(grid, layer)[0], ROLLER_LOAD)
+        row(f"2-D {name}, from the 1-D start", layer, from_line_start[layer], flooded, run)
     warm = jax.jit(lambda layer, previous: finite_line_film(
         ROLLER_LOAD, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
         LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid, oil_layer=layer, start=previous))
     start = time.perf_counter()
-    result = finite_line_solver(grid, max(layers))[0](ROLLER_LOAD)
+    result = from_line_start[max(layers)]
     for layer in np.arange(max(layers), min(layers) - 1e-9, -CONTINUATION_STEP)[1:]:
         result = jax.block_until_ready(warm(layer, result))
-    row(f"2-D {name}, continued from {max(layers) * 1e6:.1f} µm in steps of {CONTINUATION_STEP * 1e6:.2f} µm",
+    row(f"2-D {name}, continued from {max(layers) * 1e6:.1f} µm (the row above) in steps of "
+        f"{CONTINUATION_STEP * 1e6:.2f} µm, compile included",
         min(layers), result, flooded, time.perf_counter() - start)
     for layer in (1.35e-6, 1.38e-6, *layers):
         row("1-D line EHL, 129 nodes", layer, line_film(LOAD, RADIUS, SPEED, nodes=129, oil_layer=layer, **LUBRICANT),
