@@ -37,8 +37,8 @@ from the previous solution. Starved, each stage first solves for the pressure an
 menisci held (Newton without the fallback, `HELD_MENISCUS_STEPS`), then releases them: from a
 start's pressure the flux through the columns is off, and menisci that move with it can end
 where Newton stalls (1.8 µm converged only with the held menisci). The dimensionless grid stays
-the full load's. Inside `lax.custom_root`, so the derivatives are implicit (checked against central differences on 17 × 16 flooded and 25 × 16
-starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
+the full load's. Inside `lax.custom_root`, so the derivatives are implicit (checked against
+central differences on 17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
 1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
 are solved (`half_domain_grid`). The discrete problem is not always unique at the roller end:
@@ -123,8 +123,8 @@ def _newton_with_fallback(function, jacobian_of, unknowns, steps: int, largest_c
     the Newton direction gives no decrease (a kink of the complementarity or of the meniscus
     switching nodes), Levenberg–Marquardt steps (JᵀJ + μ diag JᵀJ) d = −JᵀF with μ raised ×10
     from 1e-6 until the merit falls (unless `fallback` is False); a step that lowers nothing is
-    not taken, and the iteration stops there. Every step is
-    shortened so that no unknown changes by more than `largest_change` (per unknown: the
+    not taken, and the iteration stops there. Every step is shortened so that no unknown
+    changes by more than `largest_change` (per unknown: the
     meniscus positions move at most a cell per step, so that they do not jump into the
     pressurized zone)."""
 
@@ -268,7 +268,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         grid: (nx, ny) nodes along rolling and cells along the half roller (`check_grid`).
         oil_layer: inlet oil supply layer h_oil [m], or None for fully flooded.
         load_path: the load continuation's stages, increasing fractions of the load in (0, 1]
-            ending at 1, taken only where Newton at the load from the 1-D start fails.
+            ending at 1, taken only where Newton at the load from the 1-D start fails (starved,
+            each stage with the menisci held first).
         start: a solution on the same grid (a flooded one has its menisci at the inlet) to start Newton from
             instead of the 1-D line solution: a continuation in any argument, taken in steps
             small enough that each converges (seed 003 from 2.0 to 1.8 µm, 1028 N, 33 × 48: steps
