@@ -289,6 +289,7 @@ def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path, shared_scenes
     assert code == 2 and "effects.starvation needs operating.oil_layer" in err
 
 
+@pytest.mark.slow
 def test_ball_film_derivatives_match_central_differences(shared_scenes):
     """The per-ball films of the scene model (through the implicit bearing equilibrium) with
     respect to inner-ring speed and viscosity, forward and reverse, against central differences;

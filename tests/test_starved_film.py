@@ -70,6 +70,7 @@ def test_severe_starvation_converges_with_finite_gradients(starved, flooded):
     assert np.all(np.isfinite(np.asarray(gradient))) and float(gradient[0]) > 0
 
 
+@pytest.mark.slow
 def test_starved_film_derivatives_match_central_differences():
     """Implicit derivative (the meniscus joins the unknowns with the flux equation) of central and
     minimum film with respect to load, speed, viscosity and oil layer, forward and reverse."""

@@ -94,6 +94,7 @@ def test_sharded_sweep_matches_single_device(swept, scene_file):
     np.testing.assert_allclose(sharded, swept.values["displacement"], rtol=1e-9, atol=1e-15)
 
 
+@pytest.mark.slow
 def test_sweep_of_the_starved_line_film_equals_single_runs(shared_scenes, tmp_path):
     """A sweep through the iterative 1-D EHL solver (seed 003, line film, starved) runs its points
     one after another (`sequential_sweep`; the vmapped batch of two solves ran past 150 s) and
