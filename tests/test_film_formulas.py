@@ -217,6 +217,18 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scene
     assert np.all(meniscus[y < 6.0e-3] < -1.2 * half_width) and np.all(meniscus[y > 6.6e-3] > 0)
 
 
+def seed003_default_grid_films(tmp_path, shared_scenes, setting):
+    """(film, starvation) JSON tables of seed 003 through the CLI on the 33 × 96 grid with one more
+    `--set`, after checking that the run exits 0 and both Newton solves converge."""
+    path = tmp_path / "seed003.json"
+    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
+                     "--set", setting, "--json", str(path)]) == 0
+    values = json.loads(path.read_text())
+    film, starvation = values["film"], values["starvation"]
+    assert film["converged"] is True and starvation["converged"] is True
+    return film, starvation
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("load, paper_minimum", [(1607.0, 0.215e-6), (2471.0, 0.159e-6)])
 def test_seed003_heavier_loads_through_the_cli(tmp_path, shared_scenes, load, paper_minimum):
@@ -224,12 +236,7 @@ def test_seed003_heavier_loads_through_the_cli(tmp_path, shared_scenes, load, pa
     Newton solves converge (at 2471 N through the load continuation), the starved minimum film is
     within 15 % of the paper's (physics.md §4: 0.215 µm at 1607 N, 0.159 µm at 2471 N) and sits at
     the roller end, past the flat's end (6.35 mm)."""
-    path = tmp_path / "heavier.json"
-    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
-                     "--set", f'contact.load="{load:.0f} N"', "--json", str(path)]) == 0
-    values = json.loads(path.read_text())
-    film, starvation = values["film"], values["starvation"]
-    assert film["converged"] is True and starvation["converged"] is True
+    film, starvation = seed003_default_grid_films(tmp_path, shared_scenes, f'contact.load="{load:.0f} N"')
     assert starvation["minimum"] == pytest.approx(paper_minimum, rel=0.15)
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3
 
@@ -243,12 +250,7 @@ def test_seed003_starvation_criterion_through_the_cli(tmp_path, shared_scenes, o
     flooded film carries (1.33 µm here), so its columns stay flooded (their menisci on the domain
     inlet) and h_c is the flooded one. The crowned ends, where the film is thinnest, do starve:
     the starved minimum film lies below the flooded one."""
-    path = tmp_path / "criterion.json"
-    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
-                     "--set", f'operating.oil_layer="{oil_layer} um"', "--json", str(path)]) == 0
-    values = json.loads(path.read_text())
-    film, starvation = values["film"], values["starvation"]
-    assert film["converged"] is True and starvation["converged"] is True
+    film, starvation = seed003_default_grid_films(tmp_path, shared_scenes, f'operating.oil_layer="{oil_layer} um"')
     assert 0.0 <= starvation["relative_error"] < 0.01
     middle = np.array(starvation["y"]) < 3.0e-3
     assert np.all(np.array(starvation["meniscus"])[middle] == starvation["x"][0])
