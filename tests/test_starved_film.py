@@ -254,3 +254,19 @@ def test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivat
     with pytest.raises(ValueError, match="start"):
         finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                          grid=(17, 17), oil_layer=0.8e-6, start=cold)
+
+
+def test_clustered_axial_cells_span_the_half_roller_and_halve_on_refinement():
+    """`axial_cells` with a clustering β (the sinh map of Farrashkhalvat & Miles 2003, eqs. 4.90–4.91)
+    on seed 003's half roller (flat end 6.35 mm, roller end 7.35 mm): the edges run from 0 to the
+    roller end and increase; the smallest cell touches the flat's end; and one map serves every
+    count, so every other edge of 2n cells is an edge of n cells (refining halves every cell)."""
+    from diffbearing.finite_line_ehl import axial_cells
+
+    flat_end, roller_end = 6.35e-3, 7.35e-3
+    coarse, fine = (np.asarray(axial_cells(count, flat_end, roller_end, 8.0)) for count in (32, 64))
+    assert coarse[0] == 0.0 and coarse[-1] == pytest.approx(roller_end, rel=1e-14) and np.all(np.diff(coarse) > 0)
+    widths = np.diff(fine)
+    smallest = np.argmin(widths)
+    assert abs(0.5 * (fine[smallest] + fine[smallest + 1]) - flat_end) <= widths[smallest]
+    np.testing.assert_allclose(fine[::2], coarse, rtol=1e-13, atol=1e-18)
