@@ -56,12 +56,12 @@ PAPER_MINIMUM = {1028.0: 0.319e-6, 1607.0: 0.215e-6, 2471.0: 0.159e-6}
 RESULTS = Path(__file__).resolve().parent / "results"
 
 
-def finite_line_solver(grid, oil_layer):
-    """(compiled W → FiniteLineFilm, compile time [s])."""
+def finite_line_solver(grid, oil_layer, **options):
+    """(compiled W → FiniteLineFilm, compile time [s]); `options` go to `finite_line_film`."""
     start = time.perf_counter()
     solve = jax.jit(lambda w: finite_line_film(w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
                                                LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid,
-                                               oil_layer=oil_layer))
+                                               oil_layer=oil_layer, **options))
     solve = solve.lower(ROLLER_LOAD).compile()
     return solve, time.perf_counter() - start
 
