@@ -313,6 +313,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     nx, ny = check_grid(grid)
     if not (load_path and load_path[-1] == 1.0 and all(a < b for a, b in zip((0.0, *load_path), load_path))):
         raise ValueError(f"load_path: increasing load fractions in (0, 1] ending at 1.0, got {load_path}")
+    if axial_clustering is not None and not axial_clustering > 0:
+        raise ValueError(f"axial_clustering: None or a clustering β > 0, got {axial_clustering}")
     if start is not None and start.pressure.shape != (nx, ny):
         raise ValueError(f"start: a solution on the grid {(nx, ny)} (half domain), got one on {start.pressure.shape}")
     starved = oil_layer is not None

@@ -270,3 +270,16 @@ def test_clustered_axial_cells_span_the_half_roller_and_halve_on_refinement():
     smallest = np.argmin(widths)
     assert abs(0.5 * (fine[smallest] + fine[smallest + 1]) - flat_end) <= widths[smallest]
     np.testing.assert_allclose(fine[::2], coarse, rtol=1e-13, atol=1e-18)
+
+
+@pytest.mark.parametrize("clustering", [0.0, -8.0])
+def test_finite_line_axial_clustering_outside_its_range_raises(clustering):
+    """A clustering β ≤ 0 would put zero-width cells on the roller: ValueError naming
+    axial_clustering, before any solve."""
+    from diffbearing.finite_line_ehl import finite_line_film
+    from diffbearing.roller_profile import roller_profile
+
+    profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+    with pytest.raises(ValueError, match="axial_clustering"):
+        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+                         grid=(17, 16), axial_clustering=clustering)
