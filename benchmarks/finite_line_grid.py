@@ -135,8 +135,9 @@ def main():
                                  for grid in dict.fromkeys(ALONG_ROLLER + ALONG_ROLLING)])
         for ladder, direction, axis in ((ALONG_ROLLER, "along the roller (ny, nx = 33)", axes[0]),
                                         (ALONG_ROLLING, "along rolling (nx, ny = 64)", axes[1])):
-            films = [results[grid, layer, ROLLER_LOAD, None][1] for grid in ladder]
-            line, extrapolated = ladder_line(direction, [results[grid, layer, ROLLER_LOAD, None] for grid in ladder])
+            solved = [results[grid, layer, ROLLER_LOAD, None] for grid in ladder]
+            films = [row[1] for row in solved]
+            line, extrapolated = ladder_line(direction, solved)
             lines.append(line)
             counts = [grid[1] if ladder is ALONG_ROLLER else grid[0] for grid in ladder]
             axis.semilogx(counts, [f * 1e6 for f in films], "o-", base=2, label=f"1028 N, {name}")
