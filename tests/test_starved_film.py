@@ -188,11 +188,13 @@ def test_starved_finite_line_hard_cases_say_so_and_stay_finite(starved_finite_li
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("oil_layer", [None, 0.8e-6], ids=["flooded", "starved"])
-def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_layer):
+@pytest.mark.parametrize("oil_layer, side_inflow", [(None, 0.0), (0.8e-6, 0.0), (0.8e-6, 1.0)],
+                         ids=["flooded", "starved", "starved-side-inflow"])
+def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_layer, side_inflow):
     """The Newton's Jacobian, assembled from colored local derivatives and the influence matrix
     (`local_and_elastic_jacobian`), equals jax.jacfwd of the residual to round-off (an exact
-    identity), at a perturbed start on a 17 × 9 grid, flooded and starved (meniscus unknowns)."""
+    identity), at a perturbed start on a 17 × 9 grid, flooded and starved (meniscus unknowns),
+    the meniscus balance with and without the side inflow (which couples it to the neighbours)."""
     from diffbearing import finite_line_ehl
     from diffbearing.roller_profile import roller_profile
 
@@ -209,7 +211,8 @@ def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_laye
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     jax.block_until_ready(finite_line_ehl.finite_line_film(1028.0, SEED003_LINE["radius"], seed003_entrainment_speed(),
                                                            0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
-                                                           grid=(17, 9), oil_layer=oil_layer))
+                                                           grid=(17, 9), oil_layer=oil_layer,
+                                                           side_inflow=side_inflow))
     assert differences and max(differences) < 1e-13  # one per Newton stage run (one step each: continued)
 
 
@@ -283,3 +286,43 @@ def test_finite_line_axial_clustering_outside_its_range_raises(clustering):
     with pytest.raises(ValueError, match="axial_clustering"):
         finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                          grid=(17, 16), axial_clustering=clustering)
+
+
+@pytest.mark.parametrize("side_inflow", [-0.1, 1.5])
+def test_finite_line_side_inflow_outside_its_range_raises(side_inflow):
+    """The fraction of the side inflow in the meniscus balance lies in [0, 1]: ValueError naming
+    side_inflow, before any solve."""
+    from diffbearing.finite_line_ehl import finite_line_film
+    from diffbearing.roller_profile import roller_profile
+
+    profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+    with pytest.raises(ValueError, match="side_inflow"):
+        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+                         grid=(17, 16), oil_layer=0.8e-6, side_inflow=side_inflow)
+
+
+@pytest.mark.slow
+def test_mass_conserving_meniscus_balance_keeps_mid_length_and_its_derivatives_are_implicit():
+    """With the side inflow counted in full (side_inflow = 1, mass conserving across the meniscus),
+    seed 003 starved at 0.8 µm on 25 × 16 converges from the 1-D start; the central film at
+    mid-length, where side flow is nil on a 14.7 mm roller with b = 0.12 mm, equals the column
+    model's to 0.01 %; the derivatives of central and minimum film with respect to load and oil
+    layer match central differences, forward and reverse."""
+    from diffbearing.finite_line_ehl import finite_line_film
+    from diffbearing.roller_profile import roller_profile
+
+    profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+
+    def films(x, side_inflow=1.0):  # load [kN], oil layer [µm] → central, minimum [µm], converged
+        result = finite_line_film(x[0] * 1e3, SEED003_LINE["radius"], seed003_entrainment_speed(), 0.08, 2.2e-8,
+                                  2.26e11, profile, 14.7e-3, 12.7e-3, grid=(25, 16), oil_layer=x[1] * 1e-6,
+                                  side_inflow=side_inflow)
+        return jnp.stack([result.central * 1e6, result.minimum * 1e6, result.converged.astype(float)])
+
+    point = jnp.array([1.028, 0.8])
+    function = jax.jit(films)
+    values, column_model = function(point), jax.jit(lambda x: films(x, 0.0))(point)
+    assert float(values[2]) == 1.0 and float(column_model[2]) == 1.0
+    assert float(values[0]) == pytest.approx(float(column_model[0]), rel=1e-4)
+    for direction in jnp.eye(2):
+        assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-5)
