@@ -9,13 +9,13 @@ layer alone and drops the oil that a wetter neighbour's full film pushes sideway
 column's partial film; `finite_line_film(..., side_inflow=γ)` counts the fraction γ of it, and
 γ = 1 conserves mass across the meniscus.
 
-From the column model (γ = 0, the 1-D start) a continuation in γ by steps of 0.1, each Newton
-from the previous solution (`start=`). Where it fails, the first dry end column (meniscus on its
-upper bound: no full film) is the one the side inflow must fill: its meniscus is set to its
-inboard neighbour's and Newton is tried again, then the first two, up to three (FILL_TRIES).
-The column model from the 1-D start through the default load continuation (1607 N needs it);
-each warm start with `load_path=(1.0,)`: where Newton from it fails, its fallback is Newton from
-the 1-D start at the load, menisci held first.
+First the column model (γ = 0) from the 1-D start, through the default load continuation (1607 N
+needs it); then a continuation in γ by steps of 0.1, each Newton from the previous solution
+(`start=`, with `load_path=(1.0,)`: where Newton from the start fails, its fallback is Newton from
+the 1-D start at the load, menisci held first). Where that fails too, the first dry end column
+(meniscus on its upper bound: no full film) is the one the side inflow must fill: its meniscus is
+set to its inboard neighbour's and Newton is tried again, then the first two, up to three
+(FILL_TRIES).
 
 Writes benchmarks/results/finite_line_side_flow.{md,png}. One run of each solve on this 2-core
 machine; every solve compiles anew (γ and the start change the traced function), so the times
