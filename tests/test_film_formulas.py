@@ -189,6 +189,7 @@ def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, shar
         assert film["x"][0] < starvation["meniscus"] == starvation["x"][0] < 0
 
 
+@pytest.mark.slow  # 56 s with a cold compilation cache (2 cores)
 def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scenes):
     """Seed 003 at the finite line level on a 33 × 96 grid (48 cells on the half domain; physics.md §4, 1028 N,
     1000 r/min): the flooded central film within 5 % of the paper's 1.207 µm; the minimum at the

@@ -121,6 +121,7 @@ def test_formula_derivatives_match_central_differences():
         assert_jvp_matches_central_difference(jax.jit(films), point, direction, step=1e-6, rtol=1e-6)
 
 
+@pytest.mark.slow  # 46 s with a cold compilation cache (2 cores)
 def test_finite_line_derivatives_match_central_differences():
     """Implicit derivative (lax.custom_root) of the 2-D central and minimum film with respect to
     load, speed and viscosity, forward and reverse, on a small 17 × 16 grid (it converges there)."""
