@@ -60,15 +60,16 @@ def solve(load, side_inflow, start=None):
     return jax.block_until_ready(film), time.perf_counter() - begin
 
 
-def wet_columns(film):
-    """Number of y cells with a full film (meniscus below its upper bound)."""
-    return int(np.sum(np.asarray(film.meniscus) < float(np.max(film.meniscus)) - 1e-12))
+def dry_columns(film):
+    """Indices of the y cells without a full film (meniscus on its upper bound, the largest)."""
+    meniscus = np.asarray(film.meniscus)
+    return np.nonzero(meniscus >= meniscus.max() - 1e-12)[0]
 
 
 def with_columns_filled(film, count):
     """`film` as a start with its first `count` dry end columns' menisci set to the last wet one's."""
     meniscus = np.asarray(film.meniscus).copy()
-    dry = np.nonzero(meniscus >= meniscus.max() - 1e-12)[0]
+    dry = dry_columns(film)
     meniscus[dry[:count]] = meniscus[dry[0] - 1]
     return eqx.tree_at(lambda solution: solution.meniscus, film, jnp.asarray(meniscus))
 
@@ -106,7 +107,7 @@ def table(load, rows):
         minimum = float(film.minimum)
         lines.append(f"| {fraction:.1f} | {float(film.central) * 1e6:.4f} | {minimum * 1e6:.4f} "
                      f"({float(film.minimum_position) * 1e3:.3f}) | {100 * (minimum / reference - 1):+.1f} % | "
-                     f"{100 * (minimum / PAPER_MINIMUM[load] - 1):+.1f} % | {wet_columns(film)} of {GRID[1]} | "
+                     f"{100 * (minimum / PAPER_MINIMUM[load] - 1):+.1f} % | {GRID[1] - dry_columns(film).size} of {GRID[1]} | "
                      f"{filled} | {bool(film.converged)} ({float(film.residual):.1e}) | {seconds:.1f} |")
     return lines
 
