@@ -18,8 +18,9 @@ Er > 1 % at 1.8 µm only if the supply it applied was smaller than the layer sta
    cells clustered at the flat's end (β = 8, where the 1607 N minimum is resolved along both
    directions: `finite_line_grid.py`), and 33 × 64 at 1028 N, where 48 cells are not enough.
    The layer is lowered from 0.8 µm to 0.8·k µm over the window in steps of 0.02 µm, each Newton
-   from the previous solution (`start=`), the step halved where Newton fails. 2471 N starts
-   through finer load stages (65 to 100 % in steps of 5 %).
+   from the previous solution (`start=`), the step halved where Newton fails. The first solve
+   at 0.8 µm is `finite_line_grid.py`'s: from the 1-D start, through its finer load stages where
+   Newton at the load fails (2471 N needs them).
 
 Writes benchmarks/results/finite_line_supply.{md,png}. One run of each solve on this 2-core
 machine; every solve compiles anew (the start changes the traced function), so the 2-D times
@@ -46,22 +47,21 @@ from tqdm import tqdm  # noqa: E402
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from finite_line_ehl import (FLAT_LENGTH, LUBRICANT, OIL_LAYER, PAPER_MINIMUM, PROFILE, RADIUS,  # noqa: E402
                              RESULTS, SPEED)
+from finite_line_grid import CLUSTERED_LOAD_PATH, CLUSTERING  # noqa: E402
+from line_ehl import PAPER_CENTRAL  # noqa: E402
 
 from diffbearing.finite_line_ehl import finite_line_film  # noqa: E402
 from diffbearing.hertz import line_contact  # noqa: E402
 from diffbearing.line_ehl import density_ratio, line_film  # noqa: E402
 
-PAPER_CENTRAL = 1.207e-6  # flooded, 1028 N [m]
 PAPER_CRITERION = (1.8e-6, 2.0e-6)  # Er > 1 % at the first layer, < 1 % at the second [m]
 CRITERION_LOAD = 1028.0  # [N]
 LINE_NODES = 513
-CLUSTERING = 8.0
 SERIES = ((1028.0, (33, 48)), (1607.0, (33, 48)), (2471.0, (33, 48)), (1028.0, (33, 64)))  # load [N], half grid
 RESOLVED = {(1028.0, (33, 48)): "rising with the cells: 0.338 / 0.345 / 0.354 µm on 32 / 48 / 64 at 0.8 µm",
             (1607.0, (33, 48)): "resolved: 0.2817 / 0.2809 µm on 48 / 64 cells, 0.2834 µm on 65 × 48",
             (2471.0, (33, 48)): "not resolved: 0.097 / 0.209 µm on 32 / 48 cells, 64 does not converge",
             (1028.0, (33, 64)): "the finest converged along the roller at 1028 N"}
-FINE_LOAD_PATH = tuple(round(0.65 + 0.05 * k, 2) for k in range(8))  # 2471 N from the 1-D start
 LAYER_STEP = 0.02e-6  # [m]
 SMALLEST_STEP = 0.0025e-6  # [m]
 TOLERANCE = 0.15  # the issue's tolerance on the paper's minimum films
@@ -87,10 +87,7 @@ def supply_window():
 def solve(load, grid, oil_layer, start=None):
     """(FiniteLineFilm, wall time [s] with compilation)."""
     begin = time.perf_counter()
-    if start is not None:
-        stages = {"start": start, "load_path": (1.0,)}
-    else:
-        stages = {"load_path": FINE_LOAD_PATH} if load > 2000.0 else {}
+    stages = {"load_path": CLUSTERED_LOAD_PATH} if start is None else {"start": start, "load_path": (1.0,)}
     film = finite_line_film(load, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
                             LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid,
                             oil_layer=oil_layer, axial_clustering=CLUSTERING, **stages)
