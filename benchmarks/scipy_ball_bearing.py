@@ -73,14 +73,16 @@ class ClassicalBallBearing:
         wm = self.speed / (1 + it / ot)
         wr = -self.speed / ((ot + it) * r * np.cos(beta))
         fc = np.pi / 12 * self.density * self.dw**3 * self.dm * wm**2 if self.centrifugal else 0 * wm
-        mg = np.abs(self.density * np.pi * self.dw**5 / 60 * wr * wm * np.sin(beta)) if self.gyroscopic else 0 * wm
+        # M_g e_t = dL/dt = ω_m ẑ × J ω_R (cos β ẑ − sin β e_r), positive for β > 0 (ω_R < 0)
+        mg = -self.density * np.pi * self.dw**5 / 60 * wr * wm * np.sin(beta) if self.gyroscopic else 0 * wm
         return qi, qo, ai, ao, fc, mg
 
     def ball_residual(self, d, x1, x2):
         qi, qo, ai, ao, fc, mg = self.ball_state(d, x1, x2)
+        # outer-raceway friction −(2 M_g/D_w)(cos α_o, −sin α_o) supplies dL/dt about the ball centre
         g = mg / self.dw
-        return (qi * np.sin(ai) - qo * np.sin(ao) + 2 * g * np.cos(ao),
-                qi * np.cos(ai) - qo * np.cos(ao) - 2 * g * np.sin(ao) + fc)
+        return (qi * np.sin(ai) - qo * np.sin(ao) - 2 * g * np.cos(ao),
+                qi * np.cos(ai) - qo * np.cos(ao) + 2 * g * np.sin(ao) + fc)
 
     def ring_force(self, d, x1, x2):
         qi, _, ai, _, _, _ = self.ball_state(d, x1, x2)

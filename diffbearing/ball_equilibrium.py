@@ -11,11 +11,39 @@ first and radial (outward) second:
     B D_w = (f_i + f_o − 1) D_w,  R_i = d_m/2 + (f_i − 1/2) D_w cos α₀
     ball centre X:  δ_o = |X| − (f_o − ½)D_w,  δ_i = |A − X| − (f_i − ½)D_w
     tan α_o = X₁/X₂,  tan α_i = (A₁ − X₁)/(A₂ − X₂),  Q = K(α) max(δ, 0)^{3/2}  (Hertz, exact K(α))
-    ball equilibrium (Harris & Kotzalas vol. 2, ch. 3, raceway control factors λ_i, λ_o):
-        Q_i sin α_i − Q_o sin α_o − (M_g/D_w)(λ_i cos α_i − λ_o cos α_o) = 0
-        Q_i cos α_i − Q_o cos α_o + (M_g/D_w)(λ_i sin α_i − λ_o sin α_o) + F_c = 0
-    ring equilibrium: [Fx, Fy, Fz, Mx, My] = Σ_j Q_i [cos α_i cos ψ, cos α_i sin ψ, sin α_i,
-                                                      R_i sin α_i sin ψ, −R_i sin α_i cos ψ]
+    ring equilibrium: [Fx, Fy, Fz, Mx, My] = Σ_j (the forces the inner raceway exerts on ball j)
+
+Ball j's force and moment balance (quasi-static, in the frame that orbits with the ball at ω_m).
+Unit vectors at azimuth ψ: ẑ (axial), e_r = (cos ψ, sin ψ, 0) (radial, outward) and
+e_t = ẑ × e_r (the direction of increasing ψ); a vector (a, r) of the ball's plane is a ẑ + r e_r.
+
+    contact normals (ball centre to contact point)  n_o = (sin α_o, cos α_o),  −n_i = −(sin α_i, cos α_i)
+    normal forces on the ball                       −Q_o n_o (outer raceway),  +Q_i n_i (inner raceway)
+    centrifugal (inertial) force                    F_c e_r
+    ball spin relative to the orbiting frame        ω_R (cos β ẑ − sin β e_r)   (`kinematics.ball_speeds`)
+    rate of change of the ball's angular momentum   dL/dt = ω_m ẑ × (J ω_b) = −J ω_R ω_m sin β e_t = M_g e_t
+
+The normal forces pass through the ball centre, so only friction can supply dL/dt. Raceway control
+(Jones) puts all of it at the controlling contact, along its tangent t = (cos α, −sin α) in the
+ball's plane. With the contact point at ± (D_w/2) n and n × t = −e_t:
+
+    outer control, friction at (D_w/2) n_o:   (D_w/2) n_o × f t_o = M_g e_t  →  F_f = −(2 M_g/D_w) t_o
+    inner control, friction at −(D_w/2) n_i:  −(D_w/2) n_i × f t_i = M_g e_t →  F_f = +(2 M_g/D_w) t_i
+
+so under outer control the friction on the ball points radially outward and axially the way the
+outer raceway's normal force pushes (for α_o > 0). ΣF = 0 gives the two scalar equations per ball:
+
+    outer control:  Q_i sin α_i − Q_o sin α_o − (2 M_g/D_w) cos α_o = 0
+                    Q_i cos α_i − Q_o cos α_o + (2 M_g/D_w) sin α_o + F_c = 0
+    inner control:  Q_i sin α_i − Q_o sin α_o + (2 M_g/D_w) cos α_i = 0
+                    Q_i cos α_i − Q_o cos α_o − (2 M_g/D_w) sin α_i + F_c = 0
+
+Harris's λ-form (Harris & Kotzalas vol. 2, ch. 3; λ = 2 at the controlling raceway) is this
+balance when its M_g carries the sign of J ω_R ω_m sin β, with ω_R negative as `ball_speeds`
+returns it; written with |M_g| it reverses the friction. Under inner control the friction acts on the inner ring too: it enters the
+ring forces, and its moment about the inner groove centre, −(f_i D_w + δ_i) n_i × F_f =
+2 M_g (f_i + δ_i/D_w) e_t, the ring moments (Harris's λ_i f_i M_g term, which leaves out δ_i). `tests/test_ball_momentum_balance.py` rebuilds every
+ball in 3-D and checks ΣF = 0 and Σ r × F = dL/dt.
 
 Sign conventions: moments and rotations right-handed about x and y; an inner-ring rotation θx
 moves the groove centre at azimuth ψ axially by R_i θx sin ψ. A deep-groove ball that is pushed the
@@ -176,17 +204,35 @@ def ball_state(bearing: BallBearing, operating: Operating, centres, positions, m
     return state
 
 
+def contact_forces(bearing: BallBearing, state: dict, model: BallModel) -> dict:
+    """Forces on each ball [N], (Z, 2) vectors (axial, radial) in its plane (module docstring).
+
+    Keys: inner_normal (+Q_i n_i), outer_normal (−Q_o n_o), inner_friction and outer_friction (the
+    raceway friction that supplies the gyroscopic moment, zero at the raceway that does not
+    control), centrifugal (+F_c e_r).
+    """
+    def unit(angle):
+        return jnp.stack([jnp.sin(angle), jnp.cos(angle)], axis=-1)
+
+    def tangent(angle):
+        return jnp.stack([jnp.cos(angle), -jnp.sin(angle)], axis=-1)
+
+    friction = 2.0 * state["gyroscopic_moment"][..., None] / bearing.ball_diameter
+    none = jnp.zeros_like(friction * tangent(state["outer_angle"]))
+    inner_control = model.race_control == "inner"
+    return dict(
+        inner_normal=state["inner_load"][..., None] * unit(state["inner_angle"]),
+        outer_normal=-state["outer_load"][..., None] * unit(state["outer_angle"]),
+        inner_friction=friction * tangent(state["inner_angle"]) if inner_control else none,
+        outer_friction=none if inner_control else -friction * tangent(state["outer_angle"]),
+        centrifugal=jnp.stack([jnp.zeros_like(state["centrifugal_force"]), state["centrifugal_force"]], axis=-1),
+    )
+
+
 def ball_residual(positions, centres, bearing: BallBearing, operating: Operating, model: BallModel, constants=None):
-    """(Z, 2) force residual [N] of each ball's equilibrium (module docstring), axial then radial."""
-    s = ball_state(bearing, operating, centres, positions, model, constants)
-    lam_inner, lam_outer = (0.0, 2.0) if model.race_control == "outer" else (2.0, 0.0)
-    gyro = s["gyroscopic_moment"] / bearing.ball_diameter
-    ai, ao = s["inner_angle"], s["outer_angle"]
-    axial = (s["inner_load"] * jnp.sin(ai) - s["outer_load"] * jnp.sin(ao)
-             - gyro * (lam_inner * jnp.cos(ai) - lam_outer * jnp.cos(ao)))
-    radial = (s["inner_load"] * jnp.cos(ai) - s["outer_load"] * jnp.cos(ao)
-              + gyro * (lam_inner * jnp.sin(ai) - lam_outer * jnp.sin(ao)) + s["centrifugal_force"])
-    return jnp.stack([axial, radial], axis=-1)
+    """(Z, 2) force residual [N] of each ball's equilibrium, ΣF (module docstring), axial then radial."""
+    forces = contact_forces(bearing, ball_state(bearing, operating, centres, positions, model, constants), model)
+    return sum(forces.values())
 
 
 def _free_balls(bearing: BallBearing, operating: Operating, centres):
@@ -318,21 +364,31 @@ def ring_force(displacement, bearing: BallBearing, operating: Operating, model: 
     """
     centres = inner_groove_centres(bearing, displacement)
     positions = equilibrium_positions(displacement, bearing, operating, model)
-    return _ring_force_of_state(bearing, ball_state(bearing, operating, centres, positions, model))
+    return _ring_force_of_state(bearing, ball_state(bearing, operating, centres, positions, model), model)
 
 
-def _ring_force_of_state(bearing: BallBearing, state: dict):
-    """[Fx, Fy, Fz, Mx, My] of the inner contact loads in a `ball_state` (ring equilibrium, module docstring)."""
+def _ring_force_of_state(bearing: BallBearing, state: dict, model: BallModel):
+    """[Fx, Fy, Fz, Mx, My] the inner raceway exerts on the balls (ring equilibrium, module docstring).
+
+    The normal force acts along the line through the inner groove centre, at radius R_i in the
+    ring's plane of groove centres; the inner friction (inner-raceway control) acts at the ball's
+    contact point, f_i D_w + δ_i from that centre, and adds its couple 2 M_g (f_i D_w + δ_i)/D_w
+    along e_t.
+    """
     psi = ball_azimuths(bearing)
-    load, angle = state["inner_load"], state["inner_angle"]
-    arm = inner_groove_radius_of_centres(bearing)
-    axial = load * jnp.sin(angle)
+    forces = contact_forces(bearing, state, model)
+    axial, radial = jnp.moveaxis(forces["inner_normal"] + forces["inner_friction"], -1, 0)
+    # e_t component of Σ r × F about the ring centre: −R_i F_axial, plus the friction's couple
+    lever = bearing.inner_groove_ratio * bearing.ball_diameter + state["inner_approach"]
+    couple = (2.0 * state["gyroscopic_moment"] * lever / bearing.ball_diameter if model.race_control == "inner"
+              else jnp.zeros_like(axial))
+    tangential_moment = -inner_groove_radius_of_centres(bearing) * axial + couple
     return jnp.stack([
-        jnp.sum(load * jnp.cos(angle) * jnp.cos(psi)),
-        jnp.sum(load * jnp.cos(angle) * jnp.sin(psi)),
+        jnp.sum(radial * jnp.cos(psi)),
+        jnp.sum(radial * jnp.sin(psi)),
         jnp.sum(axial),
-        arm * jnp.sum(axial * jnp.sin(psi)),
-        -arm * jnp.sum(axial * jnp.cos(psi)),
+        -jnp.sum(tangential_moment * jnp.sin(psi)),
+        jnp.sum(tangential_moment * jnp.cos(psi)),
     ])
 
 
@@ -433,7 +489,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
         residual = jnp.maximum(residual, jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size)))
     residual = jax.lax.stop_gradient(residual)
     converged = residual < RESIDUAL_TOLERANCE
-    force = _ring_force_of_state(bearing, state)
+    force = _ring_force_of_state(bearing, state, model)
     return Equilibrium(displacement, force, converged, residual, static_steps, solution.stats["num_steps"])
 
 

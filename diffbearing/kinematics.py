@@ -7,11 +7,13 @@ r = D_w / d_m and ω the speed of the inner ring relative to the outer ring:
     inner-raceway control: tan β = sin α_i / (cos α_i − r)
     ω_m = ω / (1 + (1 + r cos α_o)(cos α_i + tan β sin α_i) / ((1 − r cos α_i)(cos α_o + tan β sin α_o)))
     ω_R = −ω / ( ((cos α_o + tan β sin α_o)/(1 + r cos α_o) + (cos α_i + tan β sin α_i)/(1 − r cos α_i)) · r cos β )
-    F_c = (π/12) ρ D_w³ d_m ω_m²,   M_g = J ω_R ω_m sin β with J = ρ π D_w⁵ / 60.
+    F_c = (π/12) ρ D_w³ d_m ω_m²,   M_g = −J ω_R ω_m sin β with J = ρ π D_w⁵ / 60.
 
 ω_m is the orbital speed relative to the outer ring; the absolute orbital speed, which sets F_c and
-M_g, adds the outer ring's speed. M_g is returned as a magnitude (positive), as the equilibrium
-equations of Harris use it: its direction is carried by the raceway-control factors λ.
+M_g, adds the outer ring's speed. Relative to the orbiting frame the ball turns at
+ω_R (cos β ẑ − sin β e_r) (ẑ the bearing axis, e_r radially outward at the ball): with this axis
+the ball rolls without sliding at both contacts and without spin at the controlling one. ω_R turns
+opposite to ω_m.
 """
 
 import jax.numpy as jnp
@@ -50,6 +52,12 @@ def centrifugal_force(ball_density, ball_diameter, pitch_diameter, orbital_speed
 
 
 def gyroscopic_moment(ball_density, ball_diameter, orbital_speed, spin_speed, pitch_angle_value):
-    """|M_g| = J |ω_R ω_m sin β| [N·m], J = ρ π D_w⁵ / 60 (solid sphere)."""
+    """Gyroscopic moment M_g = −J ω_R ω_m sin β [N·m], J = ρ π D_w⁵ / 60 (solid sphere).
+
+    Its direction: the moment the raceways must apply to the ball is dL/dt = ω_m ẑ × (J ω_b) =
+    M_g e_t, with e_t = ẑ × e_r the direction of increasing azimuth. Since ω_R turns opposite to
+    ω_m, M_g > 0 whenever β > 0 (positive contact angles), in either direction of rotation; it
+    equals Harris's magnitude J |ω_R ω_m sin β| there and changes sign with β.
+    """
     inertia = ball_density * jnp.pi * ball_diameter**5 / 60.0
-    return jnp.abs(inertia * spin_speed * orbital_speed * jnp.sin(pitch_angle_value))
+    return -inertia * spin_speed * orbital_speed * jnp.sin(pitch_angle_value)
