@@ -69,7 +69,7 @@ import jax.numpy as jnp
 import lineax as lx
 import optimistix as optx
 
-from . import hertz, kinematics
+from . import ball_validity, hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
 from .params import BallBearing, Operating, groove_curvature_centre_distance
 from .raceway_contact import (ball_raceway_modulus, contact_constant_table, contact_constants, inner_curvature,
@@ -446,14 +446,19 @@ class Equilibrium(eqx.Module):
 
     displacement: jax.Array
     force: jax.Array  # [Fx, Fy, Fz, Mx, My] the balls exert: the applied load, and Fz under displacement control
-    converged: jax.Array  # bool
+    converged: jax.Array  # bool: residual below RESIDUAL_TOLERANCE and the state within the model
     residual: jax.Array  # max of the scaled ring residual and the relative ball residuals [-]
+    approach_ratio: jax.Array  # largest contact approach / D_w [-] (ball_validity)
+    contact_angle: jax.Array  # largest |contact angle| [rad] (ball_validity)
     static_steps: jax.Array
     steps: jax.Array
 
 
 def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> Equilibrium:
     """Inner-ring displacement Δ in equilibrium with the applied load; needs no initial guess.
+
+    `converged` is False where the residual stays above `RESIDUAL_TOLERANCE` or the solved state lies
+    outside the model (`ball_validity`: approach beyond 1 % of D_w, a contact angle beyond ±90°).
 
     With `operating.axial_displacement` set, δz is prescribed (preload by displacement) and the
     axial force is an output (`Equilibrium.force[2]`).
@@ -488,9 +493,13 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
         size = state["inner_load"] + state["outer_load"] + state["centrifugal_force"] + load_scale * 1e-6
         residual = jnp.maximum(residual, jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size)))
     residual = jax.lax.stop_gradient(residual)
-    converged = residual < RESIDUAL_TOLERANCE
+    approach_ratio = jax.lax.stop_gradient(ball_validity.largest_approach_ratio(
+        state["inner_approach"], state["outer_approach"], bearing.ball_diameter))
+    contact_angle = jax.lax.stop_gradient(ball_validity.largest_contact_angle(state["inner_angle"], state["outer_angle"]))
+    converged = (residual < RESIDUAL_TOLERANCE) & ball_validity.within_model(approach_ratio, contact_angle)
     force = _ring_force_of_state(bearing, state, model)
-    return Equilibrium(displacement, force, converged, residual, static_steps, solution.stats["num_steps"])
+    return Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
+                       solution.stats["num_steps"])
 
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):

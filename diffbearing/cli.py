@@ -3,7 +3,9 @@
     diffbearing run [SCENE] [--set dotted.key=VALUE ...] [--json FILE] [--plot FILE]
 
 Bad input (unknown key, wrong dimension, missing key, out-of-range value) prints one line
-naming the key and exits with code 2.
+naming the key and exits with code 2. A result outside the model (e.g. a ball pushed through its
+raceway) or a solver that did not converge prints the report, then one line naming the limit, and
+exits with code 3.
 """
 
 import argparse
@@ -54,6 +56,11 @@ def main(argv=None) -> int:
             print(f"diffbearing: error: {error}", file=sys.stderr)
             return 2
         print(f"plot written to {arguments.plot}")
+    errors, _ = result.problems
+    if errors:
+        more = f" (and {len(errors) - 1} more)" if len(errors) > 1 else ""
+        print(f"diffbearing: error: {errors[0]}{more}", file=sys.stderr)
+        return 3
     return 0
 
 

@@ -19,8 +19,9 @@ from collections.abc import Callable
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 
-from . import ball_equilibrium, film_formulas, hertz, life
+from . import ball_equilibrium, ball_validity, film_formulas, hertz, life
 from .cage_dynamics import simulate_cage
 from .cage_forces import cage_forces, epicyclic_cage_speed
 from .cage_stability import cage_stability
@@ -77,6 +78,9 @@ class Block:
     # swept point by point (`jax.lax.map`), not under `jax.vmap`: the numerical EHL solvers, whose
     # vmapped compiled batch of 1-D line solves ran past 150 s where one solve takes 0.03 s
     sequential_sweep: bool = False
+    # values of one point (NumPy, SI) → (errors, warnings): one line each, with units; an error
+    # means the result is outside the model (the CLI exits 3), a warning that a limit is passed
+    checks: Callable[[dict], tuple[list[str], list[str]]] | None = None
 
 
 REGISTRY: dict[str, Block] = {}
@@ -120,6 +124,20 @@ def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
     for block in wanted:
         visit(block, ())
     return ordered, missing
+
+
+def problems(blocks, values: dict, grid_shape: tuple[int, ...] = ()) -> tuple[list[str], list[str]]:
+    """(errors, warnings) of the blocks' checks over every point of a run (`grid_shape` () for one point)."""
+    errors, warnings = [], []
+    for number, index in enumerate(np.ndindex(grid_shape)):
+        point = {key: np.asarray(value)[index] for key, value in values.items()}
+        prefix = f"sweep point {number}: " if grid_shape else ""
+        for block in blocks:
+            if block.checks is not None:
+                found_errors, found_warnings = block.checks(point)
+                errors += [prefix + line for line in found_errors]
+                warnings += [prefix + line for line in found_warnings]
+    return errors, warnings
 
 
 def outputs_of(blocks, effects: dict | None = None) -> dict[str, Output]:
@@ -244,8 +262,32 @@ def _equilibrium(inputs: SceneInputs, settings: dict, results: dict) -> dict:
     model = ball_model(settings)
     solution = ball_equilibrium.solve_equilibrium(inputs.bearing, inputs.operating, model)
     out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
-           "residual": solution.residual}
+           "residual": solution.residual, "validity.approach_ratio": solution.approach_ratio,
+           "validity.contact_angle": solution.contact_angle}
     return out | ball_equilibrium.ball_results(solution.displacement, inputs.bearing, inputs.operating, model)
+
+
+def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
+    """Errors: a state outside the ball model (ball_validity) or a solver that did not converge;
+    warnings: a peak pressure above the ISO 76 static limit."""
+    errors, warnings = [], []
+    approach, angle = float(values["validity.approach_ratio"]), float(values["validity.contact_angle"])
+    if approach > ball_validity.MAX_APPROACH_FRACTION:
+        errors.append(f"equilibrium outside the model: a contact approach of {approach * 100:.3g} % of Dw passes the "
+                      f"limit of {ball_validity.MAX_APPROACH_FRACTION * 100:g} % of Dw (Hertz theory's small contacts)")
+    if angle >= float(ball_validity.MAX_CONTACT_ANGLE):
+        errors.append(f"equilibrium outside the model: a contact angle |α| = {np.degrees(angle):.1f}° leaves "
+                      "(−90°, 90°) (a ball pushed through its raceway)")
+    if not errors and not bool(values["converged"]):
+        errors.append(f"equilibrium solver did not converge: largest scaled residual {float(values['residual']):.1e} "
+                      f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})")
+    for side in ("inner", "outer"):
+        pressure = np.asarray(values[f"balls.{side}.max_pressure"])
+        ball = int(np.argmax(pressure))
+        if pressure[ball] > ISO76_BALL_PRESSURE_LIMIT:
+            warnings.append(f"peak contact pressure {pressure[ball] / 1e9:.3g} GPa ({side} raceway, ball {ball}) "
+                            f"exceeds the ISO 76 static limit {ISO76_BALL_PRESSURE_LIMIT / 1e9:g} GPa")
+    return errors, warnings
 
 
 def _ball_outputs(side):
@@ -267,17 +309,23 @@ register(Block(
     outputs=(
         Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]"),
         Output("force", "N, N*m", "", "load the balls carry [Fx, Fy, Fz, Mx, My] (Fz follows under axial_displacement)"),
-        Output("converged", "", "", "the equilibrium solver converged"),
+        Output("converged", "", "", "the equilibrium solver converged to a state within the model"),
         Output("residual", "", "", "largest scaled residual of ring and ball equations"),
+        Output("validity.approach_ratio", "", "",
+               f"largest contact approach δ / Dw (model limit {ball_validity.MAX_APPROACH_FRACTION:g})", in_report=False),
+        Output("validity.contact_angle", "rad", "deg", "largest |contact angle| (model limit 90°)", in_report=False),
         Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x"),
         *_ball_outputs("inner"),
         *_ball_outputs("outer"),
         Output("balls.orbital_speed", "rad/s", "rpm", "orbital (cage) speed ω_m"),
         Output("balls.spin_speed", "rad/s", "rpm", "ball spin speed ω_R about its own axis"),
         Output("balls.centrifugal_force", "N", "N", "centrifugal force F_c", effect="centrifugal"),
-        Output("balls.gyroscopic_moment", "N*m", "N*m", "gyroscopic moment M_g", effect="gyroscopic"),
+        Output("balls.gyroscopic_moment", "N*m", "N*m",
+               "gyroscopic moment M_g (dL/dt = M_g e_t, along the direction of increasing azimuth)",
+               effect="gyroscopic"),
     ),
     compute=_equilibrium,
+    checks=_equilibrium_checks,
 ))
 
 

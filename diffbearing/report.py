@@ -171,6 +171,18 @@ def _swept_cells(key, values) -> tuple[str, list[str]]:
     return f"{key} [{_unit_label(display or '')}]", cells
 
 
+def _problem_lines(result, most=None) -> list[str]:
+    """The run's errors (outside the model, not converged) and warnings (limits passed), `most` of each."""
+    lines = []
+    for title, found in zip(("ERRORS (outside the model or not converged)", "Warnings"), result.problems):
+        if found:
+            shown = found if most is None else found[:most]
+            lines += ["", f"{title}:"] + [f"  {line}" for line in shown]
+            if len(found) > len(shown):
+                lines.append(f"  … {len(found) - len(shown)} more in --json")
+    return lines
+
+
 def format_sweep_report(result) -> str:
     """Report of a sweep: one row per grid point with the swept values and the key results."""
     lines = _header(result)
@@ -219,6 +231,7 @@ def format_sweep_report(result) -> str:
         lines.append("  " + "".join(f"{cells[row]:>{w}}" for (_, cells), w in zip(columns, widths)))
     if "converged" in values and not np.all(values["converged"]):
         lines.append(f"  {int(np.sum(~values['converged'].astype(bool)))} points DID NOT CONVERGE")
+    lines += _problem_lines(result, most=10)
     lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s:.3f} s for {rows} points "
               f"({result.run_s / rows * 1e3:.2f} ms per point, after compilation)"]
     return "\n".join(lines)
@@ -279,8 +292,12 @@ def format_report(result) -> str:
         lines += _stiffness_lines(values["stiffness"])
     lines += _ball_table_lines(result, outputs)
     if "converged" in values:
-        state = "converged" if bool(values["converged"]) else "DID NOT CONVERGE"
+        from .ball_equilibrium import RESIDUAL_TOLERANCE
+
+        state = ("converged" if bool(values["converged"]) else "DID NOT CONVERGE"
+                 if float(values["residual"]) >= RESIDUAL_TOLERANCE else "converged to a state OUTSIDE THE MODEL")
         lines += ["", f"Equilibrium solver: {state} (largest scaled residual {float(values['residual']):.1e})"]
+    lines += _problem_lines(result)
     if result.model.not_implemented:
         lines += ["", "Not computed (effect not available yet): " + ", ".join(result.model.not_implemented)]
     lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s * 1e3:.2f} ms (after compilation)"]
@@ -317,6 +334,7 @@ def json_document(result) -> dict:
     if result.sweep_axes:
         document["sweep"] = {key: np.asarray(values).tolist() for key, values in result.sweep_axes.items()}
     document["not_computed"] = list(result.model.not_implemented)
+    document["errors"], document["warnings"] = (list(found) for found in result.problems)
     return document
 
 

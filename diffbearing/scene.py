@@ -7,6 +7,7 @@ and runs it, timing both.
 
 import copy
 import dataclasses
+import functools
 import importlib.resources
 import time
 import tomllib
@@ -299,6 +300,12 @@ class RunResult:
     compile_s: float  # 0 when the compiled model was reused from an earlier run in this process
     run_s: float
     sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a sweep
+
+    @functools.cached_property
+    def problems(self) -> tuple[list[str], list[str]]:
+        """(errors, warnings) of the blocks' checks, one line each (a sweep's name their point)."""
+        shape = tuple(len(values) for values in self.sweep_axes.values())
+        return effect_registry.problems(self.model.blocks, self.values, shape)
 
 
 def run_model(model: Model, progress: bool = True) -> RunResult:

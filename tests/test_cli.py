@@ -1,4 +1,5 @@
-"""The `diffbearing` command: runs, JSON, --set, plots, and one-line errors with exit code 2."""
+"""The `diffbearing` command: runs, JSON, --set, plots, one-line errors with exit code 2 (bad input)
+and 3 (a result outside the model), warnings of limits passed."""
 
 import dataclasses
 import json
@@ -148,3 +149,86 @@ def test_readme_documents_every_output_key():
     for block in effects.REGISTRY.values():
         for output in block.outputs:
             assert f"`{output.key}`" in readme, output.key
+
+
+DEEP_GROOVE_6411E = """
+title = "6411E deep-groove ball bearing"
+[bearing]
+type = "deep_groove_ball"
+ball_diameter = "26.9875 mm"
+pitch_diameter = "97.5 mm"
+balls = 7
+inner_groove_radius = "13.9 mm"
+outer_groove_radius = "14.17 mm"
+radial_clearance = "0.028 mm"
+[operating]
+inner_speed = "0 rpm"
+force = ["0 N", "0 N", "10 kN"]
+moment = ["0 N*m", "0 N*m"]
+"""
+
+
+@pytest.fixture(scope="module")
+def scene_6411E(tmp_path_factory):
+    path = tmp_path_factory.mktemp("scenes") / "6411E.toml"
+    path.write_text(DEEP_GROOVE_6411E)
+    return str(path)
+
+
+def test_load_beyond_the_model_exits_3_with_one_line(capsys, scene_6411E, tmp_path):
+    """A typo (1e9 N for 1e3 N) pushes the balls through the raceways: the solver's residual is small,
+    but the state is outside the model; the report says so, the CLI prints one line and exits 3."""
+    path = tmp_path / "out.json"
+    code, out, err = run_cli(capsys, "run", scene_6411E, "--set", 'operating.force=["1e9 N", "0 N", "0 N"]',
+                             "--json", str(path))
+    assert code == 3
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("diffbearing: error: equilibrium outside the model: ")
+    assert "passes the limit of 1 % of Dw" in lines[0]
+    assert "converged to a state OUTSIDE THE MODEL" in out and "leaves (−90°, 90°)" in out
+    document = json.loads(path.read_text())
+    assert document["converged"] is False
+    assert len(document["errors"]) == 2 and document["validity"]["approach_ratio"] > 0.01
+
+
+def test_peak_pressure_above_iso76_runs_with_a_warning(capsys, scene_6411E, tmp_path):
+    """Fr = 100 kN on the 6411E: p0 ≈ 4.5 GPa at the inner raceway, inside the model (exit 0) but above
+    the ISO 76 static limit of 4.2 GPa: one warning, in the report and in the JSON."""
+    path = tmp_path / "out.json"
+    code, out, err = run_cli(capsys, "run", scene_6411E, "--set", 'operating.force=["100 kN", "0 N", "0 N"]',
+                             "--json", str(path))
+    assert code == 0, err
+    document = json.loads(path.read_text())
+    assert document["converged"] is True and document["errors"] == []
+    assert 4.4e9 < max(document["balls"]["inner"]["max_pressure"]) < 4.6e9
+    (warning,) = document["warnings"]
+    assert warning.startswith("peak contact pressure 4.") and "(inner raceway, ball 0)" in warning
+    assert "exceeds the ISO 76 static limit 4.2 GPa" in warning and warning in out
+
+
+def test_both_seed001_scenes_run_and_agree(capsys, tmp_path):
+    """The packaged seed 001 scenes (the shared seed files, d_m = 252 mm) run through the CLI: the
+    built-in example at 1500 r/min and the 201-point speed sweep to 20000 r/min, every point
+    converged. The sweep's 1500 r/min point is the same computation as the example (same load):
+    displacement and stiffness agree to 1e-10."""
+    from pathlib import Path
+
+    from .conftest import SHARED_SCENES
+
+    packaged = Path(__file__).resolve().parents[1] / "diffbearing" / "scenes"
+    single_path, sweep_path = tmp_path / "single.json", tmp_path / "sweep.json"
+    code, _, err = run_cli(capsys, "run", str(packaged / "seed001_aero_acbb.toml"), "--json", str(single_path))
+    assert code == 0, err
+    code, out, err = run_cli(capsys, "run", str(packaged / "seed001_speed_sweep.toml"), "--json", str(sweep_path))
+    assert code == 0, err
+    assert "Sweep over 201 points" in out
+    single, sweep = json.loads(single_path.read_text()), json.loads(sweep_path.read_text())
+    assert single["converged"] is True and all(sweep["converged"])
+    speeds = np.array(sweep["sweep"]["operating.inner_speed"])
+    (index,) = np.flatnonzero(np.isclose(speeds, 1500 * np.pi / 30, rtol=1e-12))
+    for key in ("displacement", "stiffness"):
+        np.testing.assert_allclose(np.array(sweep[key][index]), np.array(single[key]), rtol=1e-10,
+                                   atol=1e-10 * np.abs(np.array(single[key])).max())
+    if SHARED_SCENES.is_dir():  # the packaged files are the shared seed files
+        for name in ("seed001_aero_acbb.toml", "seed001_speed_sweep.toml"):
+            assert (packaged / name).read_text() == (SHARED_SCENES / name).read_text()

@@ -1,0 +1,39 @@
+"""Where the quasi-static ball model stops describing a bearing: the limits a solved state is checked against.
+
+A solver can converge to a state that no bearing reaches: under a load many times the static
+rating the inner ring is pushed by millimetres and the balls come out on the far side of the
+raceways. Such a state is reported as not converged, with its reason, rather than passed on.
+
+* **Approach.** Hertz theory assumes the contact is small against the radii of the bodies
+  (Johnson, *Contact Mechanics*, 1985, §4.1: a ≪ R); the load–approach law Q = K δ^{3/2} and the
+  rigid-ring geometry assume deflections small against the ball. The limit is an elastic approach
+  of `MAX_APPROACH_FRACTION` D_w at either contact. For the ball bearings of the tests and
+  benchmarks (seed 001's, a 6411, a 218 and a 7-ball 11.5 mm deep-groove bearing) that is a peak
+  pressure of 5.7–7.0 GPa, well past the 4.2 GPa of ISO 76 where steel starts to yield, with a
+  contact semi-major axis of 0.35–0.50 D_w (`hertz.point_contact` at α₀).
+* **Contact angle.** A contact angle outside (−90°, 90°) puts the contact on the far side of the
+  groove's curvature centre: the ball has been pushed through the raceway.
+
+Peak pressures above the ISO 76 limit (4.2 GPa for ball bearings) remain inside the model: they are
+a warning of the application layer, not an error.
+"""
+
+import jax.numpy as jnp
+
+MAX_APPROACH_FRACTION = 0.01  # × D_w: largest elastic approach at a contact the model accepts
+MAX_CONTACT_ANGLE = 0.5 * jnp.pi  # rad: |α| at which the contact leaves the groove's near side
+
+
+def largest_approach_ratio(inner_approach, outer_approach, ball_diameter):
+    """max over balls and both contacts of δ / D_w [-] (δ from `ball_equilibrium.ball_state`)."""
+    return jnp.maximum(jnp.max(inner_approach), jnp.max(outer_approach)) / ball_diameter
+
+
+def largest_contact_angle(inner_angle, outer_angle):
+    """max over balls and both contacts of |α| [rad]."""
+    return jnp.maximum(jnp.max(jnp.abs(inner_angle)), jnp.max(jnp.abs(outer_angle)))
+
+
+def within_model(approach_ratio, contact_angle):
+    """True where both measures are inside the model's limits (module docstring)."""
+    return (approach_ratio <= MAX_APPROACH_FRACTION) & (contact_angle < MAX_CONTACT_ANGLE)
