@@ -114,6 +114,7 @@ def test_sweep_of_the_starved_line_film_equals_single_runs(shared_scenes, tmp_pa
             np.testing.assert_allclose(swept[key][index], single[key], rtol=1e-9)
 
 
+@pytest.mark.slow
 def test_distributed_sweep_writes_the_single_process_json(scene_file, tmp_path):
     """Two processes under jax.distributed on this machine (CPU collectives through gloo) split the
     6-point grid 3 + 3 and process 0 writes the JSON of a one-process run (timings aside)."""
