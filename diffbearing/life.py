@@ -16,25 +16,26 @@ All pure JAX (piecewise-linear table interpolation), differentiable almost every
 """
 
 import jax.numpy as jnp
+import numpy as np
 
 from .params import BallBearing
 
 # ISO 281:2007 Table 2, first column: D_w cos α / D_pw → f_c.
-FC_RATIO = jnp.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.10, 0.12, 0.14, 0.16, 0.18,
+FC_RATIO = np.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.10, 0.12, 0.14, 0.16, 0.18,
                       0.20, 0.22, 0.24, 0.26, 0.28, 0.30, 0.32, 0.34, 0.36, 0.38, 0.40])
-FC_VALUE = jnp.array([29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6, 59.9,
+FC_VALUE = np.array([29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6, 59.9,
                       59.9, 59.6, 59.0, 58.2, 57.1, 56.0, 54.6, 53.2, 51.7, 50.0, 48.4])
 BM_BALL = 1.3
 
 # ISO 281:2007 Table 3, single-row radial contact groove ball bearings: f₀F_a/C₀r → e, Y (X = 0.56).
-RADIAL_RELATIVE_AXIAL = jnp.array([0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89])
-RADIAL_E = jnp.array([0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44])
-RADIAL_Y = jnp.array([2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00])
+RADIAL_RELATIVE_AXIAL = np.array([0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89])
+RADIAL_E = np.array([0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44])
+RADIAL_Y = np.array([2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00])
 # ISO 281:2007 Table 3, single-row angular contact ball bearings, α = 20°…45°: e, X, Y.
-ANGULAR_ALPHA = jnp.radians(jnp.array([20.0, 25.0, 30.0, 35.0, 40.0, 45.0]))
-ANGULAR_E = jnp.array([0.57, 0.68, 0.80, 0.95, 1.14, 1.34])
-ANGULAR_X = jnp.array([0.43, 0.41, 0.39, 0.37, 0.35, 0.33])
-ANGULAR_Y = jnp.array([1.00, 0.87, 0.76, 0.66, 0.57, 0.50])
+ANGULAR_ALPHA = np.radians(np.array([20.0, 25.0, 30.0, 35.0, 40.0, 45.0]))
+ANGULAR_E = np.array([0.57, 0.68, 0.80, 0.95, 1.14, 1.34])
+ANGULAR_X = np.array([0.43, 0.41, 0.39, 0.37, 0.35, 0.33])
+ANGULAR_Y = np.array([1.00, 0.87, 0.76, 0.66, 0.57, 0.50])
 
 
 def nominal_contact_angle(bearing: BallBearing):

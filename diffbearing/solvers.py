@@ -15,34 +15,44 @@ REGULARIZATION = 1e-3
 def minimise_convex(function, y0, args, *, gradient_tolerance=1e-12, max_steps=200, max_halvings=40):
     """Minimise a convex `function(y, args)` from `y0`; return (y, ‖gradient‖, steps).
 
-    y is a 1-D array in well-scaled units (so that a unit step is a sensible trial step).
+    y is a 1-D array in well-scaled units (so that a unit step is a sensible trial step). Where the
+    predicted decrease −g·p is below 1e-12 (1 + |f|), below what the function's rounding lets Armijo's
+    test resolve, the full Newton step is taken. It stops when the gradient is below
+    `gradient_tolerance`, when no step along the Newton direction lowers the function, or after
+    `max_steps`.
     """
-    gradient_and_hessian = jax.value_and_grad(function)
+    value_and_gradient = jax.value_and_grad(function)
     hessian = jax.hessian(function)
 
     def cond(state):
-        _, gradient_norm, step = state
-        return (gradient_norm > gradient_tolerance) & (step < max_steps)
+        _, _, gradient, step, stalled = state
+        return (jnp.linalg.norm(gradient) > gradient_tolerance) & (step < max_steps) & ~stalled
 
     def body(state):
-        y, _, step = state
-        value, gradient = gradient_and_hessian(y, args)
-        matrix = hessian(y, args)
+        y, value, gradient, step, _ = state
         regularization = REGULARIZATION * jnp.linalg.norm(gradient)
-        direction = -jnp.linalg.solve(matrix + regularization * jnp.eye(y.shape[0]), gradient)
+        direction = -jnp.linalg.solve(hessian(y, args) + regularization * jnp.eye(y.shape[0]), gradient)
         slope = jnp.dot(gradient, direction)
+
+        resolved = -slope <= 1e-12 * (1.0 + jnp.abs(value))
+
+        def insufficient(t, trial):
+            return (trial > value + 1e-4 * t * slope) & ~resolved
 
         def halve(search):
             t, _ = search
             return t * 0.5, function(y + 0.5 * t * direction, args)
 
-        def not_sufficient(search):
+        def keep_halving(search):
             t, trial = search
-            return (trial > value + 1e-4 * t * slope) & (t > 0.5**max_halvings)
+            return insufficient(t, trial) & (t > 0.5**max_halvings)
 
-        t, _ = jax.lax.while_loop(not_sufficient, halve, (1.0, function(y + direction, args)))
-        y = y + t * direction
-        return y, jnp.linalg.norm(jax.grad(function)(y, args)), step + 1
+        t, trial = jax.lax.while_loop(keep_halving, halve, (1.0, function(y + direction, args)))
+        stalled = insufficient(t, trial)
+        y = jnp.where(stalled, y, y + t * direction)
+        value, gradient = value_and_gradient(y, args)
+        return y, value, gradient, step + 1, stalled
 
-    initial = (y0, jnp.linalg.norm(jax.grad(function)(y0, args)), 0)
-    return jax.lax.while_loop(cond, body, initial)
+    value, gradient = value_and_gradient(y0, args)
+    y, _, gradient, steps, _ = jax.lax.while_loop(cond, body, (y0, value, gradient, 0, False))
+    return y, jnp.linalg.norm(gradient), steps

@@ -10,9 +10,14 @@ built inside the vmapped function from the swept SI values, so any numeric key c
 that change array shapes (`bearing.balls`) or choices cannot. Blocks marked `sequential_sweep`
 (the numerical EHL solvers) are mapped over the points one after another inside the compiled
 function (`jax.lax.map`) instead. The batch runs in chunks of
-`CHUNK` points through one compiled function (a tqdm bar counts the chunks); with several JAX
-devices each chunk is sharded over them along the batch axis (`jax.sharding`). Output arrays gain
-the grid's leading axes.
+`CHUNK` points through one compiled function (a tqdm bar counts the chunks); with several local
+JAX devices each chunk is sharded over them along the batch axis (`jax.sharding`). Output arrays
+gain the grid's leading axes.
+
+Under `jax.distributed` (several processes, e.g. one per host; docs/distributed_sweeps.md) each
+process evaluates a contiguous block of the chunks on its own devices and the blocks are gathered
+into every process (`multihost_utils.process_allgather`, CPU collectives through gloo): every
+process returns the whole grid, the same numbers as one process computes.
 """
 
 import itertools
@@ -77,8 +82,12 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     _check_corners(model.scene.values, axes, inputs_from_values)
     shape, points = grid_points(axes)
     count = int(np.prod(shape))
-    devices = jax.devices()
-    chunk = max(len(devices), min(chunk, count))
+    # process p evaluates points [p·share, (p + 1)·share): gathered in process order the blocks are
+    # the grid in order, followed by padding that is cut off
+    processes, rank = jax.process_count(), jax.process_index()
+    share = -(-count // processes)
+    devices = jax.local_devices()
+    chunk = max(len(devices), min(chunk, share))
     chunk = -(-chunk // len(devices)) * len(devices)  # a multiple of the device count
     evaluate = effect_registry.evaluate(model.blocks, model.settings)
     base = dict(model.scene.values)
@@ -95,24 +104,31 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     sharding = NamedSharding(Mesh(np.array(devices), ("batch",)), PartitionSpec("batch")) if len(devices) > 1 else None
 
     def chunk_inputs(start):
-        stop = min(start + chunk, count)
+        start = min(start, count - 1)  # a block past the grid's end repeats its last point
+        stop = min(start + chunk, (rank + 1) * share, count)
         pad = chunk - (stop - start)
         arrays = {key: jnp.asarray(np.concatenate([v[start:stop], np.repeat(v[stop - 1:stop], pad, axis=0)]))
                   for key, v in points.items()}
-        return jax.device_put(arrays, sharding) if sharding is not None else arrays, stop - start
+        return (jax.device_put(arrays, sharding) if sharding is not None else arrays), stop - start
 
-    first, _ = chunk_inputs(0)
+    first, _ = chunk_inputs(rank * share)
     start_time = time.perf_counter()
     executable = batched.lower(first).compile()
     compile_s = time.perf_counter() - start_time
     pieces = []
     run_start = time.perf_counter()
-    starts = range(0, count, chunk)
-    for start in tqdm(starts, desc="sweep", unit="chunk", disable=not progress or len(starts) < 2):
+    starts = range(rank * share, (rank + 1) * share, chunk)
+    for start in tqdm(starts, desc="sweep", unit="chunk", disable=not progress or rank > 0 or len(starts) < 2):
         arrays, valid = chunk_inputs(start)
         out = jax.block_until_ready(executable(arrays))
-        pieces.append({key: np.asarray(value)[:valid] for key, value in out.items()})
+        pieces.append({key: np.asarray(value)[:max(valid, 0)] for key, value in out.items()})
+    block = {key: np.concatenate([p[key] for p in pieces]) for key in pieces[0]}
+    if processes > 1:  # every block padded to `share` points, as the gather needs equal shapes
+        from jax.experimental import multihost_utils
+
+        block = {key: np.concatenate([value, np.repeat(value[-1:], share - len(value), axis=0)])
+                 for key, value in block.items()}
+        block = multihost_utils.process_allgather(block, tiled=True)
     run_s = time.perf_counter() - run_start
-    values = {key: np.concatenate([p[key] for p in pieces]).reshape(shape + pieces[0][key].shape[1:])
-              for key in pieces[0]}
+    values = {key: np.asarray(value)[:count].reshape(shape + value.shape[1:]) for key, value in block.items()}
     return RunResult(model, values, compile_s, run_s, sweep_axes=axes)

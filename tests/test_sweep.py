@@ -2,6 +2,7 @@
 
 import json
 import os
+import socket
 import subprocess
 import sys
 import textwrap
@@ -111,3 +112,25 @@ def test_sweep_of_the_starved_line_film_equals_single_runs(shared_scenes, tmp_pa
                            progress=False).values
         for key in ("film.central", "starvation.central", "starvation.minimum"):
             np.testing.assert_allclose(swept[key][index], single[key], rtol=1e-9)
+
+
+@pytest.mark.slow
+def test_distributed_sweep_writes_the_single_process_json(scene_file, tmp_path):
+    """Two processes under jax.distributed on this machine (CPU collectives through gloo) split the
+    6-point grid 3 + 3 and process 0 writes the JSON of a one-process run (timings aside)."""
+    with socket.socket() as probe:
+        probe.bind(("localhost", 0))
+        port = probe.getsockname()[1]
+    single = tmp_path / "single.json"
+    assert cli.main(["run", str(scene_file), "--json", str(single)]) == 0
+    distributed = tmp_path / "distributed.json"
+    command = [sys.executable, "-m", "diffbearing.cli", "run", str(scene_file), "--json", str(distributed),
+               "--distributed", "--coordinator", f"localhost:{port}", "--processes", "2"]
+    processes = [subprocess.Popen(command + ["--process-id", str(rank)], stdout=subprocess.PIPE,
+                                  stderr=subprocess.STDOUT, text=True) for rank in range(2)]
+    outputs = [process.communicate(timeout=300)[0] for process in processes]
+    assert [process.returncode for process in processes] == [0, 0], outputs
+    expected, written = (json.loads(path.read_text()) for path in (single, distributed))
+    assert set(written) == set(expected)
+    written.pop("timing"), expected.pop("timing")
+    assert written == expected
