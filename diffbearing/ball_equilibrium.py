@@ -50,14 +50,19 @@ moves the groove centre at azimuth ψ axially by R_i θx sin ψ. A deep-groove b
 other way takes a negative contact angle on the opposite shoulder; angular-contact bearings are
 modelled with the same full groove (their low shoulder is not a separate limit).
 
-Solution (physics.md §7): each ball's two equations are solved per ball (vmap, 2×2 Newton) for a
-given Δ; `ball_positions` carries the implicit-function derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ,
-so the ring force F(Δ) has exact total derivatives and the stiffness K = dF/dΔ (balls
-re-equilibrated) is `jax.jacfwd(ring_force)`. The ring problem starts from the static solution,
-found by minimising the convex elastic energy Σ (2/5) K_n max(|A| − B D_w, 0)^{5/2} − F·Δ (no
-initial guess needed, zero stiffness at the start is fine), then `optimistix.root_find`
-(Levenberg–Marquardt, implicit adjoint) adds the speed terms and the contact-angle dependence of
-the Hertz constants.
+Solution (physics.md §7): the ring problem starts from the static solution, found by minimising
+the convex elastic energy Σ (2/5) K_n max(|A| − B D_w, 0)^{5/2} − F·Δ (no initial guess needed,
+zero stiffness at the start is fine). Newton then adds the contact-angle dependence of the Hertz
+constants and the speed terms: without speed effects on the 5 ring unknowns with the balls at the
+closed-form static split; with them on the ring and ball unknowns together (5 + 2Z, the balls
+first solved per ball at the static ring position), each step through the 5×5 Schur complement of
+the block-arrow Jacobian. Each step evaluates the Hertz constants once at the current contact
+angles and holds them in the Jacobian (their angle dependence is weak); the residuals are exact.
+The implicit derivative of the solution uses the exact linearisation (`jax.lax.custom_root`,
+least squares on the 5×5 Jacobian of `ring_force`). `ball_positions` solves the balls per ball
+(vmap, 2×2 Newton) for a given Δ and carries the implicit-function derivative
+dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ, so the ring force F(Δ) has exact total derivatives and the
+stiffness K = dF/dΔ (balls re-equilibrated) is `jax.jacfwd(ring_force)`.
 """
 
 import dataclasses
@@ -66,8 +71,6 @@ import functools
 import equinox as eqx
 import jax
 import jax.numpy as jnp
-import lineax as lx
-import optimistix as optx
 
 from . import ball_validity, hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
@@ -82,10 +85,8 @@ FREE_APPROACH = 1e-12  # × D_w: below this total approach a ball at standstill 
 DISPLACEMENT_SCALE = 1e-5  # m: the unit of the scaled ring unknowns (10 µm, 10 µm / R_i rad)
 RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled ring residual and ball residuals are below
 
-# Newton on the scaled ring residual from the static solution (optimistix; implicit adjoint).
-# The least-squares (pseudo-inverse) linear solve keeps a singular Jacobian finite: at zero load or
-# with every inner contact open the step is zero instead of NaN.
-RING_SOLVER = optx.Newton(rtol=1e-11, atol=1e-11, linear_solver=lx.AutoLinearSolver(well_posed=False))
+RING_STEP_TOLERANCE = 1e-11  # ring Newton stops when every scaled step component is below this × (1 + |y|)
+RING_MAX_STEPS = 100
 # The static energy is only the start for Newton: a gradient of 1e-8 (scaled) is close enough, and
 # the energy's rounding error stops Armijo's test from resolving much less.
 STATIC_GRADIENT_TOLERANCE = 1e-8
@@ -158,16 +159,41 @@ def _groove_offsets(bearing: BallBearing):
             (bearing.outer_groove_ratio - 0.5) * bearing.ball_diameter)
 
 
-def static_positions(bearing: BallBearing, centres, model: BallModel):
+def static_positions(bearing: BallBearing, centres, model: BallModel, constants=None):
     """(Z, 2) ball centres without speed effects: on the line of groove centres, the total approach
-    split so that K_i δ_i^{3/2} = K_o δ_o^{3/2} (both contacts at the same angle)."""
+    split so that K_i δ_i^{3/2} = K_o δ_o^{3/2} (both contacts at the same angle).
+
+    `constants` = (K_i, K_o) overrides the Hertz constants at the angle of the line of centres.
+    """
     inner_offset, outer_offset = _groove_offsets(bearing)
     length = jnp.linalg.norm(centres, axis=-1)
-    angle = jnp.arctan2(centres[..., 0], centres[..., 1])
     total = length - groove_curvature_centre_distance(bearing)
-    k_inner, k_outer = hertz_constants(bearing, angle, angle, model)
+    if constants is None:
+        constants = _static_constants(bearing, centres, model)
+    k_inner, k_outer = constants
     outer_approach = total / (1.0 + (k_outer / k_inner) ** (2.0 / 3.0))
     return centres / length[..., None] * (outer_offset + outer_approach)[..., None]
+
+
+def _static_constants(bearing: BallBearing, centres, model: BallModel):
+    """(K_i, K_o) [N/m^1.5] at the angle of the line of groove centres, where both static contacts lie."""
+    angle = jnp.arctan2(centres[..., 0], centres[..., 1])
+    return hertz_constants(bearing, angle, angle, model)
+
+
+def _static_state(bearing: BallBearing, operating: Operating, centres, model: BallModel, constants=None):
+    """`ball_state` at the static split, with the Hertz constants evaluated once for both contacts
+    (they lie on the line of groove centres, at the same angle)."""
+    if constants is None:
+        constants = _static_constants(bearing, centres, model)
+    positions = static_positions(bearing, centres, model, constants)
+    return ball_state(bearing, operating, centres, positions, model, constants)
+
+
+def _contact_angles(centres, positions):
+    """(α_i, α_o) [rad] of balls at `positions` (Z, 2) between inner groove centres `centres`."""
+    to_inner = centres - positions
+    return jnp.arctan2(to_inner[..., 0], to_inner[..., 1]), jnp.arctan2(positions[..., 0], positions[..., 1])
 
 
 def ball_state(bearing: BallBearing, operating: Operating, centres, positions, model: BallModel, constants=None):
@@ -297,47 +323,43 @@ def _speed_start(bearing, operating, centres, model):
     return direction * (outer_offset + approach)[:, None]
 
 
-@functools.partial(jax.custom_jvp, nondiff_argnums=(3,))
-def ball_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
-    """(Z, 2) ball centres [m] in equilibrium with speed effects, for inner-ring displacement Δ.
+def _ball_newton(start, displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+    """(Z, 2) ball centres [m] in equilibrium with speed effects, by per-ball Newton from `start`.
 
-    Newton per ball from `_speed_start` until the largest step is below `BALL_POSITION_TOLERANCE` D_w
-    (at most `BALL_NEWTON_MAX_STEPS`; the ring solver checks the ball residuals); the derivative follows from
-    the implicit function theorem on each ball's 2×2 system (custom JVP; reverse mode by transposition).
+    Each step holds the Hertz constants at the current contact angles in the 2×2 Jacobians; stops
+    when the largest step is below `BALL_POSITION_TOLERANCE` D_w (at most `BALL_NEWTON_MAX_STEPS`;
+    the ring solver checks the ball residuals). Not differentiated: see `_equilibrium_balls`.
     """
     centres = inner_groove_centres(bearing, displacement)
     free = _free_ball_equations(bearing, operating, centres, model)
-    limit = 0.05 * bearing.ball_diameter
     tolerance = BALL_POSITION_TOLERANCE * bearing.ball_diameter
 
     def newton_step(carry):
         positions, _, count = carry
-        to_inner = centres - positions
-        constants = jax.lax.stop_gradient(hertz_constants(
-            bearing, jnp.arctan2(to_inner[..., 0], to_inner[..., 1]),
-            jnp.arctan2(positions[..., 0], positions[..., 1]), model))
+        constants = hertz_constants(bearing, *_contact_angles(centres, positions), model)
         residual = _masked_residual(positions, centres, bearing, operating, model, free, constants)
         jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free, constants)
-        step = jnp.linalg.solve(jacobian, residual[..., None])[..., 0]
-        # keep a step within a tenth of the ball radius: Hertz's δ^{3/2} can throw a far Newton step
-        length = jnp.linalg.norm(step, axis=-1, keepdims=True)
-        step = step * jnp.minimum(1.0, limit / jnp.maximum(length, 1e-300))
+        step = _limited_ball_step(bearing, jnp.linalg.solve(jacobian, residual[..., None])[..., 0])
         return positions - step, jnp.max(jnp.abs(step)), count + 1
 
     def not_converged(carry):
         _, largest_step, count = carry
         return (largest_step > tolerance) & (count < BALL_NEWTON_MAX_STEPS)
 
-    start = _speed_start(bearing, operating, centres, model)
     positions, _, _ = jax.lax.while_loop(not_converged, newton_step, (start, jnp.inf, 0))
     return positions
 
 
-@ball_positions.defjvp
-def _ball_positions_jvp(model, primals, tangents):
-    displacement, bearing, operating = primals
-    positions = ball_positions(displacement, bearing, operating, model)
+@functools.partial(jax.custom_jvp, nondiff_argnums=(4,))
+def _equilibrium_balls(positions, displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+    """`positions` (Z, 2) [m], ball centres in equilibrium at Δ, with their derivative from the implicit
+    function theorem on each ball's 2×2 system (custom JVP; reverse mode by transposition)."""
+    return positions
 
+
+@_equilibrium_balls.defjvp
+def _equilibrium_balls_jvp(model, primals, tangents):
+    positions, displacement, bearing, operating = primals
     centres = inner_groove_centres(bearing, displacement)
     free = _free_ball_equations(bearing, operating, centres, model)
 
@@ -345,9 +367,33 @@ def _ball_positions_jvp(model, primals, tangents):
         # a free ball carries no force whatever its placeholder: hold the placeholder fixed
         return _masked_residual(positions, inner_groove_centres(b, d), b, o, model, jax.lax.stop_gradient(free))
 
-    _, residual_dot = jax.jvp(residual_of_inputs, primals, tangents)
+    _, residual_dot = jax.jvp(residual_of_inputs, primals[1:], tangents[1:])
     jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free)
     return positions, -jnp.linalg.solve(jacobian, residual_dot[..., None])[..., 0]
+
+
+def _without_gradient(tree):
+    """`tree` with every floating array leaf under `jax.lax.stop_gradient`."""
+    return jax.tree.map(lambda x: jax.lax.stop_gradient(x) if eqx.is_inexact_array(x) else x, tree)
+
+
+def _limited_ball_step(bearing: BallBearing, step):
+    """Each ball's Newton step (Z, 2) [m], shortened to at most a tenth of the ball radius: Hertz's
+    δ^{3/2} can throw a far Newton step."""
+    limit = 0.05 * bearing.ball_diameter
+    length = jnp.linalg.norm(step, axis=-1, keepdims=True)
+    return step * jnp.minimum(1.0, limit / jnp.maximum(length, 1e-300))
+
+
+def ball_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+    """(Z, 2) ball centres [m] in equilibrium with speed effects, for inner-ring displacement Δ.
+
+    Per-ball Newton from `_speed_start` (`_ball_newton`), with the implicit-function derivative
+    (`_equilibrium_balls`).
+    """
+    d, b, o = _without_gradient((displacement, bearing, operating))
+    positions = _ball_newton(_speed_start(b, o, inner_groove_centres(b, d), model), d, b, o, model)
+    return _equilibrium_balls(positions, displacement, bearing, operating, model)
 
 
 def equilibrium_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
@@ -363,12 +409,16 @@ def ring_force(displacement, bearing: BallBearing, operating: Operating, model: 
     In equilibrium it equals the applied load; its Jacobian is the stiffness matrix.
     """
     centres = inner_groove_centres(bearing, displacement)
-    positions = equilibrium_positions(displacement, bearing, operating, model)
-    return _ring_force_of_state(bearing, ball_state(bearing, operating, centres, positions, model), model)
+    if model.speed_effects:
+        state = ball_state(bearing, operating, centres, ball_positions(displacement, bearing, operating, model), model)
+    else:
+        state = _static_state(bearing, operating, centres, model)
+    return _ring_force_of_state(bearing, state, model)
 
 
-def _ring_force_of_state(bearing: BallBearing, state: dict, model: BallModel):
-    """[Fx, Fy, Fz, Mx, My] the inner raceway exerts on the balls (ring equilibrium, module docstring).
+def _ring_force_contributions(bearing: BallBearing, state: dict, model: BallModel):
+    """(Z, 5) each ball's share of [Fx, Fy, Fz, Mx, My] the inner raceway exerts on the balls (ring
+    equilibrium, module docstring).
 
     The normal force acts along the line through the inner groove centre, at radius R_i in the
     ring's plane of groove centres; the inner friction (inner-raceway control) acts at the ball's
@@ -384,12 +434,17 @@ def _ring_force_of_state(bearing: BallBearing, state: dict, model: BallModel):
               else jnp.zeros_like(axial))
     tangential_moment = -inner_groove_radius_of_centres(bearing) * axial + couple
     return jnp.stack([
-        jnp.sum(radial * jnp.cos(psi)),
-        jnp.sum(radial * jnp.sin(psi)),
-        jnp.sum(axial),
-        -jnp.sum(tangential_moment * jnp.sin(psi)),
-        jnp.sum(tangential_moment * jnp.cos(psi)),
-    ])
+        radial * jnp.cos(psi),
+        radial * jnp.sin(psi),
+        axial,
+        -tangential_moment * jnp.sin(psi),
+        tangential_moment * jnp.cos(psi),
+    ], axis=-1)
+
+
+def _ring_force_of_state(bearing: BallBearing, state: dict, model: BallModel):
+    """[Fx, Fy, Fz, Mx, My] the inner raceway exerts on the balls: Σ_j `_ring_force_contributions`."""
+    return jnp.sum(_ring_force_contributions(bearing, state, model), axis=0)
 
 
 def _scales(bearing: BallBearing, operating: Operating, model: BallModel):
@@ -431,14 +486,129 @@ def _static_energy(y, args):
     return energy / (load_scale * DISPLACEMENT_SCALE) + 0.5 * jnp.sum((1.0 - free) * y**2)
 
 
-def _ring_residual(y, args):
-    """Scaled ring residual (ring force − applied load) · w / load scale, for optimistix; a prescribed
-    component's equation is replaced by its unknown (= 0)."""
-    bearing, operating, model, unknown, weight, load_scale = args
+def _scaled_ring_residual(force, y, args):
+    """(force − applied load) · w / load scale; a prescribed component's equation is replaced by its
+    unknown (= 0)."""
+    _, operating, _, _, weight, load_scale = args
     free, _ = _controls(operating)
     applied = jnp.concatenate([operating.force, operating.moment])
-    residual = (ring_force(_displacement(y, unknown, operating), bearing, operating, model) - applied) * weight / load_scale
-    return jnp.where(free > 0, residual, y)
+    return jnp.where(free > 0, (force - applied) * weight / load_scale, y)
+
+
+def _ring_residual(y, args):
+    """Scaled ring residual with the balls re-equilibrated (`ring_force`, exact Hertz constants)."""
+    bearing, operating, model, unknown, _, _ = args
+    return _scaled_ring_residual(ring_force(_displacement(y, unknown, operating), bearing, operating, model), y, args)
+
+
+def _static_ring_residual(y, args, constants):
+    """Scaled ring residual at the static split with the Hertz constants (K_i, K_o) held at `constants`."""
+    bearing, operating, model, unknown, _, _ = args
+    centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+    state = _static_state(bearing, operating, centres, model, constants)
+    return _scaled_ring_residual(_ring_force_of_state(bearing, state, model), y, args)
+
+
+def _speed_residual(y, positions, args, constants, free: _FreeBalls):
+    """Residuals of the ring and ball unknowns together, with the Hertz constants held at `constants`.
+
+    Returns each ball's scaled share of the ring residual (Z, 5) (zero for a prescribed component),
+    the scaled ring residual (5) and the ball residuals (Z, 2) [N] (free balls: their placeholder).
+    """
+    bearing, operating, model, unknown, weight, load_scale = args
+    centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+    state = ball_state(bearing, operating, centres, positions, model, constants)
+    contributions = _ring_force_contributions(bearing, state, model)
+    ring = _scaled_ring_residual(jnp.sum(contributions, axis=0), y, args)
+    balls = jnp.where(free.mask[:, None], (positions - free.reference) * free.scale,
+                      sum(contact_forces(bearing, state, model).values()))
+    return contributions * (_controls(operating)[0] * weight / load_scale), ring, balls
+
+
+def _ring_step(jacobian, residual):
+    """Newton step J⁻¹ r (LU), J regularised by 1e-12 (max |J_kk| + 1) I (Levenberg–Marquardt form):
+    at a singular J (zero load, every inner contact open) the step stays finite and, with a zero
+    residual, zero."""
+    guard = 1e-12 * (jnp.max(jnp.abs(jnp.diag(jacobian))) + 1.0)
+    return jnp.linalg.solve(jacobian + guard * jnp.eye(jacobian.shape[0]), residual)
+
+
+def _static_newton(y, args):
+    """Ring Newton at the static split: (y, None, steps) (no ball unknowns).
+
+    Each step evaluates the Hertz constants once at the current contact angles and holds them in the
+    Jacobian (`jax.jacfwd`, 5 tangents), which leaves out their weak angle dependence; the residual
+    itself is exact. Stops when no component of the step exceeds `RING_STEP_TOLERANCE` (1 + |y|).
+    """
+    bearing, operating, model, unknown, _, _ = args
+
+    def step(carry):
+        y, _, count = carry
+        centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+        constants = _static_constants(bearing, centres, model)
+        jacobian, residual = jax.jacfwd(lambda v: (r := _static_ring_residual(v, args, constants), r),
+                                        has_aux=True)(y)
+        dy = _ring_step(jacobian, residual)
+        return y - dy, jnp.max(jnp.abs(dy) / (1.0 + jnp.abs(y))), count + 1
+
+    y, _, steps = jax.lax.while_loop(_ring_not_converged, step, (y, jnp.inf, 0))
+    return y, None, steps
+
+
+def _speed_newton(y, args):
+    """Newton on the ring and ball unknowns together (5 + 2Z): (y, ball centres (Z, 2) [m], steps).
+
+    Starts from the static ring solution with the balls solved there (`ball_positions`). Each step evaluates the Hertz constants
+    once at the current contact angles and holds them in the Jacobian, which leaves out their weak
+    angle dependence; the residuals are exact. The Jacobian is block-arrow: 5 JVP tangents give the
+    ring columns, and 2 tangents with the same unit on every ball give all 2×2 ball blocks and the
+    5×2 couplings of each ball (ball j's residual and its share of the ring residual depend on X_j
+    alone). The step follows by block elimination through the 5×5 Schur complement
+    S = J_yy − Σ_j J_yXj J_XjXj⁻¹ J_Xjy (Golub & Van Loan, Matrix Computations, §3.2); each ball's
+    step is limited to a tenth of its radius.
+    Stops when the ring step is below `RING_STEP_TOLERANCE` (1 + |y|) and every ball step below
+    `BALL_POSITION_TOLERANCE` D_w.
+    """
+    bearing, operating, model, unknown, _, _ = args
+    count = bearing.ball_count
+    ball_tolerance = BALL_POSITION_TOLERANCE * bearing.ball_diameter
+    tangents = (jnp.concatenate([jnp.eye(5), jnp.zeros((2, 5))]),
+                jnp.concatenate([jnp.zeros((5, count, 2)), jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2))]))
+
+    def step(carry):
+        y, positions, _, steps = carry
+        centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+        constants = hertz_constants(bearing, *_contact_angles(centres, positions), model)
+        free = _free_ball_equations(bearing, operating, centres, model)
+        (_, ring, balls), linear = jax.linearize(lambda v, x: _speed_residual(v, x, args, constants, free),
+                                                 y, positions)
+        d_shares, d_ring, d_balls = jax.vmap(linear)(*tangents)
+        ring_ring = d_ring[:5].T  # (5, 5)
+        balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
+        ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
+        balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
+        solved = jnp.linalg.solve(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1))
+        schur = ring_ring - jnp.einsum("jab,jbc->ac", ring_balls, solved[..., 1:])
+        dy = _ring_step(schur, ring - jnp.einsum("jab,jb->a", ring_balls, solved[..., 0]))
+        dx = _limited_ball_step(bearing, solved[..., 0] - solved[..., 1:] @ dy)
+        size = jnp.maximum(jnp.max(jnp.abs(dy) / (1.0 + jnp.abs(y))),
+                           jnp.max(jnp.abs(dx)) * (RING_STEP_TOLERANCE / ball_tolerance))
+        return y - dy, positions - dx, size, steps + 1
+
+    start = ball_positions(_displacement(y, unknown, operating), bearing, operating, model)
+    y, positions, _, steps = jax.lax.while_loop(_ring_not_converged, step, (y, start, jnp.inf, 0))
+    return y, positions, steps
+
+
+def _ring_not_converged(carry):
+    size, steps = carry[-2:]
+    return (size > RING_STEP_TOLERANCE) & (steps < RING_MAX_STEPS)
+
+
+def _tangent_solve(linear, rhs):
+    """Solves the linearised exact ring residual for the implicit derivative: its 5×5 Jacobian
+    (`jax.jacfwd` of the linear map) by least squares, finite at a singular stiffness (pseudo-inverse)."""
+    return jnp.linalg.lstsq(jax.jacfwd(linear)(rhs), rhs)[0]
 
 
 class Equilibrium(eqx.Module):
@@ -475,17 +645,23 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     static_y = jax.lax.stop_gradient(static_y)
     args = (bearing, operating, model, unknown, weight, load_scale)
-    solution = optx.root_find(
-        _ring_residual, RING_SOLVER, static_y, args,
-        max_steps=100, throw=False,
-        adjoint=optx.ImplicitAdjoint(linear_solver=lx.AutoLinearSolver(well_posed=False)),
-    )
-    y = solution.value
-    ring_residual = jnp.max(jnp.abs(_ring_residual(y, args)))
+
+    def solve(_, start):
+        y, positions, steps = (_speed_newton if model.speed_effects else _static_newton)(start, args)
+        return y, (positions, steps.astype(y.dtype))  # custom_root's JVP rule takes floating aux only
+
+    # the exact ring residual defines the implicit derivative
+    y, (positions, steps) = jax.lax.custom_root(functools.partial(_ring_residual, args=args), static_y, solve,
+                                                _tangent_solve, has_aux=True)
     displacement = _displacement(y, unknown, operating)
     centres = inner_groove_centres(bearing, displacement)
-    positions = equilibrium_positions(displacement, bearing, operating, model)
-    state = ball_state(bearing, operating, centres, positions, model)
+    if model.speed_effects:
+        positions = _equilibrium_balls(positions, displacement, bearing, operating, model)
+        state = ball_state(bearing, operating, centres, positions, model)
+    else:
+        state = _static_state(bearing, operating, centres, model)
+    force = _ring_force_of_state(bearing, state, model)
+    ring_residual = jnp.max(jnp.abs(_scaled_ring_residual(force, y, args)))
     residual = ring_residual
     if model.speed_effects:
         ball = ball_residual(positions, centres, bearing, operating, model)
@@ -497,9 +673,8 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
         state["inner_approach"], state["outer_approach"], bearing.ball_diameter))
     contact_angle = jax.lax.stop_gradient(ball_validity.largest_contact_angle(state["inner_angle"], state["outer_angle"]))
     converged = (residual < RESIDUAL_TOLERANCE) & ball_validity.within_model(approach_ratio, contact_angle)
-    force = _ring_force_of_state(bearing, state, model)
     return Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
-                       solution.stats["num_steps"])
+                       steps.astype(static_steps.dtype))
 
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):
