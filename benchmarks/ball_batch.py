@@ -11,15 +11,18 @@ The batch answers are compared with single calls on a subset (largest relative d
 and K). Targets (issue 22, item 6): static ≤ 50 µs/case in a 10 000-case batch, seed 001 ≤ 200
 µs/case, batch below single call for both. Writes benchmarks/results/ball_batch.md.
 
-Where the time went (7-ball static, 1000 cases, before the solver changes): the vmapped static
-start (regularized Newton on the elastic energy) ran every case to 200 steps, because 2 % of the
-cases stalled with a gradient at the energy's rounding (1.45 ms/case of 1.5). With that fixed the
-ring Newton's Jacobian dominates: `jax.jacfwd` of the ring residual costs 48 000 flop/case
-(XLA cost analysis) against 2 300 for the residual itself (3 µs vs 53 µs/case measured), most of
-it the Chebyshev (Clenshaw, degree 16) Hertz constants at the contact angles carried through five
-tangents; the least-squares linear solve is 10 % (LU 185 µs/case, SVD 202 µs/case with the
-whole solve). Building the Hertz-constant table costs 113 µs per single call (computed once per
-batch when only the loads vary).
+Where the time went (after the solver changes; jit(vmap), 200–2000 cases, 2 shared cores). 7-ball
+static: the static start (regularized Newton on the elastic energy, ≤ 9 steps) is 24 µs/case of
+42; the ring Newton (3 steps, Jacobian with the Hertz constants held, 5 tangents) the rest. Before,
+`jax.jacfwd` through the Chebyshev (Clenshaw, degree 16) Hertz constants cost 48 000 flop/case per
+Jacobian against 2 300 for a residual. Seed 001 with speed effects: solve 900 µs/case, stiffness
+460 µs/case. Both are dominated by the per-ball 2×2 Newton (`_ball_newton`, about 35 µs/case per
+step for 28 balls): the vmapped loop runs as many steps as the slowest ball of the batch needs,
+13 here (most cases need 4–6), where a lightly loaded ball whose inner contact is open at the start
+overshoots and comes back slowly on Hertz's δ^{3/2}. The solve pays it for its start (balls solved
+at the static ring position), then 5–6 steps of the combined ring-and-ball Newton (7 tangents and
+the 5×5 Schur complement, about 65 µs/case per step); the stiffness pays it again for the balls
+at Δ, then `jax.jacfwd(ring_force)`; the static start is 38 µs/case.
 """
 
 import argparse
