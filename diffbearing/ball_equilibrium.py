@@ -305,8 +305,9 @@ def _ball_jacobians(positions, centres, bearing, operating, model, free: _FreeBa
     def residual(x):
         return _masked_residual(x, centres, bearing, operating, model, free, constants)
 
-    columns = [jax.jvp(residual, (positions,), (jnp.zeros_like(positions).at[:, k].set(1.0),))[1] for k in range(2)]
-    return jnp.stack(columns, axis=-1)
+    _, linear = jax.linearize(residual, positions)
+    units = jnp.broadcast_to(jnp.eye(2)[:, None, :], (2,) + positions.shape)
+    return jnp.moveaxis(jax.vmap(linear)(units), 0, -1)
 
 
 def _speed_start(bearing, operating, centres, model):
