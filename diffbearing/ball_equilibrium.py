@@ -360,7 +360,9 @@ def _equilibrium_balls(positions, displacement, bearing: BallBearing, operating:
 
 @_equilibrium_balls.defjvp
 def _equilibrium_balls_jvp(model, primals, tangents):
-    positions, displacement, bearing, operating = primals
+    _, displacement, bearing, operating = primals
+    # through the function itself, so that a derivative of this rule (second order) sees dX again
+    positions = _equilibrium_balls(*primals, model)
     centres = inner_groove_centres(bearing, displacement)
     free = _free_ball_equations(bearing, operating, centres, model)
 
