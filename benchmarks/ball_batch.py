@@ -12,17 +12,17 @@ and K). Targets (issue 22, item 6): static ≤ 50 µs/case in a 10 000-case batc
 µs/case, batch below single call for both. Writes benchmarks/results/ball_batch.md.
 
 Where the time went (after the solver changes; jit(vmap), 200–2000 cases, 2 shared cores). 7-ball
-static: the static start (regularized Newton on the elastic energy, ≤ 9 steps) is 24 µs/case of
-42; the ring Newton (3 steps, Jacobian with the Hertz constants held, 5 tangents) the rest. Before,
+static: the static start (regularized Newton on the elastic energy, ≤ 9 steps) is 22 µs/case of
+43; the ring Newton (3 steps, Jacobian with the Hertz constants held, 5 tangents) the rest. Before,
 `jax.jacfwd` through the Chebyshev (Clenshaw, degree 16) Hertz constants cost 48 000 flop/case per
-Jacobian against 2 300 for a residual. Seed 001 with speed effects: solve 900 µs/case, stiffness
-460 µs/case. Both are dominated by the per-ball 2×2 Newton (`_ball_newton`, about 35 µs/case per
+Jacobian against 2 300 for a residual. Seed 001 with speed effects: solve 720 µs/case, stiffness
+370 µs/case. Both are dominated by the per-ball 2×2 Newton (`_ball_newton`, about 25 µs/case per
 step for 28 balls): the vmapped loop runs as many steps as the slowest ball of the batch needs,
 13 here (most cases need 4–6), where a lightly loaded ball whose inner contact is open at the start
 overshoots and comes back slowly on Hertz's δ^{3/2}. The solve pays it for its start (balls solved
-at the static ring position), then 5–6 steps of the combined ring-and-ball Newton (7 tangents and
-the 5×5 Schur complement, about 65 µs/case per step); the stiffness pays it again for the balls
-at Δ, then `jax.jacfwd(ring_force)`; the static start is 38 µs/case.
+at the static ring position, 320 µs/case), then 5–6 steps of the combined ring-and-ball Newton (7
+tangents and the 5×5 Schur complement); the stiffness pays it again for the balls at Δ, then
+`jax.jacfwd(ring_force)`; the static start is 37 µs/case.
 """
 
 import argparse
