@@ -266,3 +266,30 @@ def test_solution_gradient_matches_central_difference(solve, gradient):
         h = 1e-6 * scale
         central = (objective(*perturb(bearing, operating, h)) - objective(*perturb(bearing, operating, -h))) / (2 * h)
         np.testing.assert_allclose(float(derivative), central, rtol=1e-5, err_msg=name)
+
+
+@pytest.mark.slow
+def test_stiffness_derivative_matches_central_difference(seed001):
+    """d K_zz/d f_i and d K_zz/d F_z at 12 000 r/min (second order: forward mode through the ring
+    solve's implicit derivative and the stiffness' own implicit ball solve, as the stiffness-design
+    notebook differentiates) against central differences of the solved model; relative steps 1e-6,
+    tolerance 1e-5."""
+    import equinox as eqx
+
+    operating = Operating(12000 * RPM, 0.0, seed001.operating.force, seed001.operating.moment)
+
+    def axial_stiffness(parameters):
+        inner_ratio, axial_force = parameters
+        bearing = eqx.tree_at(lambda b: b.inner_groove_ratio, seed001.bearing, inner_ratio)
+        loaded = eqx.tree_at(lambda o: o.force, operating, jnp.asarray(operating.force).at[2].set(axial_force))
+        solution = solve_equilibrium(bearing, loaded, SPEED)
+        return stiffness_matrix(solution.displacement, bearing, loaded, SPEED)[2, 2]
+
+    point = jnp.array([float(seed001.bearing.inner_groove_ratio), float(operating.force[2])])
+    derivative = jax.jit(jax.jacfwd(axial_stiffness))(point)
+    value = jax.jit(axial_stiffness)
+    for k in range(2):
+        h = 1e-6 * point[k]
+        step = jnp.zeros(2).at[k].set(h)
+        central = (value(point + step) - value(point - step)) / (2 * h)
+        np.testing.assert_allclose(derivative[k], central, rtol=1e-5)
