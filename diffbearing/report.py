@@ -4,6 +4,7 @@ import json
 
 import numpy as np
 
+from .ball_equilibrium import RESIDUAL_TOLERANCE
 from .units import registry
 
 _ANGULAR_SPEED_DISPLAY = ("rad/s", "rpm")
@@ -292,8 +293,6 @@ def format_report(result) -> str:
         lines += _stiffness_lines(values["stiffness"])
     lines += _ball_table_lines(result, outputs)
     if "converged" in values:
-        from .ball_equilibrium import RESIDUAL_TOLERANCE
-
         state = ("converged" if bool(values["converged"]) else "DID NOT CONVERGE"
                  if float(values["residual"]) >= RESIDUAL_TOLERANCE else "converged to a state OUTSIDE THE MODEL")
         lines += ["", f"Equilibrium solver: {state} (largest scaled residual {float(values['residual']):.1e})"]

@@ -1,4 +1,4 @@
-"""The one finite-difference helper every derivative test uses."""
+"""The one finite-difference helper every derivative test uses, and the test scenes' shared bearing."""
 
 import jax
 import jax.numpy as jnp
@@ -33,3 +33,16 @@ def assert_jvp_matches_central_difference(function, point, direction, step, rtol
 
 def _names(tree):
     return [jax.tree_util.keystr(path) for path, _ in jax.tree_util.tree_flatten_with_path(tree)[0]]
+
+
+# The 6411E deep-groove ball bearing (D_w = 26.9875 mm, d_m = 97.5 mm, 7 balls) as a scene's [bearing] table.
+BEARING_6411E = """
+[bearing]
+type = "deep_groove_ball"
+ball_diameter = "26.9875 mm"
+pitch_diameter = "97.5 mm"
+balls = 7
+inner_groove_radius = "13.9 mm"
+outer_groove_radius = "14.17 mm"
+radial_clearance = "0.028 mm"
+"""

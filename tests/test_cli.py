@@ -12,6 +12,8 @@ import pytest
 from diffbearing import cli, effects
 from diffbearing.scene import build_model, load_scene, run_model
 
+from .helpers import BEARING_6411E
+
 
 def run_cli(capsys, *arguments):
     code = cli.main(list(arguments))
@@ -151,16 +153,7 @@ def test_readme_documents_every_output_key():
             assert f"`{output.key}`" in readme, output.key
 
 
-DEEP_GROOVE_6411E = """
-title = "6411E deep-groove ball bearing"
-[bearing]
-type = "deep_groove_ball"
-ball_diameter = "26.9875 mm"
-pitch_diameter = "97.5 mm"
-balls = 7
-inner_groove_radius = "13.9 mm"
-outer_groove_radius = "14.17 mm"
-radial_clearance = "0.028 mm"
+DEEP_GROOVE_6411E = 'title = "6411E deep-groove ball bearing"\n' + BEARING_6411E + """
 [operating]
 inner_speed = "0 rpm"
 force = ["0 N", "0 N", "10 kN"]

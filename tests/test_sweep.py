@@ -13,15 +13,9 @@ import pytest
 from diffbearing import cli
 from diffbearing.scene import build_model, load_scene, run_model
 
-SCENE = textwrap.dedent("""
-    [bearing]
-    type = "deep_groove_ball"
-    ball_diameter = "26.9875 mm"
-    pitch_diameter = "97.5 mm"
-    balls = 7
-    inner_groove_radius = "13.9 mm"
-    outer_groove_radius = "14.17 mm"
-    radial_clearance = "0.028 mm"
+from .helpers import BEARING_6411E
+
+SCENE = BEARING_6411E + textwrap.dedent("""
     [operating]
     force = ["5 kN", "0 N", "2 kN"]
     [effects]
