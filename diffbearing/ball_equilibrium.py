@@ -40,10 +40,11 @@ outer raceway's normal force pushes (for α_o > 0). ΣF = 0 gives the two scalar
 
 Harris's λ-form (Harris & Kotzalas vol. 2, ch. 3; λ = 2 at the controlling raceway) is this
 balance when its M_g carries the sign of J ω_R ω_m sin β, with ω_R negative as `ball_speeds`
-returns it; written with |M_g| it reverses the friction. Under inner control the friction acts on the inner ring too: it enters the
-ring forces, and its moment about the inner groove centre, −(f_i D_w + δ_i) n_i × F_f =
-2 M_g (f_i + δ_i/D_w) e_t, the ring moments (Harris's λ_i f_i M_g term, which leaves out δ_i). `tests/test_ball_momentum_balance.py` rebuilds every
-ball in 3-D and checks ΣF = 0 and Σ r × F = dL/dt.
+returns it; written with |M_g| it reverses the friction. Under inner control the friction acts on
+the inner ring too: it enters the ring forces, and its moment about the inner groove centre,
+−(f_i D_w + δ_i) n_i × F_f = 2 M_g (f_i + δ_i/D_w) e_t, the ring moments (Harris's λ_i f_i M_g
+term, which leaves out δ_i). `tests/test_ball_momentum_balance.py` rebuilds every ball in 3-D and
+checks ΣF = 0 and Σ r × F = dL/dt.
 
 Sign conventions: moments and rotations right-handed about x and y; an inner-ring rotation θx
 moves the groove centre at azimuth ψ axially by R_i θx sin ψ. A deep-groove ball that is pushed the
@@ -244,7 +245,7 @@ def contact_forces(bearing: BallBearing, state: dict, model: BallModel) -> dict:
         return jnp.stack([jnp.cos(angle), -jnp.sin(angle)], axis=-1)
 
     friction = 2.0 * state["gyroscopic_moment"][..., None] / bearing.ball_diameter
-    none = jnp.zeros_like(friction * tangent(state["outer_angle"]))
+    none = jnp.zeros_like(unit(state["outer_angle"]))
     inner_control = model.race_control == "inner"
     return dict(
         inner_normal=state["inner_load"][..., None] * unit(state["inner_angle"]),
@@ -292,10 +293,14 @@ def _free_ball_equations(bearing, operating, centres, model):
                       free_contact_constant(bearing, model) * 1e-3)
 
 
-def _masked_residual(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None):
-    """Ball residual, with a free ball's indeterminate equations replaced by X = X_static (scaled)."""
-    residual = ball_residual(positions, centres, bearing, operating, model, constants)
+def _with_free_balls(residual, positions, free: _FreeBalls):
+    """Ball residual (Z, 2) [N], with a free ball's indeterminate equations replaced by X = X_static (scaled)."""
     return jnp.where(free.mask[:, None], (positions - free.reference) * free.scale, residual)
+
+
+def _masked_residual(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None):
+    """`ball_residual` at `positions`, free balls' equations replaced (`_with_free_balls`)."""
+    return _with_free_balls(ball_residual(positions, centres, bearing, operating, model, constants), positions, free)
 
 
 def _ball_jacobians(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None):
@@ -523,8 +528,7 @@ def _speed_residual(y, positions, args, constants, free: _FreeBalls):
     state = ball_state(bearing, operating, centres, positions, model, constants)
     contributions = _ring_force_contributions(bearing, state, model)
     ring = _scaled_ring_residual(jnp.sum(contributions, axis=0), y, args)
-    balls = jnp.where(free.mask[:, None], (positions - free.reference) * free.scale,
-                      sum(contact_forces(bearing, state, model).values()))
+    balls = _with_free_balls(sum(contact_forces(bearing, state, model).values()), positions, free)
     return contributions * (_controls(operating)[0] * weight / load_scale), ring, balls
 
 
@@ -667,7 +671,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     ring_residual = jnp.max(jnp.abs(_scaled_ring_residual(force, y, args)))
     residual = ring_residual
     if model.speed_effects:
-        ball = ball_residual(positions, centres, bearing, operating, model)
+        ball = sum(contact_forces(bearing, state, model).values())  # ΣF of each ball at the solved state
         free = _free_balls(bearing, operating, centres)
         size = state["inner_load"] + state["outer_load"] + state["centrifugal_force"] + load_scale * 1e-6
         residual = jnp.maximum(residual, jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size)))
