@@ -63,5 +63,6 @@ from .roller_geometry import (
     roller_bearing as roller_bearing,
 )
 from .roller_profile import RollerProfile as RollerProfile, crown_drop as crown_drop, roller_profile as roller_profile
-from .scene import build_model as build_model, load_scene as load_scene, run_model as run_model
-from .sweep import run_sweep as run_sweep
+from .app.model import build_model as build_model, run_model as run_model
+from .app.scene import examples as examples, load_scene as load_scene
+from .app.sweep import run_sweep as run_sweep

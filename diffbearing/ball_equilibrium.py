@@ -689,25 +689,42 @@ def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, m
     return jax.jacfwd(ring_force)(displacement, with_constant_table(bearing, model), operating, model)
 
 
-def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> dict:
+class BallResults(eqx.Module):
+    """Per-ball results at a ring displacement (SI): azimuth ψ [rad]; per raceway the contact load
+    Q [N], contact angle α [rad], peak Hertz pressure p₀ [Pa] and semi-axes a, b [m]; orbital and
+    spin speeds [rad/s]; centrifugal force [N] and gyroscopic moment [N·m] (None where the model
+    leaves that effect out)."""
+
+    azimuth: jax.Array
+    inner_load: jax.Array
+    inner_contact_angle: jax.Array
+    inner_max_pressure: jax.Array
+    inner_semi_major_axis: jax.Array
+    inner_semi_minor_axis: jax.Array
+    outer_load: jax.Array
+    outer_contact_angle: jax.Array
+    outer_max_pressure: jax.Array
+    outer_semi_major_axis: jax.Array
+    outer_semi_minor_axis: jax.Array
+    orbital_speed: jax.Array
+    spin_speed: jax.Array
+    centrifugal_force: jax.Array | None
+    gyroscopic_moment: jax.Array | None
+
+
+def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> BallResults:
     """Per-ball loads, contact angles, Hertz contact sizes and pressures, kinematics at Δ (SI)."""
     bearing = with_constant_table(bearing, model)
     centres = inner_groove_centres(bearing, displacement)
     positions = equilibrium_positions(displacement, bearing, operating, model)
     s = ball_state(bearing, operating, centres, positions, model)
     modulus = ball_raceway_modulus(bearing)
-    out = {"balls.azimuth": ball_azimuths(bearing)}
+    sides = {}
     for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)):
         load, angle = s[f"{side}_load"], s[f"{side}_angle"]
         contact = hertz.point_contact(load, *curvature(bearing, angle), modulus, model.hertz_method)
-        out |= {f"balls.{side}.load": load, f"balls.{side}.contact_angle": angle,
-                f"balls.{side}.max_pressure": contact.max_pressure,
-                f"balls.{side}.semi_major_axis": contact.semi_major_axis,
-                f"balls.{side}.semi_minor_axis": contact.semi_minor_axis}
-    out["balls.orbital_speed"] = s["orbital_speed"]
-    out["balls.spin_speed"] = s["spin_speed"]
-    if model.centrifugal:
-        out["balls.centrifugal_force"] = s["centrifugal_force"]
-    if model.gyroscopic:
-        out["balls.gyroscopic_moment"] = s["gyroscopic_moment"]
-    return out
+        sides |= {f"{side}_load": load, f"{side}_contact_angle": angle, f"{side}_max_pressure": contact.max_pressure,
+                  f"{side}_semi_major_axis": contact.semi_major_axis, f"{side}_semi_minor_axis": contact.semi_minor_axis}
+    return BallResults(azimuth=ball_azimuths(bearing), orbital_speed=s["orbital_speed"], spin_speed=s["spin_speed"],
+                       centrifugal_force=s["centrifugal_force"] if model.centrifugal else None,
+                       gyroscopic_moment=s["gyroscopic_moment"] if model.gyroscopic else None, **sides)

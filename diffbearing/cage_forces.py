@@ -178,3 +178,11 @@ def cage_forces(cage: Cage, bearing: BallBearing, operating: Operating, lubrican
         land_eccentricity=land_eccentricity, land_contact=land_contact, pocket_forces=pocket_forces,
         pushing=pushing, resisting=resisting, drag=drag, push=push,
         load_zone=2.0 * load_zone_half(bearing, operating.force), cage_speed=cage_speed)
+
+
+def cage_offset(cage: Cage, force, eccentricity, offset_angle):
+    """Cage centre offset (x, y) [m] at relative eccentricity ε (offset over the radial guide
+    clearance c_g/2) in the direction `offset_angle` [rad] from the radial load [Fx, Fy, Fz] [N]."""
+    force = jnp.asarray(force)
+    direction = jnp.arctan2(force[1], force[0]) + offset_angle
+    return eccentricity * 0.5 * cage.guide_clearance * jnp.stack([jnp.cos(direction), jnp.sin(direction)])

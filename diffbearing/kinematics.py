@@ -61,3 +61,11 @@ def gyroscopic_moment(ball_density, ball_diameter, orbital_speed, spin_speed, pi
     """
     inertia = ball_density * jnp.pi * ball_diameter**5 / 60.0
     return -inertia * spin_speed * orbital_speed * jnp.sin(pitch_angle_value)
+
+
+def raceway_entrainment_speed(ring_speed, orbital_speed, pitch_diameter, diameter_ratio_value, side: str):
+    """Mean entrainment speed u = ½ |ω_ring − ω_m| d_m (1 ∓ γ) [m/s] of a ball–raceway contact in
+    pure rolling, γ = D_w cos α / d_m, − for the inner and + for the outer raceway (Harris &
+    Kotzalas vol. 1, ch. 8; Hamrock & Dowson's u)."""
+    sign = {"inner": -1.0, "outer": 1.0}[side]
+    return 0.5 * jnp.abs(ring_speed - orbital_speed) * pitch_diameter * (1.0 + sign * diameter_ratio_value)

@@ -90,3 +90,10 @@ def table_constants(table: ContactConstantTable, inner_angle, outer_angle):
     """(K_i, K_o) [N/m^1.5] at the contact angles [rad] from a `ContactConstantTable`."""
     return (_clenshaw(table.inner, 2.0 * jnp.cos(inner_angle) - 1.0),
             _clenshaw(table.outer, 2.0 * jnp.cos(outer_angle) - 1.0))
+
+
+def rolling_radius(bearing: BallBearing, contact_angle, side: str):
+    """Equivalent radius R_x = D_w (1 ∓ γ)/2 [m] of a ball–raceway contact in the rolling
+    direction, γ = D_w cos α / d_m, − inner, + outer (Hamrock & Dowson, ball bearings)."""
+    sign = {"inner": -1.0, "outer": 1.0}[side]
+    return 0.5 * bearing.ball_diameter * (1.0 + sign * diameter_ratio(bearing, contact_angle))

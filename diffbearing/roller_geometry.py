@@ -39,6 +39,7 @@ class RollerBearing(eqx.Module):
     profile: RollerProfile
     material: Material
     kind: str = eqx.field(static=True, default="cylindrical_roller")
+    roller_count: int | None = eqx.field(static=True, default=None)  # Z, rollers in the bearing (None: one contact)
 
 
 class RollerLoading(eqx.Module):
@@ -48,18 +49,16 @@ class RollerLoading(eqx.Module):
     tilt: jax.Array = eqx.field(converter=_as_float)  # ϑ [rad]
     raceway_curvature: jax.Array = eqx.field(converter=_as_float)  # 1/R_race at mid-length [1/m], convex > 0
     entrainment_speed: jax.Array = eqx.field(converter=_as_float, default=0.0)  # mean rolling speed u [m/s]
-    oil_layer: jax.Array | None = None  # inlet oil supply layer h_oil [m]; None: fully flooded
 
     def __check_init__(self):
         check_range("contact.load", self.load, low=0.0, unit=" N", why="a roller carries a compressive load")
         check_range("contact.tilt", self.tilt, low=-0.05, high=0.05, unit=" rad",
                     why="small-angle misalignment, |ϑ| < 0.05 rad ≈ 2.9°")
-        check_range("operating.oil_layer", self.oil_layer, low=1e-9, high=1e-3, unit=" m",
-                    why="a layer between 1 nm and 1 mm; omit it for a fully flooded inlet")
 
 
 def roller_bearing(*, kind="cylindrical_roller", length, diameter=None, small_diameter=None, large_diameter=None,
-                   cone_half_angle=0.0, profile=None, material: Material = BEARING_STEEL) -> RollerBearing:
+                   cone_half_angle=0.0, profile=None, material: Material = BEARING_STEEL,
+                   roller_count: int | None = None) -> RollerBearing:
     """A validated `RollerBearing` (SI). Cylindrical: give `diameter`; tapered: `small_diameter`,
     `large_diameter` and `cone_half_angle`. ValueError names a bad parameter."""
     if kind not in ROLLER_KINDS:
@@ -77,7 +76,8 @@ def roller_bearing(*, kind="cylindrical_roller", length, diameter=None, small_di
                     unit=" rad", why="up to 30°")
     check_range("bearing.roller_length", length, low=0.0, unit=" m")
     return RollerBearing(small_diameter, large_diameter, length, cone_half_angle,
-                         profile if profile is not None else RollerProfile(), material, kind=kind)
+                         profile if profile is not None else RollerProfile(), material, kind=kind,
+                         roller_count=roller_count)
 
 
 def film_length(bearing: RollerBearing):
@@ -129,3 +129,23 @@ def cell_centres(half_extent, count: int):
     """Centres of `count` equal cells over [−half_extent, half_extent] [m] and the cell size [m]."""
     size = 2.0 * half_extent / count
     return (jnp.arange(count) + 0.5) * size - half_extent, size
+
+
+def raceway_radius_of_pitch(pitch_diameter, roller_diameter_value, raceway: str):
+    """Raceway radius (d_m ∓ D)/2 [m] of a cylindrical roller bearing's inner (−) or outer (+) ring."""
+    sign = {"inner": 1.0, "outer": -1.0}[raceway]
+    return 0.5 * (pitch_diameter - sign * roller_diameter_value)
+
+
+def raceway_curvature(radius, raceway: str):
+    """Signed raceway curvature [1/m] in the rolling direction: convex inner ring +1/R, concave
+    outer ring −1/R; a radius of +inf is a flat raceway (0)."""
+    sign = {"inner": 1.0, "outer": -1.0}[raceway]
+    return sign / radius
+
+
+def pure_rolling_entrainment_speed(pitch_diameter, roller_diameter_value, inner_speed, outer_speed):
+    """Mean entrainment speed u = (d_m/4)(1 − γ²)|ω_i − ω_o| [m/s] of a cylindrical roller in pure
+    rolling, γ = D/d_m (Harris & Kotzalas vol. 1, ch. 8)."""
+    ratio = roller_diameter_value / pitch_diameter
+    return 0.25 * pitch_diameter * (1.0 - ratio**2) * jnp.abs(inner_speed - outer_speed)

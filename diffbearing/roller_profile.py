@@ -25,7 +25,8 @@ import numpy as np
 from .hertz import line_contact
 from .numerics import positive_power, safe_sqrt
 from .params import _as_float, _is_concrete, check_range
-from .schema import PROFILE_KINDS
+
+PROFILE_KINDS = ("straight", "circular", "lundberg", "johns_gohar", "fujiwara_kawase")
 
 # Johns & Gohar (1981): end-of-contact factor on the Hertz half-width ratio b/a.
 JOHNS_GOHAR_END_FACTOR = 0.3033
@@ -130,3 +131,16 @@ def crown_drop(profile: RollerProfile, y, length, effective_modulus, radius):
 def profile_parameters(profile: RollerProfile) -> dict[str, float]:
     """{name: value} of the parameters the profile's kind uses (for reports)."""
     return {name: float(np.asarray(getattr(profile, name))) for name in _NEEDS[profile.kind]}
+
+
+def with_raceway_edge(profile: RollerProfile, edge_radius) -> RollerProfile:
+    """The axial gap profile of a circular-crowned roller on a raceway whose edges fall away with
+    radius R_e [m] from where the roller's flat part ends: the two curvatures add, so the gap is a
+    circular crown of radius 1/(1/R_c + 1/R_e) (the raceway edge radius of the starved
+    finite line contact). ValueError unless the profile is circular and R_e > 0."""
+    if profile.kind != "circular":
+        raise ValueError(f"contact.raceway_edge_radius needs profile.kind = \"circular\" (the raceway edge falls away "
+                         f"where the roller's flat part ends), got {profile.kind!r}")
+    check_range("contact.raceway_edge_radius", edge_radius, low=0.0, unit=" m")
+    return RollerProfile(flat_length=profile.flat_length, crown_radius=1.0 / (1.0 / profile.crown_radius + 1.0 / edge_radius),
+                         kind="circular")

@@ -29,7 +29,8 @@ import numpy as np
 from jax.sharding import Mesh, NamedSharding, PartitionSpec
 from tqdm import tqdm
 
-from . import effects as effect_registry
+from .registry import evaluate as evaluate_blocks
+from .result import RunResult
 from .schema import convert, lookup
 
 CHUNK = 64
@@ -76,9 +77,8 @@ def _check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
 
 
 def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
-    """Evaluate `model` over the grid `axes`; returns a scene.RunResult with batched values."""
-    from .scene import RunResult, inputs_from_values
-
+    """Evaluate `model` (a model.Model) over the grid `axes`; returns a RunResult with batched values."""
+    inputs_from_values = model.inputs_from_values
     _check_corners(model.scene.values, axes, inputs_from_values)
     shape, points = grid_points(axes)
     count = int(np.prod(shape))
@@ -89,7 +89,7 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     devices = jax.local_devices()
     chunk = max(len(devices), min(chunk, share))
     chunk = -(-chunk // len(devices)) * len(devices)  # a multiple of the device count
-    evaluate = effect_registry.evaluate(model.blocks, model.settings)
+    evaluate = evaluate_blocks(model.blocks, model.settings)
     base = dict(model.scene.values)
 
     def point(swept):

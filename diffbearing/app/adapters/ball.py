@@ -1,0 +1,400 @@
+"""Ball bearings: geometry, Hertz constants at the free contact angle, the quasi-static
+equilibrium with its load distribution (always), the stiffness matrix (effect `stiffness`)."""
+
+import jax.numpy as jnp
+import numpy as np
+
+from ... import ball_equilibrium, ball_validity, hertz
+from ...params import BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance
+from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
+from ..formatting import format_number, state_column, to_display, unit_label
+from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from .materials import material
+
+# ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
+ISO76_BALL_PRESSURE_LIMIT = 4.2e9  # Pa
+
+BALL_KEYS = ("bearing.ball_diameter", "bearing.pitch_diameter", "bearing.balls",
+             ("bearing.inner_groove_radius", "bearing.inner_groove_ratio"),
+             ("bearing.outer_groove_radius", "bearing.outer_groove_ratio"),
+             ("bearing.contact_angle", "bearing.radial_clearance"))
+
+
+def _bearing(v, built) -> dict:
+    ring = material(v)
+    return {"bearing": ball_bearing(
+        kind=v["bearing.type"],
+        ball_diameter=v["bearing.ball_diameter"], pitch_diameter=v["bearing.pitch_diameter"],
+        balls=v["bearing.balls"],
+        inner_groove_ratio=v.get("bearing.inner_groove_ratio"),
+        outer_groove_ratio=v.get("bearing.outer_groove_ratio"),
+        inner_groove_radius=v.get("bearing.inner_groove_radius"),
+        outer_groove_radius=v.get("bearing.outer_groove_radius"),
+        contact_angle=v.get("bearing.contact_angle"), radial_clearance=v.get("bearing.radial_clearance"),
+        ball_material=material(v, "ball_", ring), ring_material=ring,
+        bore=v.get("bearing.bore"), outer_diameter=v.get("bearing.outer_diameter"),
+        dynamic_load_rating=v.get("bearing.dynamic_load_rating"),
+    )}
+
+
+def _operating(v, built) -> dict:
+    return {"operating": Operating(
+        inner_speed=v.get("operating.inner_speed", 0.0), outer_speed=v.get("operating.outer_speed", 0.0),
+        force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
+        axial_displacement=v.get("operating.axial_displacement"),
+    )}
+
+
+def ball_model(settings: dict) -> ball_equilibrium.BallModel:
+    """The static model options a scene's effects and fidelity tables select."""
+    effects, fidelity = settings["effects"], settings["fidelity"]
+    return ball_equilibrium.BallModel(
+        centrifugal=effects.get("centrifugal", False) is True,
+        gyroscopic=effects.get("gyroscopic", False) is True,
+        race_control=fidelity.get("race_control", "outer"),
+        hertz_method=fidelity.get("hertz", "exact"),
+        hertz_constants=fidelity.get("hertz_constants", "contact_angle"),
+    )
+
+
+# --- raceway contact geometry and Hertz constants at the free contact angle ------------------
+
+def _raceway_contact(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing = inputs["bearing"]
+    method = settings["fidelity"].get("hertz", "exact")
+    angle = jnp.asarray(bearing.free_contact_angle)
+    modulus = ball_raceway_modulus(bearing)
+    out = {
+        "geometry.free_contact_angle": angle,
+        "geometry.radial_clearance": radial_clearance(bearing),
+        "geometry.groove_centre_distance": groove_curvature_centre_distance(bearing),
+        "geometry.diameter_ratio": diameter_ratio(bearing, angle),
+        "geometry.effective_modulus": modulus,
+    }
+    constants = {}
+    for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)):
+        curvature_sum, curvature_difference = curvature(bearing, angle)
+        unit = hertz.point_contact(1.0, curvature_sum, curvature_difference, modulus, method)
+        # p₀ ∝ Q^{1/3}: the load that reaches the ISO 76 limit follows from p₀ at 1 N.
+        limit = (ISO76_BALL_PRESSURE_LIMIT / unit.max_pressure) ** 3
+        constants[side] = unit.load_deflection_constant
+        out |= {
+            f"hertz.{side}.curvature_sum": curvature_sum,
+            f"hertz.{side}.curvature_difference": curvature_difference,
+            f"hertz.{side}.ellipticity": unit.ellipticity,
+            f"hertz.{side}.load_deflection_constant": unit.load_deflection_constant,
+            f"hertz.{side}.static_limit_load": limit,
+        }
+    out["hertz.combined_load_deflection_constant"] = hertz.combined_load_deflection_constant(
+        constants["inner"], constants["outer"])
+    return out
+
+
+def _side_outputs(side):
+    return (
+        Output(f"hertz.{side}.curvature_sum", "1/m", "1/mm", f"curvature sum Σρ, {side}"),
+        Output(f"hertz.{side}.curvature_difference", "", "", f"curvature difference F(ρ), {side}"),
+        Output(f"hertz.{side}.ellipticity", "", "", f"ellipticity κ = a/b, {side}"),
+        Output(f"hertz.{side}.load_deflection_constant", "N/m**1.5", "N/mm**1.5",
+               f"load–deflection constant K (Q = K δ^1.5), {side}"),
+        Output(f"hertz.{side}.static_limit_load", "N", "kN", f"ball load at p0 = 4.2 GPa (ISO 76), {side}"),
+    )
+
+
+RACEWAY_CONTACT = Block(
+    name="raceway_contact",
+    bearing_types=BALL_BEARING_KINDS,
+    enabled_by=None,
+    requires=(),
+    inputs=("bearing",),
+    outputs=(
+        Output("geometry.free_contact_angle", "rad", "deg", "free contact angle α0"),
+        Output("geometry.radial_clearance", "m", "um", "diametral radial clearance Gr"),
+        Output("geometry.groove_centre_distance", "m", "mm", "groove curvature centre distance (fi+fo−1)Dw"),
+        Output("geometry.diameter_ratio", "", "", "γ = Dw cos α0 / dm"),
+        Output("geometry.effective_modulus", "Pa", "GPa", "effective modulus E' of ball and ring"),
+        *_side_outputs("inner"),
+        *_side_outputs("outer"),
+        Output("hertz.combined_load_deflection_constant", "N/m**1.5", "N/mm**1.5",
+               "combined constant Kn, inner and outer in series"),
+    ),
+    compute=_raceway_contact,
+)
+
+
+# --- quasi-static equilibrium and load distribution ------------------------------------------
+
+_BALL_FIELDS = ("load", "contact_angle", "max_pressure", "semi_major_axis", "semi_minor_axis")
+
+
+def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
+    model = ball_model(settings)
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    solution = ball_equilibrium.solve_equilibrium(bearing, operating, model)
+    balls = ball_equilibrium.ball_results(solution.displacement, bearing, operating, model)
+    out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
+           "residual": solution.residual, "validity.approach_ratio": solution.approach_ratio,
+           "validity.contact_angle": solution.contact_angle, "balls.azimuth": balls.azimuth,
+           "balls.orbital_speed": balls.orbital_speed, "balls.spin_speed": balls.spin_speed}
+    for side in ("inner", "outer"):
+        out |= {f"balls.{side}.{field}": getattr(balls, f"{side}_{field}") for field in _BALL_FIELDS}
+    if model.centrifugal:
+        out["balls.centrifugal_force"] = balls.centrifugal_force
+    if model.gyroscopic:
+        out["balls.gyroscopic_moment"] = balls.gyroscopic_moment
+    return out
+
+
+def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
+    """Errors: a state outside the ball model (ball_validity) or a solver that did not converge;
+    warnings: a peak pressure above the ISO 76 static limit."""
+    errors, warnings = [], []
+    approach, angle = float(values["validity.approach_ratio"]), float(values["validity.contact_angle"])
+    if approach > ball_validity.MAX_APPROACH_FRACTION:
+        errors.append(f"equilibrium outside the model: a contact approach of {approach * 100:.3g} % of Dw passes the "
+                      f"limit of {ball_validity.MAX_APPROACH_FRACTION * 100:g} % of Dw (Hertz theory's small contacts)")
+    if angle >= float(ball_validity.MAX_CONTACT_ANGLE):
+        errors.append(f"equilibrium outside the model: a contact angle |α| = {np.degrees(angle):.1f}° leaves "
+                      "(−90°, 90°) (a ball pushed through its raceway)")
+    if not errors and not bool(values["converged"]):
+        errors.append(f"equilibrium solver did not converge: largest scaled residual {float(values['residual']):.1e} "
+                      f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})")
+    for side in ("inner", "outer"):
+        pressure = np.asarray(values[f"balls.{side}.max_pressure"])
+        ball = int(np.argmax(pressure))
+        if pressure[ball] > ISO76_BALL_PRESSURE_LIMIT:
+            warnings.append(f"peak contact pressure {pressure[ball] / 1e9:.3g} GPa ({side} raceway, ball {ball}) "
+                            f"exceeds the ISO 76 static limit {ISO76_BALL_PRESSURE_LIMIT / 1e9:g} GPa")
+    return errors, warnings
+
+
+def _ball_outputs(side):
+    short = side[0]
+    return (
+        Output(f"balls.{side}.load", "N", "kN", f"contact load Q, {side}", column=f"Q{short}"),
+        Output(f"balls.{side}.contact_angle", "rad", "deg", f"contact angle α, {side}", column=f"α{short}"),
+        Output(f"balls.{side}.max_pressure", "Pa", "GPa", f"peak Hertz pressure p0, {side}", column=f"p0{short}"),
+        Output(f"balls.{side}.semi_major_axis", "m", "mm", f"contact semi-major axis a, {side}", in_report=False),
+        Output(f"balls.{side}.semi_minor_axis", "m", "mm", f"contact semi-minor axis b, {side}", in_report=False),
+    )
+
+
+def _azimuth_plot(result, figure):
+    """Ball loads, contact angles and peak pressures around the azimuth, against the ISO 76 limit."""
+    values = result.values
+    azimuth = np.degrees(np.asarray(values["balls.azimuth"]))
+    load_axis, angle_axis, pressure_axis = figure.subplots(1, 3)
+    for side, style in (("inner", "o-"), ("outer", "s--")):
+        load_axis.plot(azimuth, np.asarray(values[f"balls.{side}.load"]) / 1e3, style, ms=4, label=f"{side} raceway")
+        angle_axis.plot(azimuth, np.degrees(np.asarray(values[f"balls.{side}.contact_angle"])), style, ms=4,
+                        label=f"{side} raceway")
+        pressure_axis.plot(azimuth, np.asarray(values[f"balls.{side}.max_pressure"]) / 1e9, style, ms=4,
+                           label=f"{side} raceway")
+    pressure_axis.axhline(ISO76_BALL_PRESSURE_LIMIT / 1e9, color="tab:red", lw=0.8)
+    pressure_axis.text(2.0, ISO76_BALL_PRESSURE_LIMIT / 1e9 * 1.01, "ISO 76 limit 4.2 GPa", fontsize=8,
+                       color="tab:red")
+    load_axis.set(ylabel="ball load Q [kN]", title="load distribution")
+    angle_axis.set(ylabel="contact angle α [deg]", title="contact angles")
+    pressure_axis.set(ylabel="peak pressure p0 [GPa]", title="peak Hertz pressure",
+                      ylim=(0, 1.1 * max(ISO76_BALL_PRESSURE_LIMIT / 1e9,
+                                         float(np.nanmax(values["balls.inner.max_pressure"])) / 1e9,
+                                         float(np.nanmax(values["balls.outer.max_pressure"])) / 1e9)))
+    for axis in (load_axis, angle_axis, pressure_axis):
+        axis.set(xlabel="ball azimuth ψ [deg] (from +x towards +y)", xticks=np.arange(0, 361, 60))
+        axis.grid(alpha=0.3)
+        axis.legend(fontsize=8)
+    figure.suptitle(f"{result.model.scene.title}: balls around the bearing")
+
+
+EQUILIBRIUM = Block(
+    name="equilibrium",
+    bearing_types=BALL_BEARING_KINDS,
+    enabled_by=None,
+    requires=("raceway_contact",),
+    inputs=("bearing", "operating"),
+    uses=("centrifugal", "gyroscopic"),
+    outputs=(
+        Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]", in_report=False),
+        Output("force", "N, N*m", "", "load the balls carry [Fx, Fy, Fz, Mx, My] (Fz follows under axial_displacement)",
+               in_report=False),
+        Output("converged", "", "", "the equilibrium solver converged to a state within the model", in_report=False),
+        Output("residual", "", "", "largest scaled residual of ring and ball equations", in_report=False),
+        Output("validity.approach_ratio", "", "",
+               f"largest contact approach δ / Dw (model limit {ball_validity.MAX_APPROACH_FRACTION:g})", in_report=False),
+        Output("validity.contact_angle", "rad", "deg", "largest |contact angle| (model limit 90°)", in_report=False),
+        Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x", column="ψ"),
+        *_ball_outputs("inner"),
+        *_ball_outputs("outer"),
+        Output("balls.orbital_speed", "rad/s", "rpm", "orbital (cage) speed ω_m", column="ωm"),
+        Output("balls.spin_speed", "rad/s", "rpm", "ball spin speed ω_R about its own axis", in_report=False),
+        Output("balls.centrifugal_force", "N", "N", "centrifugal force F_c", effect="centrifugal", column="Fc"),
+        Output("balls.gyroscopic_moment", "N*m", "N*m",
+               "gyroscopic moment M_g (dL/dt = M_g e_t, along the direction of increasing azimuth)",
+               effect="gyroscopic", column="Mg"),
+    ),
+    compute=_equilibrium,
+    checks=_equilibrium_checks,
+    plot=_azimuth_plot,
+)
+
+
+# --- stiffness ---------------------------------------------------------------------------------
+
+def _stiffness(inputs: dict, settings: dict, results: dict) -> dict:
+    matrix = ball_equilibrium.stiffness_matrix(results["displacement"], inputs["bearing"], inputs["operating"],
+                                               ball_model(settings))
+    return {"stiffness": matrix}
+
+
+def _stiffness_against_sweep(result, figure):
+    """Diagonal stiffness against the first swept quantity (scalar sweeps) or the point index."""
+    from ..formatting import SI_OF_DIMENSION, SWEEP_DISPLAY
+    from ..registry import all_keys
+
+    key, values = next(iter(result.sweep_axes.items()))
+    dimension = all_keys()[key].dimension
+    if np.ndim(values) == 1 and dimension in SWEEP_DISPLAY:
+        x = to_display(values, SI_OF_DIMENSION[dimension], SWEEP_DISPLAY[dimension])
+        label = f"{key} [{SWEEP_DISPLAY[dimension]}]"
+    else:
+        x, label = np.arange(len(values)), f"{key} (point)"
+    stiffness = np.asarray(result.values["stiffness"]).reshape((len(values), -1, 5, 5))[:, 0]
+    translation, rotation = figure.subplots(1, 2)
+    for i, name in enumerate(("Kxx", "Kyy", "Kzz")):
+        translation.plot(x, stiffness[:, i, i] * 1e-6, label=name)
+    for i, name in ((3, "Kθxθx"), (4, "Kθyθy")):
+        rotation.plot(x, stiffness[:, i, i] * 1e-3, label=name)
+    translation.set(xlabel=label, ylabel="stiffness [N/µm]", title="translational stiffness")
+    rotation.set(xlabel=label, ylabel="stiffness [N·m/mrad]", title="tilting stiffness")
+    for axis in (translation, rotation):
+        axis.grid(alpha=0.3)
+        axis.legend()
+    figure.suptitle(result.model.scene.title)
+
+
+STIFFNESS = Block(
+    name="stiffness",
+    bearing_types=BALL_BEARING_KINDS,
+    enabled_by=("stiffness", True),
+    requires=("equilibrium",),
+    inputs=("bearing", "operating"),
+    outputs=(Output("stiffness", "N/m, N/rad, N*m/m, N*m/rad", "",
+                    "5×5 stiffness K = dF/dΔ, balls re-equilibrated (jacfwd through the implicit solve)",
+                    in_report=False),),
+    compute=_stiffness,
+    sweep_plot=_stiffness_against_sweep,
+)
+
+
+# --- report ------------------------------------------------------------------------------------
+
+def _header(result) -> list[str]:
+    scene, inputs = result.model.scene, result.model.inputs
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    force = to_display(operating.force, "N", "kN")
+    moment = np.asarray(operating.moment)
+    speeds = [to_display(s, "rad/s", "rpm") for s in (operating.inner_speed, operating.outer_speed)]
+    return [
+        scene.title,
+        f"scene: {scene.source}",
+        "",
+        f"Bearing    {bearing.kind}, {bearing.ball_count} balls, Dw = {float(bearing.ball_diameter) * 1e3:.4f} mm, "
+        f"dm = {float(bearing.pitch_diameter) * 1e3:.3f} mm, fi = {float(bearing.inner_groove_ratio):.4f}, "
+        f"fo = {float(bearing.outer_groove_ratio):.4f}",
+        f"Materials  rings {bearing.ring_material.name}, balls {bearing.ball_material.name}",
+        f"Operating  inner ring {float(speeds[0]):.1f} r/min, outer ring {float(speeds[1]):.1f} r/min; "
+        f"F = [{', '.join(f'{f:.3f}' for f in force)}] kN; M = [{', '.join(f'{m:.1f}' for m in moment)}] N·m",
+    ]
+
+
+def _stiffness_lines(matrix) -> list[str]:
+    k = np.asarray(matrix)
+    names = ["x", "y", "z", "θx", "θy"]
+    lines = ["", "Stiffness K = dF/dΔ (balls re-equilibrated; rows F: N, M: N·m; columns δ: µm, θ: mrad)",
+             "  " + " " * 6 + "".join(f"{'∂/∂' + n:>13}" for n in names)]
+    scale = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # per µm and per mrad
+    row_names = ["Fx", "Fy", "Fz", "Mx", "My"]
+    for i in range(5):
+        lines.append(f"  {row_names[i]:<6}" + "".join(f"{k[i, j] * scale[j]:>13.5g}" for j in range(5)))
+    return lines
+
+
+def _ball_table_lines(result) -> list[str]:
+    outputs, values = result.model.outputs, result.values
+    shown = [key for key, out in outputs.items() if out.column and key in values]
+    header = "".join(f"{outputs[k].column + ' [' + unit_label(outputs[k].display) + ']':>12}" for k in shown)
+    lines = ["", "Balls (load distribution; semi-axes and spin speed in --json; – where a ball carries no load)",
+             "   #" + header]
+    columns = [to_display(values[k], outputs[k].unit, outputs[k].display) for k in shown]
+    for j in range(len(columns[0])):
+        lines.append(f"  {j:>2}" + "".join(f"{'–' if np.isnan(c[j]) else format_number(c[j]):>12}" for c in columns))
+    return lines
+
+
+def _report(result) -> list[str]:
+    values = result.values
+    d = np.asarray(values["displacement"])
+    lines = ["", "Inner-ring displacement (from the just-touching position at the free contact angle)",
+             f"  δx = {d[0] * 1e6:.3f} µm, δy = {d[1] * 1e6:.3f} µm, δz = {d[2] * 1e6:.3f} µm, "
+             f"θx = {d[3] * 1e3:.4f} mrad, θy = {d[4] * 1e3:.4f} mrad"]
+    if result.model.inputs["operating"].axial_displacement is not None:
+        lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
+    if "stiffness" in values:
+        lines += _stiffness_lines(values["stiffness"])
+    lines += _ball_table_lines(result)
+    residual = float(values["residual"])
+    state = ("converged" if bool(values["converged"]) else "DID NOT CONVERGE"
+             if residual >= ball_equilibrium.RESIDUAL_TOLERANCE else "converged to a state OUTSIDE THE MODEL")
+    return lines + ["", f"Equilibrium solver: {state} (largest scaled residual {residual:.1e})"]
+
+
+def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
+    columns = [state_column("converged", values["converged"], ok="yes")]
+    if "stiffness" in values:
+        columns += [(f"{name} [N/µm]", [format_number(k[i, i] * 1e-6) for k in values["stiffness"]])
+                    for i, name in enumerate(("Kxx", "Kyy", "Kzz"))]
+    columns.append(("δz [µm]", [format_number(d[2] * 1e6) for d in values["displacement"]]))
+    columns.append(("max p0i [GPa]", [format_number(p.max() / 1e9) for p in values["balls.inner.max_pressure"]]))
+    return columns
+
+
+ADAPTER = register(Adapter(
+    name="ball",
+    bearing_types=BALL_BEARING_KINDS,
+    keys={
+        "bearing.bore": quantity("length"),
+        "bearing.outer_diameter": quantity("length"),
+        "bearing.ball_diameter": quantity("length"),
+        "bearing.pitch_diameter": quantity("length"),
+        "bearing.balls": Key("integer"),
+        "bearing.inner_groove_radius": quantity("length"),
+        "bearing.outer_groove_radius": quantity("length"),
+        "bearing.inner_groove_ratio": Key("number"),
+        "bearing.outer_groove_ratio": Key("number"),
+        "bearing.contact_angle": quantity("angle", "free contact angle"),
+        "bearing.radial_clearance": quantity("length", "diametral"),
+        "bearing.dynamic_load_rating": quantity("force"),
+        "operating.inner_speed": quantity("angular_speed"),
+        "operating.outer_speed": quantity("angular_speed"),
+        "operating.force": Key("quantities", "force", length=3, doc="[Fx, Fy, Fz] on the inner ring"),
+        "operating.moment": Key("quantities", "moment", length=2, doc="[Mx, My] on the inner ring"),
+        "operating.axial_displacement": quantity("length", "preload by axial displacement: δz held fixed, Fz must be 0"),
+        "effects.centrifugal": Key("boolean"),
+        "effects.gyroscopic": Key("boolean"),
+        "effects.stiffness": Key("boolean"),
+        "fidelity.hertz": Key("choice", choices=("exact", "brewe_hamrock", "hamrock_brewe"),
+                              read_by=("raceway_contact", "equilibrium")),
+        "fidelity.race_control": Key("choice", choices=("outer", "inner"), read_by=("equilibrium",),
+                                     doc="raceway control hypothesis of the ball kinematics"),
+        "fidelity.hertz_constants": Key("choice", choices=("contact_angle", "free_contact_angle"),
+                                        read_by=("equilibrium",),
+                                        doc="Hertz constants of the ball contacts at their current angle or at α0"),
+    },
+    required={kind: BALL_KEYS for kind in BALL_BEARING_KINDS},
+    inputs=(InputBuilder(("bearing",), BALL_BEARING_KINDS, _bearing),
+            InputBuilder(("operating",), BALL_BEARING_KINDS, _operating)),
+    blocks=(RACEWAY_CONTACT, EQUILIBRIUM, STIFFNESS),
+    header=_header,
+    report=_report,
+    sweep_columns=_sweep_columns,
+))

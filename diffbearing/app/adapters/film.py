@@ -1,0 +1,356 @@
+"""Lubricant films (effect `film`) and starvation (effect `starvation`).
+
+Ball bearings: Hamrock–Dowson point-contact films at every loaded ball (film = "hamrock_dowson").
+Rollers, fully flooded and in pure rolling: Pan–Hamrock (film = "formula"), the numerical line
+contact at mid-length ("line") or the 2-D finite line contact over the whole roller
+("finite_line"). Starvation (with operating.oil_layer): the film of the same level with the inlet
+supplied by an oil layer only, and Er = (h_c,ff − h_c)/h_c,ff against the flooded film (starved
+when Er > 1 %).
+"""
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from ... import film_formulas, hertz
+from ...finite_line_ehl import finite_line_film, half_domain_grid
+from ...kinematics import raceway_entrainment_speed
+from ...line_ehl import check_nodes, density_ratio, line_film
+from ...params import BALL_BEARING_KINDS, _as_float, check_range
+from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
+from ...roller_geometry import ROLLER_KINDS, equivalent_radius, film_length, roller_modulus
+from ..formatting import column, state_column
+from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+
+DEFAULT_LINE_NODES = 513
+# The finite line level (film = "finite_line"): the 2-D EHL of the whole roller length, half
+# domain, on fidelity.grid = [nx, ny]: nx nodes along rolling by ny cells along the whole roller,
+# of which the ⌈ny/2⌉ on y ≥ 0 are solved (`finite_line_ehl.half_domain_grid`).
+DEFAULT_FINITE_LINE_GRID = (33, 96)
+# Chevalier's γ for a line contact: no side flow, so the film follows the supply until it meets
+# the flooded one; γ = 20 matches the 1-D numerical starved films (`benchmarks/line_ehl.py`).
+LINE_STARVATION_SHARPNESS = 20.0
+
+
+def _oil_layer(v, built) -> dict:
+    if "operating.oil_layer" not in v:
+        raise ValueError("effects.starvation needs operating.oil_layer (the inlet oil supply layer, e.g. \"0.8 um\")")
+    layer = v["operating.oil_layer"]
+    check_range("operating.oil_layer", layer, low=1e-9, high=1e-3, unit=" m",
+                why="a layer between 1 nm and 1 mm; omit it for a fully flooded inlet")
+    return {"oil_layer": _as_float(layer)}
+
+
+# --- ball bearings: Hamrock–Dowson at every ball ----------------------------------------------
+
+def _film_hamrock_dowson(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, operating, lubricant = inputs["bearing"], inputs["operating"], inputs["lubricant"]
+    modulus = ball_raceway_modulus(bearing)
+    orbital = results["balls.orbital_speed"]
+    out = {}
+    for side, curvature, ring_speed in (("inner", inner_curvature, operating.inner_speed),
+                                        ("outer", outer_curvature, operating.outer_speed)):
+        load, angle = results[f"balls.{side}.load"], results[f"balls.{side}.contact_angle"]
+        radius = rolling_radius(bearing, angle, side)
+        speed = raceway_entrainment_speed(ring_speed, orbital, bearing.pitch_diameter, diameter_ratio(bearing, angle),
+                                          side)
+        ellipticity = hertz.ellipticity(curvature(bearing, angle)[1])
+        loaded = load > 0
+        central, minimum = film_formulas.hamrock_dowson_point(
+            jnp.where(loaded, load, 1.0), radius, ellipticity, speed, lubricant.viscosity,
+            lubricant.pressure_viscosity, modulus)
+        out |= {f"film.{side}.central": jnp.where(loaded, central, jnp.nan),
+                f"film.{side}.minimum": jnp.where(loaded, minimum, jnp.nan),
+                f"film.{side}.entrainment_speed": speed}
+        if inputs["roughness"] is not None:
+            out[f"film.{side}.film_parameter"] = jnp.where(
+                loaded, film_formulas.film_parameter(minimum, inputs["roughness"]), jnp.nan)
+    return out
+
+
+def _ball_film_outputs(side):
+    short = side[0]
+    return (
+        Output(f"film.{side}.central", "m", "um", f"central film h_c (Hamrock–Dowson), {side}", column=f"hc,{short}"),
+        Output(f"film.{side}.minimum", "m", "um", f"minimum film h_min (Hamrock–Dowson), {side}",
+               column=f"hmin,{short}"),
+        Output(f"film.{side}.entrainment_speed", "m/s", "m/s", f"mean entrainment speed u, {side}", in_report=False),
+        Output(f"film.{side}.film_parameter", "", "", f"film parameter Λ = h_min/σ, {side}", column=f"Λ{short}"),
+    )
+
+
+# --- rollers: fully flooded -------------------------------------------------------------------
+
+def film_settings(settings: dict, inputs: dict) -> None:
+    """ValueError for a bad grid (of the line or the finite line level) or a roller scene without
+    entrainment speed."""
+    speed = inputs["operating"].entrainment_speed
+    if not isinstance(speed, jax.core.Tracer) and float(speed) <= 0:
+        raise ValueError("effects.film needs an entrainment speed: give operating.inner_speed (or outer_speed) "
+                         "and bearing.pitch_diameter (cylindrical roller)")
+    if settings["effects"].get("film") == "line":
+        check_nodes(_line_nodes(settings))
+    if settings["effects"].get("film") == "finite_line":
+        finite_line_settings(settings)
+
+
+def _line_nodes(settings: dict) -> int:
+    """Nodes of the line EHL level: fidelity.grid[0], default 513."""
+    return settings["fidelity"].get("grid", [DEFAULT_LINE_NODES])[0]
+
+
+def finite_line_settings(settings: dict) -> tuple[int, int]:
+    """(nx, ny on the half domain) of the finite line level from fidelity.grid (whole roller
+    length), default [33, 96]; ValueError beyond the dense Newton's size."""
+    return half_domain_grid(settings["fidelity"].get("grid", DEFAULT_FINITE_LINE_GRID))
+
+
+def _roller_film_case(inputs: dict):
+    bearing, loading, lubricant = inputs["bearing"], inputs["operating"], inputs["lubricant"]
+    return (loading.load / film_length(bearing), equivalent_radius(bearing, loading, jnp.asarray(0.0)),
+            loading.entrainment_speed, lubricant.viscosity, lubricant.pressure_viscosity, roller_modulus(bearing))
+
+
+def _film_formula(inputs: dict, settings: dict, results: dict) -> dict:
+    central, minimum = film_formulas.pan_hamrock_line(*_roller_film_case(inputs))
+    return {"film.central": central, "film.minimum": minimum,
+            "film.entrainment_speed": inputs["operating"].entrainment_speed}
+
+
+def _line(inputs: dict, settings: dict, oil_layer=None):
+    lubricant = inputs["lubricant"]
+    return line_film(*_roller_film_case(inputs), nodes=_line_nodes(settings), oil_layer=oil_layer,
+                     viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+
+
+def _film_line(inputs: dict, settings: dict, results: dict) -> dict:
+    solved = _line(inputs, settings)
+    return {"film.central": solved.central, "film.minimum": solved.minimum, "film.converged": solved.converged,
+            "film.entrainment_speed": inputs["operating"].entrainment_speed, "film.x": solved.x,
+            "film.pressure": solved.pressure, "film.thickness": solved.thickness}
+
+
+def _finite_line(inputs: dict, settings: dict, oil_layer=None):
+    bearing, lubricant = inputs["bearing"], inputs["lubricant"]
+    _, radius, speed, viscosity, pressure_viscosity, modulus = _roller_film_case(inputs)
+    return finite_line_film(inputs["operating"].load, radius, speed, viscosity, pressure_viscosity, modulus,
+                            bearing.profile, bearing.length, film_length(bearing), grid=finite_line_settings(settings),
+                            viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law,
+                            oil_layer=oil_layer)
+
+
+_FINITE_LINE_FIELDS = ("central", "minimum", "minimum_position", "converged", "x", "y", "pressure", "thickness")
+
+
+def _film_finite_line(inputs: dict, settings: dict, results: dict) -> dict:
+    solved = _finite_line(inputs, settings)
+    return {"film.entrainment_speed": inputs["operating"].entrainment_speed,
+            **{f"film.{name}": getattr(solved, name) for name in _FINITE_LINE_FIELDS}}
+
+
+_ROLLER_FILM_COMMON = (
+    Output("film.central", "m", "um", "central film h_c at x = 0"),
+    Output("film.minimum", "m", "um", "minimum film h_min"),
+    Output("film.entrainment_speed", "m/s", "m/s", "mean entrainment speed u (pure rolling)"),
+)
+
+
+def _finite_line_outputs(prefix: str, case: str):
+    return (
+        Output(f"{prefix}.minimum_position", "m", "mm", f"where the {case} h_min is, y from mid-length"),
+        Output(f"{prefix}.converged", "", "", f"the {case} finite line EHL Newton converged", in_report=False),
+        Output(f"{prefix}.x", "m", "mm", "nodes along rolling (x), inlet at −4.5 b", in_report=False),
+        Output(f"{prefix}.y", "m", "mm", "cell centres along the roller from mid-length (y ≥ 0)", in_report=False),
+        Output(f"{prefix}.pressure", "Pa", "GPa", f"{case} film pressure p[x, y]", in_report=False),
+        Output(f"{prefix}.thickness", "m", "um", f"{case} film thickness (the gap where dry) h[x, y]",
+               in_report=False),
+    )
+
+
+# --- rollers: starved ----------------------------------------------------------------------------
+
+def _starvation_formula(inputs: dict, settings: dict, results: dict) -> dict:
+    oil_layer = inputs["oil_layer"]
+    load_per_length, radius, _, _, _, modulus = _roller_film_case(inputs)
+    density = density_ratio(hertz.line_contact(load_per_length, radius, modulus).max_pressure,
+                            inputs["lubricant"].density_law)
+    flooded_central, flooded_minimum = results["film.central"], results["film.minimum"]
+    central = film_formulas.starved_film(flooded_central, oil_layer, density, LINE_STARVATION_SHARPNESS)
+    minimum = flooded_minimum * central / flooded_central  # the flooded h_min/h_c ratio kept (an estimate)
+    return {"starvation.oil_layer": oil_layer, "starvation.central": central, "starvation.minimum": minimum,
+            "starvation.relative_error": 1.0 - central / flooded_central}
+
+
+def _starvation_line(inputs: dict, settings: dict, results: dict) -> dict:
+    oil_layer = inputs["oil_layer"]
+    solved = _line(inputs, settings, oil_layer)
+    return {"starvation.oil_layer": oil_layer, "starvation.central": solved.central, "starvation.minimum": solved.minimum,
+            "starvation.relative_error": 1.0 - solved.central / results["film.central"],
+            "starvation.meniscus": solved.meniscus, "starvation.converged": solved.converged,
+            "starvation.x": solved.x, "starvation.pressure": solved.pressure, "starvation.thickness": solved.thickness}
+
+
+def _starvation_finite_line(inputs: dict, settings: dict, results: dict) -> dict:
+    solved = _finite_line(inputs, settings, oil_layer=inputs["oil_layer"])
+    return {"starvation.oil_layer": inputs["oil_layer"],
+            "starvation.relative_error": 1.0 - solved.central / results["film.central"],
+            "starvation.meniscus": solved.meniscus,
+            **{f"starvation.{name}": getattr(solved, name) for name in _FINITE_LINE_FIELDS}}
+
+
+_STARVATION_COMMON = (
+    Output("starvation.oil_layer", "m", "um", "inlet oil supply layer h_oil"),
+    Output("starvation.central", "m", "um", "starved central film h_c"),
+    Output("starvation.minimum", "m", "um", "starved minimum film h_min"),
+    Output("starvation.relative_error", "", "percent", "Er = (h_c,ff − h_c)/h_c,ff (starved if > 1 %)"),
+)
+
+
+# --- plots ---------------------------------------------------------------------------------------
+
+def _line_film_plot(result, figure):
+    """Pressure and film thickness along the rolling direction of the line EHL solution, with the
+    starved solution beside the flooded one when the scene names starvation."""
+    values = result.values
+    pressure_axis, film_axis = figure.subplots(1, 2)
+    cases = [("film", "fully flooded")]
+    if "starvation.x" in values:
+        layer = float(values["starvation.oil_layer"]) * 1e6
+        cases.append(("starvation", f"starved, h_oil = {layer:.3g} µm"))
+    for prefix, label in cases:
+        x = np.asarray(values[f"{prefix}.x"]) * 1e3
+        pressure_axis.plot(x, np.asarray(values[f"{prefix}.pressure"]) / 1e9, label=label)
+        film_axis.plot(x, np.asarray(values[f"{prefix}.thickness"]) * 1e6, label=label)
+    film_axis.axhline(float(values["film.central"]) * 1e6, color="grey", lw=0.8, ls="--", label="flooded central film")
+    pressure_axis.set(xlabel="x, rolling direction [mm]", ylabel="pressure [GPa]", title="film pressure")
+    film_axis.set(xlabel="x, rolling direction [mm]", ylabel="film thickness [µm]", title="film thickness",
+                  ylim=(0, 4 * float(values["film.central"]) * 1e6))
+    for axis in (pressure_axis, film_axis):
+        axis.grid(alpha=0.3)
+        axis.legend()
+    figure.suptitle(f"{result.model.scene.title}: line EHL")
+
+
+def _finite_line_film_plot(result, figure):
+    """Maps of the finite line EHL solution (the starved one when the scene names starvation) over
+    the half roller, and the film along the roller through its minimum, flooded and starved."""
+    values = result.values
+    prefix = "starvation" if "starvation.pressure" in values else "film"
+    x, y = np.asarray(values[f"{prefix}.x"]) * 1e3, np.asarray(values[f"{prefix}.y"]) * 1e3
+    pressure_axis, film_axis, line_axis = figure.subplots(1, 3)
+    shown = pressure_axis.pcolormesh(y, x, np.asarray(values[f"{prefix}.pressure"]) / 1e9, shading="nearest",
+                                     cmap="viridis")
+    figure.colorbar(shown, ax=pressure_axis, label="pressure [GPa]")
+    thickness = np.asarray(values[f"{prefix}.thickness"]) * 1e6
+    shown = film_axis.pcolormesh(y, x, thickness, shading="nearest", cmap="magma",
+                                 vmax=3 * float(values["film.central"]) * 1e6)
+    figure.colorbar(shown, ax=film_axis, label="film thickness [µm]")
+    case = "starved" if prefix == "starvation" else "flooded"
+    for axis, name in ((pressure_axis, "pressure"), (film_axis, "film")):
+        axis.set(xlabel="y from mid-length [mm]", ylabel="x, rolling [mm]", title=f"{case} {name}")
+    for name, label in (("film", "fully flooded"), ("starvation", "starved")):
+        if f"{name}.thickness" in values:
+            film = np.asarray(values[f"{name}.thickness"]) * 1e6
+            row = np.unravel_index(np.argmin(film), film.shape)[0]
+            line_axis.plot(np.asarray(values[f"{name}.y"]) * 1e3, film[row], label=f"{label}, at its h_min row")
+    line_axis.set(xlabel="y from mid-length [mm]", ylabel="film thickness [µm]", title="film along the roller",
+                  ylim=(0, 3 * float(values["film.central"]) * 1e6))
+    line_axis.grid(alpha=0.3)
+    line_axis.legend()
+    figure.suptitle(f"{result.model.scene.title}: finite line EHL, {len(x)} × {len(y)} half-domain grid")
+
+
+# --- report --------------------------------------------------------------------------------------
+
+def _report(result) -> list[str]:
+    values = result.values
+    if "film.y" in values:  # the finite line level
+        level, grid = "finite line EHL", f"{len(values['film.x'])} × {len(values['film.y'])} half-domain grid"
+        meniscus = "a meniscus per y cell by mass balance"
+    else:
+        level, grid, meniscus = "line EHL", f"{len(values.get('film.x', ()))} nodes", "meniscus by flux balance"
+    lines = []
+    for key, solve in (("film.converged", f"Newton, {grid}, fully flooded"),
+                       ("starvation.converged", f"starved by the oil layer, {meniscus}")):
+        if key in values:
+            state = "converged" if bool(values[key]) else "DID NOT CONVERGE (values are the last iterate)"
+            lines.append(f"  {level} ({solve}): {state}")
+    return lines
+
+
+def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
+    columns = []
+    for prefix, name in (("film", "film"), ("starvation", "starved")):
+        if f"{prefix}.central" in values and np.ndim(values[f"{prefix}.central"]) == 1:  # roller contacts
+            columns.append(column(f"{name} h_c [µm]", values[f"{prefix}.central"], 1e6))
+            columns.append(column(f"{name} h_min [µm]", values[f"{prefix}.minimum"], 1e6))
+            if f"{prefix}.converged" in values:
+                columns.append(state_column(name, values[f"{prefix}.converged"]))
+    return columns
+
+
+ROLLER_INPUTS = ("bearing", "operating", "lubricant")
+_FILM_BLOCKS = ("film_line", "film_finite_line", "starvation_line", "starvation_finite_line")
+
+ADAPTER = register(Adapter(
+    name="film",
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    keys={
+        "effects.film": Key("choice", choices=(False, "hamrock_dowson", "formula", "line", "finite_line")),
+        "effects.starvation": Key("boolean"),
+        "operating.oil_layer": quantity("length", "inlet oil supply layer"),
+        "fidelity.grid": Key("integers", length=2, read_by=_FILM_BLOCKS,
+                             doc="[nx, ny] cells along rolling and along the whole roller "
+                                 "(2-D EHL solves the half y ≥ 0)"),
+    },
+    inputs=(InputBuilder(("oil_layer",), ROLLER_KINDS, _oil_layer),),
+    blocks=(
+        Block(name="film_hamrock_dowson", bearing_types=BALL_BEARING_KINDS, enabled_by=("film", "hamrock_dowson"),
+              requires=("equilibrium",), inputs=("bearing", "operating", "lubricant", "roughness"),
+              outputs=(*_ball_film_outputs("inner"), *_ball_film_outputs("outer")), compute=_film_hamrock_dowson),
+        Block(name="film_formula", bearing_types=ROLLER_KINDS, enabled_by=("film", "formula"),
+              requires=("roller_geometry",), inputs=ROLLER_INPUTS, outputs=_ROLLER_FILM_COMMON,
+              compute=_film_formula, validate=film_settings),
+        Block(name="film_line", sequential_sweep=True, bearing_types=ROLLER_KINDS, enabled_by=("film", "line"),
+              requires=("roller_geometry",), inputs=ROLLER_INPUTS,
+              outputs=(
+                  *_ROLLER_FILM_COMMON,
+                  Output("film.converged", "", "", "the line EHL Newton converged", in_report=False),
+                  Output("film.x", "m", "mm", "nodes along rolling (x), inlet at −4.5 b", in_report=False),
+                  Output("film.pressure", "Pa", "GPa", "film pressure p(x)", in_report=False),
+                  Output("film.thickness", "m", "um", "film thickness h(x)", in_report=False),
+              ),
+              compute=_film_line, validate=film_settings, plot=_line_film_plot),
+        Block(name="film_finite_line", sequential_sweep=True, bearing_types=ROLLER_KINDS,
+              enabled_by=("film", "finite_line"), requires=("roller_geometry",), inputs=ROLLER_INPUTS,
+              outputs=(*_ROLLER_FILM_COMMON, *_finite_line_outputs("film", "flooded")),
+              compute=_film_finite_line, validate=film_settings, plot=_finite_line_film_plot),
+        Block(name="starvation_formula", bearing_types=ROLLER_KINDS, enabled_by=("starvation", True),
+              only_with=("film", ("formula",)), requires=("film_formula",), inputs=ROLLER_INPUTS + ("oil_layer",),
+              outputs=_STARVATION_COMMON, compute=_starvation_formula),
+        Block(name="starvation_line", sequential_sweep=True, bearing_types=ROLLER_KINDS,
+              enabled_by=("starvation", True), only_with=("film", ("line",)), requires=("film_line",),
+              inputs=ROLLER_INPUTS + ("oil_layer",),
+              outputs=(
+                  *_STARVATION_COMMON,
+                  Output("starvation.meniscus", "m", "mm", "inlet meniscus x_m, where the pressure starts"),
+                  Output("starvation.converged", "", "", "the starved line EHL Newton converged", in_report=False),
+                  Output("starvation.x", "m", "mm", "nodes along rolling (x), from the meniscus", in_report=False),
+                  Output("starvation.pressure", "Pa", "GPa", "starved film pressure p(x)", in_report=False),
+                  Output("starvation.thickness", "m", "um", "starved film thickness h(x)", in_report=False),
+              ),
+              compute=_starvation_line, plot=_line_film_plot),
+        Block(name="starvation_finite_line", sequential_sweep=True, bearing_types=ROLLER_KINDS,
+              enabled_by=("starvation", True), only_with=("film", ("finite_line",)), requires=("film_finite_line",),
+              inputs=ROLLER_INPUTS + ("oil_layer",),
+              outputs=(
+                  *_STARVATION_COMMON,
+                  Output("starvation.meniscus", "m", "mm", "inlet meniscus x_m per y cell, where the pressure starts",
+                         in_report=False),
+                  *_finite_line_outputs("starvation", "starved"),
+              ),
+              compute=_starvation_finite_line, plot=_finite_line_film_plot),
+    ),
+    report=_report,
+    sweep_columns=_sweep_columns,
+))

@@ -1,0 +1,133 @@
+"""A scene assembled into a model: the blocks its effects name, the input pytrees they read.
+
+`build_model(scene)` → `Model`; `run_model(model)` compiles and runs it, timing both (a scene
+with a [sweep] table runs as one batch, see sweep.py). Every scene key must be read by what the
+scene runs: a key no block reads is refused (ValueError naming it), never silently ignored.
+"""
+
+import dataclasses
+import time
+from collections.abc import Mapping
+
+import jax
+import numpy as np
+
+from . import registry
+from .result import RunResult
+from .scene import Scene
+from .sweep import run_sweep, sweep_axes
+
+# keys every scene may hold that no input builder reads: the report's title, the bearing type that
+# selects the adapters, and the effects and fidelity tables (checked by `resolve` and `read_by`)
+_SETTINGS = ("title", "bearing.type")
+
+
+class Reads(Mapping):
+    """The scene's {dotted key: SI value}, recording which keys the input builders ask for."""
+
+    def __init__(self, values: dict):
+        self._values = values
+        self.asked: set[str] = set()
+
+    def __getitem__(self, key):
+        self.asked.add(key)
+        return self._values[key]
+
+    def get(self, key, default=None):
+        self.asked.add(key)
+        return self._values.get(key, default)
+
+    def __contains__(self, key):
+        return key in self._values
+
+    def __iter__(self):
+        return iter(self._values)
+
+    def __len__(self):
+        return len(self._values)
+
+
+def build_inputs(bearing_type: str, blocks, values) -> dict:
+    """{input name: parameter pytree} the blocks read, built from the scene's SI values (a dict
+    or a `Reads`; values may be JAX tracers in a sweep). ValueError names a bad value."""
+    needed = dict.fromkeys(name for block in blocks for name in block.inputs)
+    inputs: dict = {}
+    for builder in registry.input_builders(bearing_type, needed):
+        inputs |= builder.build(values, inputs)
+    return inputs
+
+
+@dataclasses.dataclass
+class Model:
+    """A scene assembled: its inputs pytree and the blocks to run, in order."""
+
+    scene: Scene
+    inputs: dict
+    blocks: list
+    settings: dict
+    not_implemented: list
+    sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a [sweep] table
+
+    @property
+    def outputs(self) -> dict:
+        return registry.outputs_of(self.blocks, self.settings["effects"])
+
+    def function(self):
+        """The pure function inputs → {output key: array} (jit, vmap and grad it freely)."""
+        return registry.evaluate(self.blocks, self.settings)
+
+    def inputs_from_values(self, values: dict) -> dict:
+        """The inputs pytree of this model's blocks from {dotted key: SI value} (a sweep's point)."""
+        return build_inputs(self.scene.bearing_type, self.blocks, values)
+
+
+def _unread(scene: Scene, blocks, asked: set, axes: dict) -> list[str]:
+    """Scene keys (and swept keys) that nothing the scene runs reads."""
+    keys = registry.all_keys()
+    running = {block.name for block in blocks}
+    unread = []
+    for key in list(scene.values) + list(axes):
+        if key in _SETTINGS or key.startswith("effects."):
+            continue
+        if key.startswith("fidelity."):
+            if not running & set(keys[key].read_by):
+                unread.append(key)
+        elif key not in asked:
+            unread.append(key)
+    return list(dict.fromkeys(unread))
+
+
+def build_model(scene: Scene) -> Model:
+    """Assemble the model of a scene: only the blocks its effects name (and what they require),
+    and the inputs those blocks read. ValueError for bad values, settings or unread keys."""
+    blocks, missing = registry.resolve(scene.bearing_type, scene.table("effects"))
+    values = Reads(scene.values)
+    inputs = build_inputs(scene.bearing_type, blocks, values)
+    axes = sweep_axes(scene.sweep) if scene.sweep else {}  # bad entries fail here, before compiling
+    settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
+    for block in blocks:
+        if block.validate is not None:
+            block.validate(settings, inputs)  # bad grid or tolerance fails here, before compiling
+    unread = _unread(scene, blocks, values.asked, axes)
+    if unread:
+        effects = ", ".join(f"{k} = {v!r}" for k, v in settings["effects"].items()) or "none"
+        raise ValueError(f"scene key{'s' if len(unread) > 1 else ''} {', '.join(repr(k) for k in unread)} "
+                         f"not read by anything this scene runs (effects: {effects}); remove "
+                         f"{'them' if len(unread) > 1 else 'it'} or switch on the effect that reads "
+                         f"{'them' if len(unread) > 1 else 'it'}")
+    return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,
+                 sweep_axes=axes)
+
+
+def run_model(model: Model, progress: bool = True) -> RunResult:
+    """Compile (timed; reused when cached), then run (timed, excluding compilation) the model;
+    a scene with a [sweep] table runs as one vmapped batch (see sweep.py)."""
+    if model.sweep_axes:
+        return run_sweep(model, model.sweep_axes, progress=progress)
+    start = time.perf_counter()
+    executable, cached = registry.compiled(model.blocks, model.settings, model.inputs)
+    compile_s = 0.0 if cached else time.perf_counter() - start
+    start = time.perf_counter()
+    values = jax.block_until_ready(executable(model.inputs))
+    run_s = time.perf_counter() - start
+    return RunResult(model, {key: np.asarray(value) for key, value in values.items()}, compile_s, run_s)

@@ -1,0 +1,257 @@
+"""The effect registry: adapters declare scene keys, inputs, blocks and outputs; `resolve` picks
+the blocks a scene asks for and `evaluate` runs them.
+
+An `Adapter` (one module in `diffbearing.app.adapters` per effect family) declares
+
+* `keys`: the scene keys it reads, {dotted key: `Key`}, effects and fidelity keys included;
+* `required`: per bearing type, the keys without which its inputs cannot be built;
+* `inputs`: `InputBuilder`s, each turning the scene's SI values into parameter pytrees;
+* `blocks`: the physics `Block`s with their `Output`s (SI unit, display unit), checks and plot;
+* `header`, `report`, `sweep_columns`: its lines in the text report.
+
+The registry knows no adapter or block by name: a block runs when its bearing type matches and
+its `enabled_by` effect is on (or it has none), together with the blocks it `requires`. A block no
+named effect reaches is never called, so it is never traced or compiled.
+"""
+
+import dataclasses
+from collections.abc import Callable
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+
+@dataclasses.dataclass(frozen=True)
+class Key:
+    """One scene key: `kind` is quantity | quantities | number | integer | integers | boolean |
+    choice | text; `dimension` names an entry of units.SI_UNITS; `choices` lists allowed values
+    (for choice; True/False may be among them); `length` fixes the size of a list; a fidelity key
+    lists in `read_by` the blocks that read it (given while none of them runs, it is refused)."""
+
+    kind: str
+    dimension: str = "dimensionless"
+    choices: tuple = ()
+    length: int | None = None
+    doc: str = ""
+    read_by: tuple[str, ...] = ()
+
+    def same_meaning(self, other: "Key") -> bool:
+        return (self.kind, self.dimension, self.choices, self.length) == (
+            other.kind, other.dimension, other.choices, other.length)
+
+
+def quantity(dimension: str, doc: str = "") -> Key:
+    """A scalar scene quantity of `dimension` ("28 mm", or a bare SI number)."""
+    return Key("quantity", dimension, doc=doc)
+
+
+@dataclasses.dataclass(frozen=True)
+class Output:
+    """One output key: `unit` of the SI value in JSON, `display` unit of the report."""
+
+    key: str
+    unit: str
+    display: str
+    description: str
+    effect: str | None = None  # produced only when this effect is on
+    in_report: bool = True  # False: JSON and plots only, or shown by its adapter's own report lines
+    column: str = ""  # header of its column in a per-element table (balls), where it is reported
+
+
+@dataclasses.dataclass(frozen=True)
+class Block:
+    name: str
+    bearing_types: tuple[str, ...]
+    enabled_by: tuple[str, object] | None  # (effect key, value) that switches it on; None: always
+    requires: tuple[str, ...]
+    outputs: tuple[Output, ...]
+    compute: Callable[[dict, dict, dict], dict]  # (inputs, settings, results so far) → {key: array}
+    inputs: tuple[str, ...] = ()  # names of the input pytrees it reads
+    uses: tuple[str, ...] = ()  # effects it reads as options (e.g. centrifugal inside the equilibrium)
+    only_with: tuple[str, tuple] | None = None  # (effect key, values): another effect it refines must be one of these
+    # swept point by point (`jax.lax.map`), not under `jax.vmap`: the numerical EHL solvers, whose
+    # vmapped compiled batch of 1-D line solves ran past 150 s where one solve takes 0.03 s
+    sequential_sweep: bool = False
+    # values of one point (NumPy, SI) → (errors, warnings): one line each, with units; an error
+    # means the result is outside the model (the CLI exits 3), a warning that a limit is passed
+    checks: Callable[[dict], tuple[list[str], list[str]]] | None = None
+    # (settings, inputs) → None, or ValueError for settings this block cannot run with (before compiling)
+    validate: Callable[[dict, dict], None] | None = None
+    plot: Callable | None = None  # (result, figure) → None: the figure of a single run
+    sweep_plot: Callable | None = None  # (result, figure) → None: the figure of a sweep
+
+
+@dataclasses.dataclass(frozen=True)
+class InputBuilder:
+    """Builds the input pytrees `provides` from the scene's SI values (a `Reads` mapping; values
+    may be JAX tracers in a sweep) and the inputs built before it (those in `after`)."""
+
+    provides: tuple[str, ...]
+    bearing_types: tuple[str, ...]
+    build: Callable[[dict, dict], dict]
+    after: tuple[str, ...] = ()
+
+
+@dataclasses.dataclass(frozen=True)
+class Adapter:
+    name: str
+    bearing_types: tuple[str, ...]
+    keys: dict[str, Key] = dataclasses.field(default_factory=dict)
+    required: dict[str, tuple] = dataclasses.field(default_factory=dict)  # bearing type → keys ("one of": a tuple)
+    inputs: tuple[InputBuilder, ...] = ()
+    blocks: tuple[Block, ...] = ()
+    header: Callable | None = None  # (result) → lines at the top of the report
+    report: Callable | None = None  # (result) → lines after the output tables
+    sweep_columns: Callable | None = None  # ({key: (N, ...) values}) → [(header, cells)]
+
+
+ADAPTERS: dict[str, Adapter] = {}
+
+
+def register(adapter: Adapter) -> Adapter:
+    """Add an adapter (its name and its block names must be new; a key it shares with another
+    adapter must mean the same)."""
+    if adapter.name in ADAPTERS:
+        raise ValueError(f"adapter {adapter.name!r} is already registered")
+    known = blocks_by_name()
+    for block in adapter.blocks:
+        if block.name in known:
+            raise ValueError(f"block {block.name!r} is already registered")
+    for dotted, key in adapter.keys.items():
+        other = all_keys().get(dotted)
+        if other is not None and not other.same_meaning(key):
+            raise ValueError(f"scene key {dotted!r} is declared twice with different meanings")
+    ADAPTERS[adapter.name] = adapter
+    return adapter
+
+
+def unregister(name: str) -> None:
+    """Remove an adapter (tests register toy adapters and remove them again)."""
+    del ADAPTERS[name]
+
+
+def blocks_by_name() -> dict[str, Block]:
+    return {block.name: block for adapter in ADAPTERS.values() for block in adapter.blocks}
+
+
+def all_keys() -> dict[str, Key]:
+    """{dotted key: Key} of every registered adapter."""
+    keys: dict[str, Key] = {}
+    for adapter in ADAPTERS.values():
+        for dotted, key in adapter.keys.items():
+            if dotted in keys:  # declared by several adapters: read by the blocks of each
+                key = dataclasses.replace(keys[dotted], read_by=keys[dotted].read_by + key.read_by)
+            keys[dotted] = key
+    return keys
+
+
+def adapters_for(bearing_type: str) -> list[Adapter]:
+    return [adapter for adapter in ADAPTERS.values() if bearing_type in adapter.bearing_types]
+
+
+def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
+    """Blocks to run, in dependency order, and the named effects no registered block provides.
+
+    `effects` maps effect names to their scene values (false / absent means off).
+    """
+    candidates = [block for adapter in adapters_for(bearing_type) for block in adapter.blocks
+                  if bearing_type in block.bearing_types]
+    wanted = [block for block in candidates if block.enabled_by is None]
+    provided = {effect for block in candidates for effect in block.uses}
+    for block in candidates:
+        if block.enabled_by is not None:
+            effect, value = block.enabled_by
+            refines = block.only_with is None or effects.get(block.only_with[0]) in block.only_with[1]
+            if effect in effects and effects[effect] == value and type(effects[effect]) is type(value) and refines:
+                wanted.append(block)
+                provided.add(effect)
+    missing = [name if value is True else f"{name} = {value!r}"
+               for name, value in effects.items() if value is not False and name not in provided]
+    by_name = blocks_by_name()
+    ordered: list[Block] = []
+
+    def visit(block: Block, chain: tuple[str, ...]):
+        if block in ordered:
+            return
+        if block.name in chain:
+            raise ValueError(f"blocks require each other in a cycle: {' → '.join(chain + (block.name,))}")
+        for name in block.requires:
+            visit(by_name[name], chain + (block.name,))
+        ordered.append(block)
+
+    for block in wanted:
+        visit(block, ())
+    return ordered, missing
+
+
+def input_builders(bearing_type: str, names) -> list[InputBuilder]:
+    """The builders of the inputs `names` (and of the inputs they are built after), in order."""
+    builders = {name: builder for adapter in adapters_for(bearing_type) for builder in adapter.inputs
+                if bearing_type in builder.bearing_types for name in builder.provides}
+    ordered: list[InputBuilder] = []
+
+    def visit(name):
+        if name not in builders:
+            raise ValueError(f"no adapter builds the input {name!r} for {bearing_type}")
+        builder = builders[name]
+        if builder in ordered:
+            return
+        for earlier in builder.after:
+            visit(earlier)
+        ordered.append(builder)
+
+    for name in names:
+        visit(name)
+    return ordered
+
+
+def problems(blocks, values: dict, grid_shape: tuple[int, ...] = ()) -> tuple[list[str], list[str]]:
+    """(errors, warnings) of the blocks' checks over every point of a run (`grid_shape` () for one point)."""
+    errors, warnings = [], []
+    for number, index in enumerate(np.ndindex(grid_shape)):
+        point = {key: np.asarray(value)[index] for key, value in values.items()}
+        prefix = f"sweep point {number}: " if grid_shape else ""
+        for block in blocks:
+            if block.checks is not None:
+                found_errors, found_warnings = block.checks(point)
+                errors += [prefix + line for line in found_errors]
+                warnings += [prefix + line for line in found_warnings]
+    return errors, warnings
+
+
+def outputs_of(blocks, effects: dict | None = None) -> dict[str, Output]:
+    """{key: Output} the given blocks produce (with `effects`, only those whose effect is on)."""
+    return {out.key: out for block in blocks for out in block.outputs
+            if effects is None or out.effect is None or effects.get(out.effect, False) is True}
+
+
+def evaluate(blocks, settings: dict) -> Callable[[dict], dict]:
+    """The pure function inputs → {output key: array} that runs exactly `blocks` in order."""
+
+    def run(inputs: dict) -> dict:
+        results: dict = {}
+        for block in blocks:
+            results |= block.compute(inputs, settings, results)
+        return results
+
+    return run
+
+
+_COMPILED: dict = {}
+
+
+def compiled(blocks, settings: dict, inputs: dict):
+    """(`jax.jit` of `evaluate(...)` compiled ahead of time for `inputs`, whether it was cached).
+
+    Compiled models are kept per process, keyed by the blocks, the settings and the structure,
+    shapes and dtypes of the inputs: a second run of the same model with other numbers reuses it.
+    """
+    leaves, treedef = jax.tree.flatten(inputs)
+    key = (tuple(b.name for b in blocks), repr(sorted((k, sorted(v.items())) for k, v in settings.items())),
+           treedef, tuple((jnp.shape(x), jnp.result_type(x)) for x in leaves))
+    if key in _COMPILED:
+        return _COMPILED[key], True
+    executable = jax.jit(evaluate(blocks, settings)).lower(inputs).compile()
+    _COMPILED[key] = executable
+    return executable, False

@@ -1,0 +1,171 @@
+"""Readable report and JSON of a run: SI values converted to display units only here.
+
+The report is generic: each active adapter adds its header, its own lines and its sweep columns
+(registry.Adapter); every other output appears in a table of its section with its display unit.
+"""
+
+import json
+
+import numpy as np
+
+from .formatting import SI_OF_DIMENSION, SWEEP_DISPLAY, format_number, format_value, to_display, unit_label
+from .registry import adapters_for
+from .schema import lookup
+
+
+def active_adapters(model) -> list:
+    """The adapters of the model's bearing type with a block in the model, in registration order."""
+    running = set(model.blocks)
+    return [adapter for adapter in adapters_for(model.scene.bearing_type) if running & set(adapter.blocks)]
+
+
+def _header(result) -> list[str]:
+    for adapter in active_adapters(result.model):
+        if adapter.header is not None:
+            return adapter.header(result)
+    return [result.model.scene.title, f"scene: {result.model.scene.source}"]
+
+
+def _swept_cells(key, values) -> tuple[str, list[str]]:
+    dimension = lookup(key).dimension
+    display = SWEEP_DISPLAY.get(dimension)
+    shown = to_display(values, SI_OF_DIMENSION[dimension], display) if display else np.asarray(values)
+    cells = [("[" + ", ".join(format_number(x) for x in np.ravel(v)) + "]") if np.ndim(v) else format_number(v)
+             for v in shown]
+    return f"{key} [{unit_label(display or '')}]", cells
+
+
+def _problem_lines(result, most=None) -> list[str]:
+    """The run's errors (outside the model, not converged) and warnings (limits passed), `most` of each."""
+    lines = []
+    for title, found in zip(("ERRORS (outside the model or not converged)", "Warnings"), result.problems):
+        if found:
+            shown = found if most is None else found[:most]
+            lines += ["", f"{title}:"] + [f"  {line}" for line in shown]
+            if len(found) > len(shown):
+                lines.append(f"  … {len(found) - len(shown)} more in --json")
+    return lines
+
+
+def format_sweep_report(result) -> str:
+    """Report of a sweep: one row per grid point with the swept values and the key results."""
+    lines = _header(result)
+    axes = result.sweep_axes
+    shape = tuple(len(v) for v in axes.values())
+    grid = f"{' × '.join(str(n) for n in shape)} = " if len(shape) > 1 else ""
+    batch = ("mapped point by point (iterative EHL solver)" if any(b.sequential_sweep for b in result.model.blocks)
+             else "one vmapped batch")
+    lines += ["", f"Sweep over {grid}{int(np.prod(shape))} points ({', '.join(axes)}), {batch}"]
+    grids = np.meshgrid(*[np.arange(n) for n in shape], indexing="ij")
+    flat_index = [g.ravel() for g in grids]
+    columns = []
+    for k, (key, values) in enumerate(axes.items()):
+        header, cells = _swept_cells(key, values)
+        columns.append((header, [cells[i] for i in flat_index[k]]))
+    values = {key: np.reshape(value, (-1,) + np.shape(value)[len(shape):]) for key, value in result.values.items()}
+    for adapter in active_adapters(result.model):
+        if adapter.sweep_columns is not None:
+            columns += adapter.sweep_columns(values)
+    widths = [max(len(h), *(len(c) for c in cells)) + 2 for h, cells in columns]
+    lines.append("  " + "".join(f"{h:>{w}}" for (h, _), w in zip(columns, widths)))
+    rows = len(columns[0][1])
+    shown = list(range(rows)) if rows <= 40 else list(range(20)) + [None] + list(range(rows - 20, rows))
+    for row in shown:
+        if row is None:
+            lines.append(f"  … {rows - 40} more rows in --json …")
+            continue
+        lines.append("  " + "".join(f"{cells[row]:>{w}}" for (_, cells), w in zip(columns, widths)))
+    lines += _problem_lines(result, most=10)
+    lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s:.3f} s for {rows} points "
+              f"({result.run_s / rows * 1e3:.2f} ms per point, after compilation)"]
+    return "\n".join(lines)
+
+
+def _output_tables(result) -> list[str]:
+    """The outputs of the generic tables, one section per first key part; an output keyed
+    section.inner.name / section.outer.name shares a row with its other side."""
+    lines = []
+    values = result.values
+    sections: dict[str, dict[str, dict]] = {}
+    for key, out in result.model.outputs.items():
+        if key not in values or not out.in_report or out.column:
+            continue
+        parts = key.split(".")
+        if len(parts) == 3 and parts[1] in ("inner", "outer"):
+            section, side, row = parts[0], parts[1], parts[2]
+        else:
+            section, side, row = parts[0], "value", ".".join(parts[1:])
+        entry = sections.setdefault(section, {}).setdefault(row, {"out": out})
+        entry[side] = values[key]
+    for section, rows in sections.items():
+        lines += ["", section.replace("_", " ").capitalize()]
+        scalar_rows = [row for row in rows.values() if "value" in row]
+        sided_rows = [row for row in rows.values() if "value" not in row]
+        for row in scalar_rows:
+            out = row["out"]
+            cell = format_value(to_display(row["value"], out.unit, out.display))
+            lines.append(f"  {out.description:<48}{cell:>16}  {unit_label(out.display)}")
+        if sided_rows:
+            lines.append(f"  {'':<48}{'inner':>16}{'outer':>16}")
+            for row in sided_rows:
+                out = row["out"]
+                label = out.description.removesuffix(", inner")
+                cells = [format_value(to_display(row[c], out.unit, out.display)) if c in row else ""
+                         for c in ("inner", "outer")]
+                lines.append(f"  {label:<48}" + "".join(f"{cell:>16}" for cell in cells) + f"  {unit_label(out.display)}")
+    return lines
+
+
+def format_report(result) -> str:
+    """The text report of a run: header, output tables, the adapters' own lines, problems, timing."""
+    if result.sweep_axes:
+        return format_sweep_report(result)
+    lines = _header(result) + _output_tables(result)
+    for adapter in active_adapters(result.model):
+        if adapter.report is not None:
+            lines += adapter.report(result)
+    lines += _problem_lines(result)
+    if result.model.not_implemented:
+        lines += ["", "Not computed (effect not available yet): " + ", ".join(result.model.not_implemented)]
+    lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s * 1e3:.2f} ms (after compilation)"]
+    return "\n".join(lines)
+
+
+def nest(flat: dict) -> dict:
+    """{'a.b.c': v} → {'a': {'b': {'c': v}}}."""
+    tree: dict = {}
+    for key, value in flat.items():
+        node = tree
+        *path, last = key.split(".")
+        for part in path:
+            node = node.setdefault(part, {})
+        node[last] = value
+    return tree
+
+
+def _json_value(value):
+    """Array → nested lists; NaN (a quantity that does not exist, e.g. the film of an unloaded
+    ball) → null."""
+    array = np.asarray(value)
+    if array.dtype.kind == "f" and np.isnan(array).any():
+        return np.where(np.isnan(array), None, array.astype(object)).tolist()
+    return array.tolist()
+
+
+def json_document(result) -> dict:
+    """The JSON document of a run: SI values under the output keys (README, "JSON keys")."""
+    flat = {key: _json_value(value) for key, value in result.values.items()}
+    flat["timing.compile_s"] = result.compile_s
+    flat["timing.run_s"] = result.run_s
+    document = {"title": result.model.scene.title, **nest(flat)}
+    if result.sweep_axes:
+        document["sweep"] = {key: np.asarray(values).tolist() for key, values in result.sweep_axes.items()}
+    document["not_computed"] = list(result.model.not_implemented)
+    document["errors"], document["warnings"] = (list(found) for found in result.problems)
+    return document
+
+
+def write_json(result, path: str) -> None:
+    with open(path, "w") as file:
+        json.dump(json_document(result), file, indent=2)
+        file.write("\n")

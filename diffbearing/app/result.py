@@ -1,0 +1,23 @@
+"""The result of a run: output values (NumPy, SI), timings, and the blocks' checks."""
+
+import dataclasses
+import functools
+
+from .registry import problems
+
+
+@dataclasses.dataclass
+class RunResult:
+    """Outputs of one run (NumPy arrays, SI) with compile and run times [s]."""
+
+    model: object  # the model.Model that ran
+    values: dict
+    compile_s: float  # 0 when the compiled model was reused from an earlier run in this process
+    run_s: float
+    sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a sweep
+
+    @functools.cached_property
+    def problems(self) -> tuple[list[str], list[str]]:
+        """(errors, warnings) of the blocks' checks, one line each (a sweep's name their point)."""
+        shape = tuple(len(values) for values in self.sweep_axes.values())
+        return problems(self.model.blocks, self.values, shape)

@@ -1,0 +1,100 @@
+"""Scenes: read a TOML scene (a file or a packaged example), apply overrides, validate.
+
+`load_scene(path_or_name, overrides)` → `Scene` with every value in SI; `examples()` lists the
+packaged example scenes.
+"""
+
+import copy
+import dataclasses
+import importlib.resources
+import tomllib
+from pathlib import Path
+
+from .schema import lookup, validate
+
+DEFAULT_EXAMPLE = "aero_angular_contact"
+
+
+@dataclasses.dataclass(frozen=True)
+class Scene:
+    """A validated scene: `values` maps dotted keys to SI values; `sweep` is the raw [sweep] table."""
+
+    title: str
+    values: dict
+    sweep: dict | None
+    source: str
+
+    @property
+    def bearing_type(self) -> str:
+        return self.values["bearing.type"]
+
+    def table(self, name: str) -> dict:
+        """{key: value} of one table ("effects", "fidelity", ...)."""
+        prefix = name + "."
+        return {k[len(prefix):]: v for k, v in self.values.items() if k.startswith(prefix)}
+
+
+def parse_override(text: str) -> tuple[str, object]:
+    """'dotted.key=VALUE' → (key, value); VALUE is a TOML value, or else taken as a string."""
+    key, sep, raw = text.partition("=")
+    key = key.strip()
+    if not sep or not key:
+        raise ValueError(f"--set expects dotted.key=VALUE, got {text!r}")
+    try:
+        value = tomllib.loads(f"value = {raw}")["value"]
+    except tomllib.TOMLDecodeError:
+        value = raw.strip()
+    return key, value
+
+
+def apply_overrides(document: dict, overrides) -> dict:
+    """A copy of a parsed scene with each (dotted key, value) set; unknown keys raise ValueError."""
+    document = copy.deepcopy(document)
+    for key, value in overrides:
+        lookup(key)
+        table, _, name = key.rpartition(".")
+        target = document.setdefault(table, {}) if table else document
+        target[name] = value
+    return document
+
+
+def _example_files() -> dict:
+    return {entry.name.removesuffix(".toml"): entry for entry in importlib.resources.files("diffbearing.scenes").iterdir()
+            if entry.name.endswith(".toml")}
+
+
+def examples() -> dict[str, str]:
+    """{name: one-line description} of the packaged example scenes (the first comment line of each)."""
+    described = {}
+    for name, entry in sorted(_example_files().items()):
+        first = entry.read_text().splitlines()[0]
+        described[name] = first.lstrip("# ").strip() if first.startswith("#") else ""
+    return described
+
+
+def read_document(path: str | None) -> tuple[dict, str]:
+    """Parsed TOML of a scene file or packaged example (the default example when `path` is None)
+    and its name."""
+    name = DEFAULT_EXAMPLE if path is None else path
+    files = _example_files()
+    if name in files and not Path(name).is_file():
+        text, source = files[name].read_text(), f"example {name}"
+    else:
+        file = Path(path)
+        if not file.is_file():
+            raise ValueError(f"scene file not found: {path} (nor a packaged example: diffbearing examples lists them)")
+        text, source = file.read_text(), str(file)
+    try:
+        return tomllib.loads(text), source
+    except tomllib.TOMLDecodeError as error:
+        raise ValueError(f"{source}: not valid TOML ({error})") from None
+
+
+def load_scene(path: str | None = None, overrides=()) -> Scene:
+    """Read, override and validate a scene (a file path, a packaged example's name, or None for
+    the default example); `overrides` holds 'dotted.key=VALUE' strings."""
+    document, source = read_document(path)
+    document = apply_overrides(document, [parse_override(text) for text in overrides])
+    values = validate(document)
+    sweep = document.get("sweep")
+    return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source)
