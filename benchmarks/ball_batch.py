@@ -45,7 +45,7 @@ from timing import median_time  # noqa: E402
 
 from diffbearing.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix  # noqa: E402
 from diffbearing.params import Operating, ball_bearing  # noqa: E402
-from diffbearing.scene import build_inputs, load_scene  # noqa: E402
+from diffbearing import build_model, load_scene  # noqa: E402
 
 RESULTS = Path(__file__).parent / "results"
 SPEED = 1500 * np.pi / 30
@@ -108,8 +108,8 @@ def main():
         solution = solve_equilibrium(masta, Operating(0.0, 0.0, force, jnp.zeros(2)), static)
         return solution.displacement, solution.converged
 
-    seed = build_inputs(load_scene()).bearing
-    moment = build_inputs(load_scene()).operating.moment
+    seed = build_model(load_scene()).inputs["bearing"]
+    moment = build_model(load_scene()).inputs["operating"].moment
     speed = BallModel(centrifugal=True, gyroscopic=True)
     scale = np.linspace(0.2, 2.0, args.speed_cases)
     speed_loads = jnp.asarray(np.stack([15e3 * scale, 18e3 * scale[::-1], 35e3 * np.sqrt(scale)], axis=1))

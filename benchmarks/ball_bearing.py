@@ -29,10 +29,10 @@ sys.path.insert(0, str(Path(__file__).parent))
 from scipy_ball_bearing import ClassicalBallBearing  # noqa: E402
 from timing import median_time  # noqa: E402
 
-from diffbearing import effects  # noqa: E402
+from diffbearing.app import registry  # noqa: E402
 from diffbearing.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix  # noqa: E402
-from diffbearing.scene import build_model, load_scene  # noqa: E402
-from diffbearing.sweep import run_sweep  # noqa: E402
+from diffbearing import build_model, load_scene  # noqa: E402
+from diffbearing import run_sweep  # noqa: E402
 
 RESULTS = Path(__file__).parent / "results"
 MODEL = BallModel(centrifugal=True, gyroscopic=True)
@@ -55,7 +55,7 @@ def main():
 
     scene = load_scene(overrides=["operating.inner_speed=1500 rpm"])
     model = build_model(scene)
-    bearing, operating = model.inputs.bearing, model.inputs.operating
+    bearing, operating = model.inputs["bearing"], model.inputs["operating"]
 
     def single(b, o):
         solution = solve_equilibrium(b, o, MODEL)
@@ -109,7 +109,7 @@ def main():
                          ("life", ["effects.life=true"])):
         m = build_model(load_scene(overrides=base + extra))
         start = time.perf_counter()
-        executable, _ = effects.compiled(m.blocks, m.settings, m.inputs)
+        executable, _ = registry.compiled(m.blocks, m.settings, m.inputs)
         compile_s = time.perf_counter() - start
         run_s = median_time(lambda: executable(m.inputs), args.repeats)
         effect_rows.append((label, run_s, compile_s, [b.name for b in m.blocks]))

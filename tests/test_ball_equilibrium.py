@@ -8,7 +8,7 @@ import pytest
 from diffbearing.ball_equilibrium import (BallModel, ball_results, ring_force, solve_equilibrium,
                                           stiffness_matrix)
 from diffbearing.params import Operating, ball_bearing
-from diffbearing.scene import build_inputs, load_scene
+from diffbearing import build_model, load_scene
 
 RPM = np.pi / 30
 SPEED = BallModel(centrifugal=True, gyroscopic=True)
@@ -121,7 +121,7 @@ def test_radial_load_zero_clearance_matches_sjovall(solve):
 
 @pytest.fixture(scope="module")
 def seed001():
-    return build_inputs(load_scene())
+    return build_model(load_scene()).inputs
 
 
 @pytest.fixture(scope="module")
@@ -137,8 +137,8 @@ def test_stiffness_matches_central_difference(solve, seed001, seed001_force, spe
     Steps: 1e-8 m and 1e-8 m / R_i rad; the per-ball solve converges to 1e-13 D_w, whose noise
     (≈ 3e-15 m × 1e9 N/m) stays below 1e-6 of K at this step, and truncation is O(h²) ≈ 1e-8.
     """
-    bearing, operating = seed001.bearing, Operating(speed_rpm * RPM, 0.0, seed001.operating.force,
-                                                    seed001.operating.moment)
+    bearing, operating = seed001["bearing"], Operating(speed_rpm * RPM, 0.0, seed001["operating"].force,
+                                                    seed001["operating"].moment)
     solution, _, stiffness = solve(bearing, operating)
     assert bool(solution.converged)
     arm = 0.5 * float(bearing.pitch_diameter)
@@ -174,8 +174,8 @@ def test_stiffness_symmetric_at_standstill_and_positive_definite(solve, seed001)
     exactly a gradient: measured asymmetry 1.3e-5 of the block scale (bound 5e-5). With the
     constants frozen at α0 the field is the gradient of Σ (2/5) K δ^{5/2} and K is symmetric to
     rounding. All 28 balls are loaded in seed 001, so K (its symmetric part) is positive definite."""
-    operating = Operating(0.0, 0.0, seed001.operating.force, seed001.operating.moment)
-    solution, results, stiffness = solve(seed001.bearing, operating)
+    operating = Operating(0.0, 0.0, seed001["operating"].force, seed001["operating"].moment)
+    solution, results, stiffness = solve(seed001["bearing"], operating)
     assert np.all(np.asarray(results["balls.inner.load"]) > 0)
     assert _block_asymmetry(stiffness) < 5e-5
     arm = np.diag([1, 1, 1, 1 / 0.126, 1 / 0.126])
@@ -183,19 +183,19 @@ def test_stiffness_symmetric_at_standstill_and_positive_definite(solve, seed001)
     assert np.all(np.linalg.eigvalsh(0.5 * (scaled + scaled.T)) > 0)
 
     fixed = BallModel(hertz_constants="free_contact_angle")
-    frozen = solve_equilibrium(seed001.bearing, operating, fixed)
-    assert _block_asymmetry(stiffness_matrix(frozen.displacement, seed001.bearing, operating, fixed)) < 1e-13
+    frozen = solve_equilibrium(seed001["bearing"], operating, fixed)
+    assert _block_asymmetry(stiffness_matrix(frozen.displacement, seed001["bearing"], operating, fixed)) < 1e-13
 
 
 def test_static_model_agrees_with_speed_model_at_standstill(seed001):
     """With speed effects off, the closed-form static ball positions give the same solution."""
-    operating = Operating(0.0, 0.0, seed001.operating.force, seed001.operating.moment)
-    static = jax.jit(lambda b, o: solve_equilibrium(b, o, BallModel()))(seed001.bearing, operating)
-    speed = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))(seed001.bearing, operating)
+    operating = Operating(0.0, 0.0, seed001["operating"].force, seed001["operating"].moment)
+    static = jax.jit(lambda b, o: solve_equilibrium(b, o, BallModel()))(seed001["bearing"], operating)
+    speed = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))(seed001["bearing"], operating)
     np.testing.assert_allclose(static.displacement, speed.displacement, rtol=1e-9, atol=1e-15)
 
 
-@pytest.mark.parametrize("make", [deep_groove_6411E, lambda: build_inputs(load_scene()).bearing])
+@pytest.mark.parametrize("make", [deep_groove_6411E, lambda: build_model(load_scene()).inputs["bearing"]])
 def test_constant_table_reproduces_exact_hertz_constants(make):
     """The Chebyshev table of K_i(α), K_o(α) matches the exact solve to 1e-13 over −90°…90°
     (D_w/d_m = 0.28 for the 6411E, 0.11 for seed 001), and so does its derivative (1e-9)."""
@@ -227,7 +227,7 @@ def test_preload_by_axial_displacement_inverts_preload_by_force(solve):
 def test_inner_raceway_control_converges_and_balances():
     """Inner-raceway control (gyroscopic moment reacted at the inner contact) at 12000 r/min: the
     ball equations and the ring balance hold, and the outer contact angles differ from outer control."""
-    bearing = build_inputs(load_scene()).bearing
+    bearing = build_model(load_scene()).inputs["bearing"]
     operating = Operating(12000 * RPM, 0.0, [15e3, 18e3, 35e3], [100.0, 300.0])
     inner = BallModel(centrifugal=True, gyroscopic=True, race_control="inner")
     solution = jax.jit(lambda b, o: solve_equilibrium(b, o, inner))(bearing, operating)
@@ -276,16 +276,16 @@ def test_stiffness_derivative_matches_central_difference(seed001):
     tolerance 1e-5."""
     import equinox as eqx
 
-    operating = Operating(12000 * RPM, 0.0, seed001.operating.force, seed001.operating.moment)
+    operating = Operating(12000 * RPM, 0.0, seed001["operating"].force, seed001["operating"].moment)
 
     def axial_stiffness(parameters):
         inner_ratio, axial_force = parameters
-        bearing = eqx.tree_at(lambda b: b.inner_groove_ratio, seed001.bearing, inner_ratio)
+        bearing = eqx.tree_at(lambda b: b.inner_groove_ratio, seed001["bearing"], inner_ratio)
         loaded = eqx.tree_at(lambda o: o.force, operating, jnp.asarray(operating.force).at[2].set(axial_force))
         solution = solve_equilibrium(bearing, loaded, SPEED)
         return stiffness_matrix(solution.displacement, bearing, loaded, SPEED)[2, 2]
 
-    point = jnp.array([float(seed001.bearing.inner_groove_ratio), float(operating.force[2])])
+    point = jnp.array([float(seed001["bearing"].inner_groove_ratio), float(operating.force[2])])
     derivative = jax.jit(jax.jacfwd(axial_stiffness))(point)
     value = jax.jit(axial_stiffness)
     for k in range(2):

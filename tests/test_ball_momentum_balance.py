@@ -24,7 +24,7 @@ from diffbearing.ball_equilibrium import (BallModel, ball_azimuths, ball_state, 
                                           inner_groove_radius_of_centres, solve_equilibrium,
                                           with_constant_table)
 from diffbearing.params import Operating, ball_bearing
-from diffbearing.scene import build_inputs, load_scene
+from diffbearing import build_model, load_scene
 
 RPM = np.pi / 30
 TOLERANCE = 1e-9
@@ -32,7 +32,7 @@ TOLERANCE = 1e-9
 
 def seed001_bearing():
     """The built-in aero-engine bearing: 28 balls of 28 mm on d_m = 252 mm, α₀ = 25°."""
-    return build_inputs(load_scene()).bearing
+    return build_model(load_scene()).inputs["bearing"]
 
 
 def bearing_218():

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from diffbearing import cli
+from diffbearing.app import cli
 from diffbearing.cage_forces import cage_forces
 from diffbearing.cage_lands import land_force
 from diffbearing.cage_pocket import circumferential_force, seat_ball

@@ -8,7 +8,7 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import cli
+from diffbearing.app import cli
 from diffbearing.cage_dynamics import DynamicsSettings, orbit_measures, simulate_cage
 from diffbearing.cage_lands import land_force, squeeze_film_force
 from diffbearing.cage_stability import cage_stability

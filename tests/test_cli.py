@@ -9,8 +9,8 @@ import sys
 import numpy as np
 import pytest
 
-from diffbearing import cli, effects
-from diffbearing.scene import build_model, load_scene, run_model
+from diffbearing.app import cli, registry
+from diffbearing import build_model, load_scene, run_model
 
 from .helpers import BEARING_6411E
 
@@ -108,15 +108,17 @@ def test_shared_seed002_scene_runs(capsys, shared_scenes):
 
 def test_effects_not_named_are_never_traced(monkeypatch):
     """A block is called (hence traced) only when the scene names its effect."""
-    real = effects.REGISTRY["stiffness"]
+    ball = registry.ADAPTERS["ball"]
+    real = next(block for block in ball.blocks if block.name == "stiffness")
     calls = []
 
     def spy(inputs, settings, results):
         calls.append(1)
         return real.compute(inputs, settings, results)
 
-    monkeypatch.setitem(effects.REGISTRY, "stiffness", dataclasses.replace(real, compute=spy))
-    monkeypatch.setattr(effects, "_COMPILED", {})  # no compiled model from an earlier test
+    blocks = tuple(dataclasses.replace(b, compute=spy) if b is real else b for b in ball.blocks)
+    monkeypatch.setitem(registry.ADAPTERS, "ball", dataclasses.replace(ball, blocks=blocks))
+    monkeypatch.setattr(registry, "_COMPILED", {})  # no compiled model from an earlier test
     off = run_model(build_model(load_scene(overrides=["effects.stiffness=false"])))
     assert calls == [] and "stiffness" not in off.values
     on = run_model(build_model(load_scene(overrides=["effects.stiffness=true"])))
@@ -138,19 +140,21 @@ def test_float32_is_refused():
 
 
 def test_console_script_exit_code(tmp_path):
-    completed = subprocess.run([sys.executable, "-m", "diffbearing.cli", "run", "--set", "bearing.balls=1"],
+    completed = subprocess.run([sys.executable, "-m", "diffbearing.app.cli", "run", "--set", "bearing.balls=1"],
                                capture_output=True, text=True)
     assert completed.returncode == 2
     assert completed.stderr.strip() == "diffbearing: error: bearing.balls must be an integer ≥ 3, got 1"
 
 
-def test_readme_documents_every_output_key():
+def test_reference_is_generated_from_the_adapters():
+    """docs/reference.md is what `python -m diffbearing.app.reference` writes: every scene key and
+    output of the code, no more."""
     from pathlib import Path
 
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
-    for block in effects.REGISTRY.values():
-        for output in block.outputs:
-            assert f"`{output.key}`" in readme, output.key
+    from diffbearing.app.reference import generate
+
+    written = (Path(__file__).resolve().parents[1] / "docs" / "reference.md").read_text()
+    assert written == generate(), "regenerate: python -m diffbearing.app.reference > docs/reference.md"
 
 
 DEEP_GROOVE_6411E = 'title = "6411E deep-groove ball bearing"\n' + BEARING_6411E + """

@@ -7,7 +7,7 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import cli
+from diffbearing.app import cli
 from diffbearing.film_formulas import dowson_higginson_line_minimum, hamrock_dowson_point, pan_hamrock_line
 
 from .helpers import assert_jvp_matches_central_difference
@@ -303,7 +303,7 @@ def test_ball_film_derivatives_match_central_differences(shared_scenes):
     derivatives stay finite at the unloaded balls, whose film is NaN (null) by design."""
     import equinox as eqx
 
-    from diffbearing.scene import build_model, load_scene
+    from diffbearing import build_model, load_scene
 
     model = build_model(load_scene(str(shared_scenes / "seed002_6411E.toml"), [
         'operating.force=["8 kN", "0 N", "0 N"]', 'operating.inner_speed="3000 rpm"', "effects.life=false",
@@ -319,7 +319,7 @@ def test_ball_film_derivatives_match_central_differences(shared_scenes):
         return jnp.concatenate([out[f"film.{side}.{kind}"][loaded] for side in ("inner", "outer")
                                 for kind in ("central", "minimum")]) * 1e6
 
-    point = jnp.array([float(model.inputs.operating.inner_speed) / 1e3, float(model.inputs.lubricant.viscosity)])
+    point = jnp.array([float(model.inputs["operating"].inner_speed) / 1e3, float(model.inputs["lubricant"].viscosity)])
     function = jax.jit(films)
     for direction in jnp.eye(2):
         assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-5)
@@ -328,4 +328,4 @@ def test_ball_film_derivatives_match_central_differences(shared_scenes):
         inputs = eqx.tree_at(lambda i: i.operating.inner_speed, model.inputs, x)
         return jnp.nansum(run(inputs)["film.inner.minimum"])
 
-    assert np.isfinite(float(jax.jit(jax.grad(all_films))(model.inputs.operating.inner_speed)))
+    assert np.isfinite(float(jax.jit(jax.grad(all_films))(model.inputs["operating"].inner_speed)))

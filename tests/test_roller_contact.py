@@ -14,7 +14,7 @@ from diffbearing.params import Material
 from diffbearing.roller_contact import roller_contact
 from diffbearing.roller_geometry import RollerLoading, roller_bearing, roller_modulus
 from diffbearing.roller_profile import roller_profile
-from diffbearing.scene import build_model, load_scene, run_model
+from diffbearing import build_model, load_scene, run_model
 
 from .helpers import assert_jvp_matches_central_difference
 
@@ -254,7 +254,7 @@ def test_bad_roller_input_names_the_parameter():
 def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path, shared_scenes):
     import json
 
-    from diffbearing import cli
+    from diffbearing.app import cli
 
     scene, path, plot = shared_scenes / "seed004_tapered_roller.toml", tmp_path / "c.json", tmp_path / "p.png"
     code = cli.main(["run", str(scene), "--json", str(path), "--plot", str(plot)])
@@ -273,7 +273,7 @@ def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path, shared_sc
 
 def test_cli_flat_and_concave_raceways(capsys, shared_scenes):
     """raceway_radius = "inf" is a flat raceway; raceway = "outer" makes it concave (larger R)."""
-    from diffbearing import cli
+    from diffbearing.app import cli
 
     scene = str(shared_scenes / "seed004_tapered_roller.toml")
     radii = {}
@@ -297,7 +297,7 @@ def test_cli_flat_and_concave_raceways(capsys, shared_scenes):
     ('contact.raceway_radius="-3 mm"', "contact.raceway_radius"),
 ])
 def test_cli_bad_roller_input_exits_2(capsys, shared_scenes, override, named):
-    from diffbearing import cli
+    from diffbearing.app import cli
 
     code = cli.main(["run", str(shared_scenes / "seed004_tapered_roller.toml"), "--set", override])
     err = capsys.readouterr().err

@@ -10,8 +10,8 @@ import textwrap
 import numpy as np
 import pytest
 
-from diffbearing import cli
-from diffbearing.scene import build_model, load_scene, run_model
+from diffbearing.app import cli
+from diffbearing import build_model, load_scene, run_model
 
 from .helpers import BEARING_6411E
 
@@ -78,7 +78,7 @@ def test_sharded_sweep_matches_single_device(swept, scene_file):
     code = textwrap.dedent(f"""
         import jax, numpy as np
         jax.config.update("jax_enable_x64", True)
-        from diffbearing.scene import build_model, load_scene, run_model
+        from diffbearing import build_model, load_scene, run_model
         assert len(jax.devices()) == 4
         result = run_model(build_model(load_scene({str(scene_file)!r})), progress=False)
         np.save({str(scene_file.parent / 'sharded.npy')!r}, result.values["displacement"])
@@ -118,7 +118,7 @@ def test_distributed_sweep_writes_the_single_process_json(scene_file, tmp_path):
     single = tmp_path / "single.json"
     assert cli.main(["run", str(scene_file), "--json", str(single)]) == 0
     distributed = tmp_path / "distributed.json"
-    command = [sys.executable, "-m", "diffbearing.cli", "run", str(scene_file), "--json", str(distributed),
+    command = [sys.executable, "-m", "diffbearing.app.cli", "run", str(scene_file), "--json", str(distributed),
                "--distributed", "--coordinator", f"localhost:{port}", "--processes", "2"]
     processes = [subprocess.Popen(command + ["--process-id", str(rank)], stdout=subprocess.PIPE,
                                   stderr=subprocess.STDOUT, text=True) for rank in range(2)]
