@@ -24,7 +24,7 @@ from .roller_geometry import RollerLoading, roller_bearing
 from .roller_profile import roller_profile
 from .schema import lookup, validate
 
-DEFAULT_SCENE = "seed001_aero_acbb.toml"
+DEFAULT_SCENE = "aero_angular_contact.toml"
 
 
 @dataclasses.dataclass(frozen=True)
