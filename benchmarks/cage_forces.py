@@ -2,7 +2,7 @@
 
     python benchmarks/cage_forces.py [--positions 100000] [--scipy-positions 200] [--repeats 5]
 
-B7005-class bearing of ../shared/scenes/seed000_cage_b7005.toml (cage geometry a scene leaves out:
+B7005-class bearing of the packaged example diffbearing/scenes/cage_b7005.toml (cage geometry a scene leaves out:
 `ball_cage` defaults). Measured in one run on one machine:
   * Fig. 9 of Liu et al. 2020: f_inv against the offset angle, outer-lock and cylindrical pockets
     (20000 r/min, m = 4, n = 2, ε = 0.8), and the fraction of angles where outer-lock wins;

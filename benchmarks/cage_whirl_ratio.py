@@ -2,7 +2,7 @@
 
     python benchmarks/cage_whirl_ratio.py [--revolutions 10] [--repeats 3]
 
-Seed 000's B7005-class bearing (../shared/scenes/seed000_cage_b7005.toml: F = [1120, 0, 400] N,
+Seed 000's B7005-class bearing (diffbearing/scenes/cage_b7005.toml: F = [1120, 0, 400] N,
 outer-lock pockets, guide clearance 0.24 mm diametral, m = 3 pushing and n = 4 resisting balls for
 the quasi-static equilibrium), pocket clearance c_p = ratio × 0.24 mm for ratio 0.6 … 1.6, at 1800
 and 20000 r/min. For each: the simulated orbit (`simulate_cage`, from ε = 0.8 at 240°, over

@@ -1,4 +1,7 @@
-"""The one finite-difference helper every derivative test uses, and the test scenes' shared bearing."""
+"""The one finite-difference helper every derivative test uses, the test scenes' shared bearing, and
+the path of a packaged example scene."""
+
+import importlib.resources
 
 import jax
 import jax.numpy as jnp
@@ -46,3 +49,8 @@ inner_groove_radius = "13.9 mm"
 outer_groove_radius = "14.17 mm"
 radial_clearance = "0.028 mm"
 """
+
+
+def example_scene(name: str) -> str:
+    """Filesystem path of the packaged example scene `diffbearing/scenes/<name>.toml`."""
+    return str(importlib.resources.files("diffbearing.scenes").joinpath(f"{name}.toml"))

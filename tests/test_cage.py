@@ -15,9 +15,9 @@ from diffbearing.cage_lands import land_force
 from diffbearing.cage_pocket import circumferential_force, seat_ball
 from diffbearing.params import Lubricant, Operating, ball_bearing, ball_cage
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_jvp_matches_central_difference, example_scene
 
-# B7005-class internal geometry of ../shared/scenes/seed000_cage_b7005.toml; the cage geometry
+# B7005-class internal geometry of the packaged example diffbearing/scenes/cage_b7005.toml; the cage geometry
 # a scene leaves out is `ball_cage`'s default (land bore d_m + 0.8 D_w, land spacing D_w + L).
 B7005 = ball_bearing(ball_diameter=5.556e-3, pitch_diameter=36e-3, balls=17, inner_groove_ratio=0.52,
                      outer_groove_ratio=0.53, contact_angle=np.radians(15.0))
@@ -136,10 +136,10 @@ def test_restoring_force_derivatives_match_central_differences():
 
 
 @pytest.fixture(scope="module")
-def seed000_cli(shared_scenes, tmp_path_factory):
+def seed000_cli(tmp_path_factory):
     """f_inv [N] of the public seed 000 scene through `diffbearing run --json` with --set overrides
     (the outer-lock and cylindrical models compile once each; later runs reuse them)."""
-    scene = str(shared_scenes / "seed000_cage_b7005.toml")
+    scene = example_scene("cage_b7005")
     path = tmp_path_factory.mktemp("cage") / "out.json"
 
     def restoring_force(*overrides):
@@ -211,9 +211,9 @@ def test_seed000_outer_lock_beats_cylindrical_at_most_offset_angles(seed000_cli,
     assert np.mean(outer_lock > cylindrical) > 0.5
 
 
-def test_more_pushing_balls_than_the_load_zone_holds_exits_2(shared_scenes, capsys):
+def test_more_pushing_balls_than_the_load_zone_holds_exits_2(capsys):
     """Bad input: 12 pushing balls where the Sjövall load zone of the scene's load holds 11."""
-    code = cli.main(["run", str(shared_scenes / "seed000_cage_b7005.toml"), "--set", "cage.pushing_balls=12"])
+    code = cli.main(["run", example_scene("cage_b7005"), "--set", "cage.pushing_balls=12"])
     error = capsys.readouterr().err
     assert code == 2 and "cage.pushing_balls" in error and "11 balls in the Sjövall load zone" in error
 

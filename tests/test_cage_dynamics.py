@@ -14,10 +14,10 @@ from diffbearing.cage_lands import land_force, squeeze_film_force
 from diffbearing.cage_stability import cage_stability
 from diffbearing.params import Operating, ball_cage
 
-from .helpers import assert_jvp_matches_central_difference, central_difference_jvp
+from .helpers import assert_jvp_matches_central_difference, central_difference_jvp, example_scene
 from .test_cage import B7005, GUIDE_RADIAL_CLEARANCE, OIL
 
-SCENE = "../shared/scenes/seed000_cage_b7005.toml"
+SCENE = example_scene("cage_b7005")
 
 
 def seed000(rpm, ratio=1.083, pocket="outer_lock"):

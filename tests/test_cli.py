@@ -12,7 +12,7 @@ import pytest
 from diffbearing.app import cli, registry
 from diffbearing import build_model, load_scene, run_model
 
-from .helpers import BEARING_6411E
+from .helpers import BEARING_6411E, example_scene
 
 
 def run_cli(capsys, *arguments):
@@ -24,7 +24,7 @@ def run_cli(capsys, *arguments):
 def test_default_run_prints_report(capsys):
     code, out, err = run_cli(capsys, "run")
     assert code == 0, err
-    assert "Aero-engine angular-contact ball bearing, seed 001" in out
+    assert "Aero-engine angular-contact ball bearing" in out
     assert "free contact angle α0" in out and "deg" in out
     assert "load–deflection constant K" in out and "N/mm^1.5" in out
     assert "Equilibrium solver: converged" in out and "Stiffness K = dF/dΔ" in out
@@ -100,8 +100,8 @@ def test_missing_required_key_and_unknown_table(capsys, tmp_path):
     assert code == 2 and "scene file not found" in err
 
 
-def test_shared_seed002_scene_runs(capsys, shared_scenes):
-    code, out, err = run_cli(capsys, "run", str(shared_scenes / "seed002_6411E.toml"))
+def test_packaged_6411e_scene_runs(capsys):
+    code, out, err = run_cli(capsys, "run", example_scene("deep_groove_6411"))
     assert code == 0, err
     assert "9.2248" in out  # α0 [deg] from the 28 µm clearance (paper: 9.23°)
 
@@ -203,20 +203,15 @@ def test_peak_pressure_above_iso76_runs_with_a_warning(capsys, scene_6411E, tmp_
     assert "exceeds the ISO 76 static limit 4.2 GPa" in warning and warning in out
 
 
-def test_both_seed001_scenes_run_and_agree(capsys, tmp_path):
-    """The packaged seed 001 scenes (the shared seed files, d_m = 252 mm) run through the CLI: the
+def test_both_aero_scenes_run_and_agree(capsys, tmp_path):
+    """The packaged aero-engine angular-contact scenes (d_m = 252 mm) run through the CLI: the
     built-in example at 1500 r/min and the 201-point speed sweep to 20000 r/min, every point
     converged. The sweep's 1500 r/min point is the same computation as the example (same load):
     displacement and stiffness agree to 1e-10."""
-    from pathlib import Path
-
-    from .conftest import SHARED_SCENES
-
-    packaged = Path(__file__).resolve().parents[1] / "diffbearing" / "scenes"
     single_path, sweep_path = tmp_path / "single.json", tmp_path / "sweep.json"
-    code, _, err = run_cli(capsys, "run", str(packaged / "seed001_aero_acbb.toml"), "--json", str(single_path))
+    code, _, err = run_cli(capsys, "run", example_scene("aero_angular_contact"), "--json", str(single_path))
     assert code == 0, err
-    code, out, err = run_cli(capsys, "run", str(packaged / "seed001_speed_sweep.toml"), "--json", str(sweep_path))
+    code, out, err = run_cli(capsys, "run", example_scene("aero_speed_sweep"), "--json", str(sweep_path))
     assert code == 0, err
     assert "Sweep over 201 points" in out
     single, sweep = json.loads(single_path.read_text()), json.loads(sweep_path.read_text())
@@ -226,6 +221,3 @@ def test_both_seed001_scenes_run_and_agree(capsys, tmp_path):
     for key in ("displacement", "stiffness"):
         np.testing.assert_allclose(np.array(sweep[key][index]), np.array(single[key]), rtol=1e-10,
                                    atol=1e-10 * np.abs(np.array(single[key])).max())
-    if SHARED_SCENES.is_dir():  # the packaged files are the shared seed files
-        for name in ("seed001_aero_acbb.toml", "seed001_speed_sweep.toml"):
-            assert (packaged / name).read_text() == (SHARED_SCENES / name).read_text()

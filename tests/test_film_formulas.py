@@ -1,6 +1,7 @@
 """Closed-form EHL film thickness (issue 5, fidelity "formula") and the ball-bearing film effect."""
 
 import json
+from pathlib import Path
 
 import jax
 import jax.numpy as jnp
@@ -10,7 +11,7 @@ import pytest
 from diffbearing.app import cli
 from diffbearing.film_formulas import dowson_higginson_line_minimum, hamrock_dowson_point, pan_hamrock_line
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_jvp_matches_central_difference, example_scene
 
 # Seed 003 (physics.md §4): roller radius 12.7 mm on an outer raceway of radius 66 mm, straight
 # length 12.7 mm, W = 1028 N, E' = 2.26e11 Pa, η0 = 0.08 Pa·s, α = 2.2e-8 1/Pa, inner ring at
@@ -65,11 +66,11 @@ def test_film_derivatives_match_central_differences(formula):
         assert_jvp_matches_central_difference(jax.jit(film), point, direction, step=1e-5, rtol=1e-7)
 
 
-def test_ball_film_effect_reports_null_for_unloaded_balls(capsys, tmp_path, shared_scenes):
+def test_ball_film_effect_reports_null_for_unloaded_balls(capsys, tmp_path):
     """Seed 002's 6411E under a radial load leaves balls unloaded: their films are null in JSON;
     loaded balls have h_min < h_c, and Λ = h_min/σ."""
     path = tmp_path / "film.json"
-    code = cli.main(["run", str(shared_scenes / "seed002_6411E.toml"), "--json", str(path),
+    code = cli.main(["run", example_scene("deep_groove_6411"), "--json", str(path),
                      "--set", 'operating.force=["8 kN", "0 N", "0 N"]', "--set", 'operating.inner_speed="3000 rpm"',
                      "--set", 'effects.film="hamrock_dowson"', "--set", 'lubricant.preset="iso_vg_68"',
                      "--set", 'material.roughness="0.2 um"'])
@@ -167,13 +168,13 @@ def test_line_ehl_hard_cases_converge_or_say_so(load_factor, speed, nodes, conve
 
 
 @pytest.mark.parametrize("level, expected, tolerance", [("formula", 1.2389e-6, 1e-3), ("line", 1.207e-6, 0.05)])
-def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, shared_scenes, level, expected, tolerance):
+def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, level, expected, tolerance):
     """`diffbearing run seed003 --set effects.film=...`: Pan–Hamrock (1.2389 µm, this formula's
     value) and the numerical line contact against the paper's flooded 1.207 µm within 5 %. The
     scene's starvation (h_oil = 0.8 µm) gives a film below the supply over the density ratio
     (mass conservation: ρ̄h_c ≈ h_oil, ρ̄ = 1.10–1.15 in the Hertz zone) and Er > 1 %."""
     path = tmp_path / "film.json"
-    code = cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", f'effects.film="{level}"',
+    code = cli.main(["run", example_scene("starved_roller"), "--set", f'effects.film="{level}"',
                      "--set", "fidelity.grid=[257, 129]", "--json", str(path)])
     out = capsys.readouterr().out
     assert code == 0 and "central film h_c at x = 0" in out and "starved central film" in out
@@ -190,7 +191,7 @@ def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, shar
 
 
 @pytest.mark.slow  # 56 s with a cold compilation cache (2 cores)
-def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scenes):
+def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path):
     """Seed 003 at the finite line level on a 33 × 96 grid (48 cells on the half domain; physics.md §4, 1028 N,
     1000 r/min): the flooded central film within 5 % of the paper's 1.207 µm; the minimum at the
     end constriction, just past the flat's end (6.35 mm), for both films ("minimum sits at the
@@ -199,7 +200,7 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scene
     conservation, as in the line contact); Er > 1 %; each y cell has its meniscus ahead of the
     Hertz zone or, past the crown's start, none (the upper bound: no full film forms)."""
     path = tmp_path / "finite_line.json"
-    code = cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
+    code = cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[33, 96]",
                      "--json", str(path)])
     out = capsys.readouterr().out
     assert code == 0 and "finite line EHL (starved by the oil layer, a meniscus per y cell" in out
@@ -218,11 +219,11 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path, shared_scene
     assert np.all(meniscus[y < 6.0e-3] < -1.2 * half_width) and np.all(meniscus[y > 6.6e-3] > 0)
 
 
-def seed003_default_grid_films(tmp_path, shared_scenes, setting):
+def seed003_default_grid_films(tmp_path, setting):
     """(film, starvation) JSON tables of seed 003 through the CLI on the 33 × 96 grid with one more
     `--set`, after checking that the run exits 0 and both Newton solves converge."""
     path = tmp_path / "seed003.json"
-    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[33, 96]",
+    assert cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[33, 96]",
                      "--set", setting, "--json", str(path)]) == 0
     values = json.loads(path.read_text())
     film, starvation = values["film"], values["starvation"]
@@ -232,7 +233,7 @@ def seed003_default_grid_films(tmp_path, shared_scenes, setting):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("load, paper_minimum", [(1607.0, 0.215e-6), (2471.0, 0.159e-6)])
-def test_seed003_heavier_loads_through_the_cli(tmp_path, shared_scenes, load, paper_minimum):
+def test_seed003_heavier_loads_through_the_cli(tmp_path, load, paper_minimum):
     """Seed 003 starved by h_oil = 0.8 µm at the paper's two heavier loads on a 33 × 96 grid: both
     Newton solves converge (at 2471 N through the load continuation), the starved minimum film is
     within 15 % of the paper's (physics.md §4: 0.215 µm at 1607 N, 0.159 µm at 2471 N) and sits at
@@ -241,43 +242,43 @@ def test_seed003_heavier_loads_through_the_cli(tmp_path, shared_scenes, load, pa
     clustered at the flat's end), and it agrees at the supply that the paper's own starvation
     criterion implies, 0.68 to 0.76 of the stated layer (`benchmarks/finite_line_supply.py`;
     README, issue 5)."""
-    film, starvation = seed003_default_grid_films(tmp_path, shared_scenes, f'contact.load="{load:.0f} N"')
+    film, starvation = seed003_default_grid_films(tmp_path, f'contact.load="{load:.0f} N"')
     assert starvation["minimum"] == pytest.approx(paper_minimum, rel=0.15)
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("oil_layer", [1.8, 2.0])
-def test_seed003_starvation_criterion_through_the_cli(tmp_path, shared_scenes, oil_layer):
+def test_seed003_starvation_criterion_through_the_cli(tmp_path, oil_layer):
     """Seed 003's starvation criterion on a 33 × 96 grid at 1028 N: at h_oil = 2.0 and 1.8 µm both
     solves converge, and Er < 1 %. The paper has Er < 1 % at 2.0 µm and > 1 % at 1.8 µm; by mass
     conservation the middle of the roller cannot starve while the supply exceeds the ρ̄h that its
     flooded film carries (1.33 µm here), so its columns stay flooded (their menisci on the domain
     inlet) and h_c is the flooded one. The crowned ends, where the film is thinnest, do starve:
     the starved minimum film lies below the flooded one."""
-    film, starvation = seed003_default_grid_films(tmp_path, shared_scenes, f'operating.oil_layer="{oil_layer} um"')
+    film, starvation = seed003_default_grid_films(tmp_path, f'operating.oil_layer="{oil_layer} um"')
     assert 0.0 <= starvation["relative_error"] < 0.01
     middle = np.array(starvation["y"]) < 3.0e-3
     assert np.all(np.array(starvation["meniscus"])[middle] == starvation["x"][0])
     assert starvation["minimum"] < 0.95 * film["minimum"]
 
 
-def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys, shared_scenes):
+def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys):
     """A grid whose half domain is beyond the dense Newton ([129, 257]: 127 × 129 = 16383
     unknowns) exits 2 with a one-line message naming fidelity.grid, its limit and a grid that works."""
-    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--set", "fidelity.grid=[129, 257]"]) == 2
+    assert cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[129, 257]"]) == 2
     message = capsys.readouterr().err
     assert "fidelity.grid" in message and "(nx − 2)·⌈ny/2⌉ ≤ 4200" in message and "[65, 129]" in message
 
 
 @pytest.mark.slow
-def test_seed003_as_published_through_the_cli(tmp_path, shared_scenes):
+def test_seed003_as_published_through_the_cli(tmp_path):
     """The public scene as written (grid [65, 129]: 65 × 65 on the half domain, 1028 N,
     h_oil = 0.8 µm): both Newton solves converge; the flooded central film within 5 % of the
     paper's 1.207 µm and the starved minimum within 15 % of its 0.319 µm (physics.md §4), at the
     roller end; Er > 1 % (starved at 0.8 µm)."""
     path = tmp_path / "published.json"
-    assert cli.main(["run", str(shared_scenes / "seed003_starved_roller.toml"), "--json", str(path)]) == 0
+    assert cli.main(["run", example_scene("starved_roller"), "--json", str(path)]) == 0
     values = json.loads(path.read_text())
     film, starvation = values["film"], values["starvation"]
     assert film["converged"] is True and starvation["converged"] is True
@@ -287,8 +288,8 @@ def test_seed003_as_published_through_the_cli(tmp_path, shared_scenes):
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3 and starvation["relative_error"] > 0.01
 
 
-def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path, shared_scenes):
-    text = (shared_scenes / "seed003_starved_roller.toml").read_text()
+def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path):
+    text = Path(example_scene("starved_roller")).read_text()
     scene = tmp_path / "no_oil_layer.toml"
     scene.write_text("\n".join(line for line in text.splitlines() if not line.startswith("oil_layer")))
     code = cli.main(["run", str(scene), "--set", 'effects.film="formula"'])
@@ -297,7 +298,7 @@ def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path, shared_scenes
 
 
 @pytest.mark.slow
-def test_ball_film_derivatives_match_central_differences(shared_scenes):
+def test_ball_film_derivatives_match_central_differences():
     """The per-ball films of the scene model (through the implicit bearing equilibrium) with
     respect to inner-ring speed and viscosity, forward and reverse, against central differences;
     derivatives stay finite at the unloaded balls, whose film is NaN (null) by design."""
@@ -305,7 +306,7 @@ def test_ball_film_derivatives_match_central_differences(shared_scenes):
 
     from diffbearing import build_model, load_scene
 
-    model = build_model(load_scene(str(shared_scenes / "seed002_6411E.toml"), [
+    model = build_model(load_scene(example_scene("deep_groove_6411"), [
         'operating.force=["8 kN", "0 N", "0 N"]', 'operating.inner_speed="3000 rpm"', "effects.life=false",
         'effects.film="hamrock_dowson"', 'lubricant.preset="iso_vg_68"']))
     run = model.function()

@@ -1,6 +1,8 @@
 """Roller–raceway contact (issue 4): Love's coefficients, DC-FFT, the Polonsky–Keer solver against
 Hertz, edge effects, logarithmic profiles, seed 004's findings, derivatives and hard cases."""
 
+from pathlib import Path
+
 import equinox as eqx
 import jax
 import jax.numpy as jnp
@@ -16,7 +18,7 @@ from diffbearing.roller_geometry import RollerLoading, roller_bearing, roller_mo
 from diffbearing.roller_profile import roller_profile
 from diffbearing import build_model, load_scene, run_model
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_jvp_matches_central_difference, example_scene
 
 GCR15 = Material(207e9, 0.29, 7830.0)  # seed 004: E = 207 GPa, ν = 0.29
 LENGTH, DIAMETER, LOAD = 12e-3, 10e-3, 1000.0
@@ -127,12 +129,12 @@ def test_logarithmic_profile_at_its_design_load_is_nearly_uniform(kind):
 
 
 @pytest.fixture(scope="module")
-def seed004_profiles(shared_scenes):
+def seed004_profiles():
     """Seed 004's tapered roller at 1 kN with three profiles; circular: 6 mm flat + 100 mm arc."""
     results = {}
     for kind, extra in (("straight", []), ("circular", ['profile.flat_length="6 mm"', 'profile.crown_radius="100 mm"']),
                         ("johns_gohar", [])):
-        scene = load_scene(str(shared_scenes / "seed004_tapered_roller.toml"), [f'profile.kind="{kind}"', *extra])
+        scene = load_scene(example_scene("tapered_roller"), [f'profile.kind="{kind}"', *extra])
         results[kind] = run_model(build_model(scene), progress=False).values
     return results
 
@@ -251,12 +253,12 @@ def test_bad_roller_input_names_the_parameter():
 # --- the command ------------------------------------------------------------------------------
 
 
-def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path, shared_scenes):
+def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path):
     import json
 
     from diffbearing.app import cli
 
-    scene, path, plot = shared_scenes / "seed004_tapered_roller.toml", tmp_path / "c.json", tmp_path / "p.png"
+    scene, path, plot = example_scene("tapered_roller"), tmp_path / "c.json", tmp_path / "p.png"
     code = cli.main(["run", str(scene), "--json", str(path), "--plot", str(plot)])
     out = capsys.readouterr().out
     assert code == 0
@@ -271,11 +273,11 @@ def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path, shared_sc
         in capsys.readouterr().out
 
 
-def test_cli_flat_and_concave_raceways(capsys, shared_scenes):
+def test_cli_flat_and_concave_raceways(capsys):
     """raceway_radius = "inf" is a flat raceway; raceway = "outer" makes it concave (larger R)."""
     from diffbearing.app import cli
 
-    scene = str(shared_scenes / "seed004_tapered_roller.toml")
+    scene = example_scene("tapered_roller")
     radii = {}
     for label, overrides in (("convex", []), ("flat", ['contact.raceway_radius="inf"']),
                              ("concave", ['contact.raceway="outer"'])):
@@ -296,18 +298,18 @@ def test_cli_flat_and_concave_raceways(capsys, shared_scenes):
     ('effects.contact="fem"', "effects.contact"),
     ('contact.raceway_radius="-3 mm"', "contact.raceway_radius"),
 ])
-def test_cli_bad_roller_input_exits_2(capsys, shared_scenes, override, named):
+def test_cli_bad_roller_input_exits_2(capsys, override, named):
     from diffbearing.app import cli
 
-    code = cli.main(["run", str(shared_scenes / "seed004_tapered_roller.toml"), "--set", override])
+    code = cli.main(["run", example_scene("tapered_roller"), "--set", override])
     err = capsys.readouterr().err
     assert code == 2 and named in err and len(err.strip().splitlines()) == 1
 
 
-def test_roller_sweep_over_load_and_tilt(tmp_path, shared_scenes):
+def test_roller_sweep_over_load_and_tilt(tmp_path):
     """A [sweep] over load and tilt runs as one vmapped batch: the peak grows with load and with
     tilt, every point converges and carries its own load."""
-    text = (shared_scenes / "seed004_tapered_roller.toml").read_text().replace("grid = [32, 256]", "grid = [16, 64]")
+    text = Path(example_scene("tapered_roller")).read_text().replace("grid = [32, 256]", "grid = [16, 64]")
     scene_file = tmp_path / "sweep.toml"
     scene_file.write_text(text + '\n[sweep]\n"contact.load" = ["0.5 kN", "1 kN", "1.5 kN"]\n'
                                  '"contact.tilt" = ["0 deg", "0.01 deg"]\n')

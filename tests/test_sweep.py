@@ -6,6 +6,7 @@ import socket
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -13,7 +14,7 @@ import pytest
 from diffbearing.app import cli
 from diffbearing import build_model, load_scene, run_model
 
-from .helpers import BEARING_6411E
+from .helpers import BEARING_6411E, example_scene
 
 SCENE = BEARING_6411E + textwrap.dedent("""
     [operating]
@@ -90,12 +91,12 @@ def test_sharded_sweep_matches_single_device(swept, scene_file):
 
 
 @pytest.mark.slow
-def test_sweep_of_the_starved_line_film_equals_single_runs(shared_scenes, tmp_path):
+def test_sweep_of_the_starved_line_film_equals_single_runs(tmp_path):
     """A sweep through the iterative 1-D EHL solver (seed 003, line film, starved) runs its points
     one after another (`sequential_sweep`; the vmapped batch of two solves ran past 150 s) and
     each point equals a single run at that load."""
     scene = tmp_path / "line_sweep.toml"
-    text = (shared_scenes / "seed003_starved_roller.toml").read_text().replace('film = "finite_line"', 'film = "line"')
+    text = Path(example_scene("starved_roller")).read_text().replace('film = "finite_line"', 'film = "line"')
     scene.write_text(text.split("[fidelity]")[0] + '[sweep]\n"contact.load" = ["1000 N", "1600 N"]\n')
     swept = run_model(build_model(load_scene(str(scene))), progress=False).values
     assert swept["starvation.minimum"].shape == (2,) and np.all(swept["starvation.converged"])
