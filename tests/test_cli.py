@@ -221,3 +221,62 @@ def test_both_aero_scenes_run_and_agree(capsys, tmp_path):
     for key in ("displacement", "stiffness"):
         np.testing.assert_allclose(np.array(sweep[key][index]), np.array(single[key]), rtol=1e-10,
                                    atol=1e-10 * np.abs(np.array(single[key])).max())
+
+
+# --- examples and bad input a new user tries ----------------------------------------------------
+
+def test_examples_lists_every_packaged_scene(capsys):
+    from diffbearing import examples
+
+    code, out, _ = run_cli(capsys, "examples")
+    listed = examples()
+    assert code == 0 and set(listed) == {"aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
+                                         "starved_roller", "tapered_roller"}
+    for name, description in listed.items():
+        assert description and f"{name}" in out and description in out
+    assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)
+
+
+@pytest.mark.parametrize("name", ["aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
+                                  "tapered_roller", pytest.param("starved_roller", marks=pytest.mark.slow)])
+def test_every_example_runs_by_name(capsys, tmp_path, name):
+    """`diffbearing run NAME` runs each packaged example to exit 0 and writes its JSON."""
+    path = tmp_path / "out.json"
+    code, out, err = run_cli(capsys, "run", name, "--json", str(path))
+    assert code == 0, err
+    assert f"scene: example {name}" in out
+    assert json.loads(path.read_text())["errors"] == []
+
+
+def test_json_into_a_missing_folder_exits_2_before_computing(capsys, tmp_path):
+    import time
+
+    start = time.perf_counter()
+    code, out, err = run_cli(capsys, "run", "--json", str(tmp_path / "no" / "such" / "folder" / "out.json"))
+    assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
+    assert "--json" in err and "does not exist" in err
+    assert time.perf_counter() - start < 5.0  # refused before the model is built or compiled
+
+
+@pytest.mark.parametrize("override, named", [
+    ('lubricant.viscosity="-0.01 Pa*s"', "lubricant.viscosity must be > 0"),
+    ("cage.eccentricity=2", "cage.eccentricity must be ≥ 0 and ≤ 1"),
+])
+def test_bad_values_name_their_key(capsys, override, named):
+    code, out, err = run_cli(capsys, "run", "cage_b7005", "--set", override)
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_a_key_nothing_reads_is_refused(capsys):
+    """The default example has no film effect: a lubricant given to it would be silently unused."""
+    code, _, err = run_cli(capsys, "run", "--set", 'lubricant.preset="iso_vg_32"')
+    assert code == 2 and "'lubricant.preset' not read by anything this scene runs" in err
+
+
+def test_persistent_compilation_cache_folder(monkeypatch, tmp_path):
+    monkeypatch.setenv("DIFFBEARING_CACHE", str(tmp_path))
+    assert cli.compilation_cache_folder() == str(tmp_path)
+    monkeypatch.setenv("DIFFBEARING_CACHE", "off")
+    assert cli.compilation_cache_folder() is None
+    monkeypatch.delenv("DIFFBEARING_CACHE")
+    assert cli.compilation_cache_folder().endswith(".cache/diffbearing/jax")

@@ -1,0 +1,140 @@
+"""The house rules, checked on the code: physics never imports the application layer, no module
+imports another that imports it back, and an effect plugs in through its adapter alone."""
+
+import ast
+import dataclasses
+from pathlib import Path
+
+import jax.numpy as jnp
+import pytest
+
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.app import registry
+from diffbearing.app.registry import Adapter, Block, Key, Output
+
+PACKAGE = Path(__file__).resolve().parents[1] / "diffbearing"
+
+
+def _module_name(path: Path) -> str:
+    parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _imports(path: Path) -> set[str]:
+    """diffbearing modules `path` imports, at module level or inside functions."""
+    name = _module_name(path)
+    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            found |= {alias.name for alias in node.names if alias.name.startswith("diffbearing")}
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")
+                base = base[:len(base) - node.level + 1]
+                module = ".".join(base + ([node.module] if node.module else []))
+            else:
+                module = node.module or ""
+            if not module.startswith("diffbearing"):
+                continue
+            for alias in node.names:  # `from . import adapters` names a module
+                candidate = f"{module}.{alias.name}"
+                found.add(candidate if _path_of(candidate) else module)
+    return {module for module in found if _path_of(module)}
+
+
+def _path_of(module: str) -> Path | None:
+    relative = Path(*module.split("."))
+    for path in (PACKAGE.parent / relative.with_suffix(".py"), PACKAGE.parent / relative / "__init__.py"):
+        if path.is_file():
+            return path
+    return None
+
+
+GRAPH = {_module_name(path): _imports(path) for path in PACKAGE.rglob("*.py")}
+
+
+def test_physics_never_imports_the_application_layer():
+    physics = [name for name in GRAPH if not name.startswith("diffbearing.app") and name != "diffbearing"]
+    assert len(physics) > 20
+    upward = {name: sorted(m for m in GRAPH[name] if m.startswith("diffbearing.app") or m == "diffbearing")
+              for name in physics}
+    assert {name: found for name, found in upward.items() if found} == {}
+
+
+def test_no_import_cycles():
+    """Depth-first search over the import graph (the package facade `diffbearing/__init__.py`,
+    which re-exports both layers, left out: it is imported by nothing inside)."""
+    graph = {name: {m for m in imports if m != "diffbearing"} for name, imports in GRAPH.items() if name != "diffbearing"}
+    assert not any("diffbearing" == m for name, imports in GRAPH.items() if name != "diffbearing" for m in imports)
+    state: dict[str, str] = {}
+
+    def visit(name, path):
+        state[name] = "open"
+        for following in sorted(graph.get(name, ())):
+            if state.get(following) == "open":
+                pytest.fail("import cycle: " + " → ".join(path[path.index(following):] + [following]))
+            if following not in state:
+                visit(following, path + [following])
+        state[name] = "done"
+
+    for name in sorted(graph):
+        if name not in state:
+            visit(name, [name])
+
+
+def test_the_graph_holds_function_level_imports():
+    """A cycle hidden by an import inside a function is still seen: the CLI imports the model inside
+    `main`, the schema imports the adapters package with `from . import adapters`."""
+    assert "diffbearing.app.model" in GRAPH["diffbearing.app.cli"]
+    assert "diffbearing.app.adapters" in GRAPH["diffbearing.app.schema"]
+    assert {"diffbearing.elliptic", "diffbearing.numerics"} <= GRAPH["diffbearing.hertz"]
+
+
+TOY = Adapter(
+    name="toy",
+    bearing_types=("tapered_roller",),
+    keys={"effects.toy": Key("boolean"), "toy.factor": Key("number", doc="a toy key")},
+    blocks=(Block(name="toy", bearing_types=("tapered_roller",), enabled_by=("toy", True), requires=("roller_geometry",),
+                  inputs=("bearing", "operating"), outputs=(Output("toy.doubled_load", "N", "kN", "twice the load"),),
+                  compute=lambda inputs, settings, results: {"toy.doubled_load": 2.0 * inputs["operating"].load}),),
+)
+
+
+@pytest.fixture
+def toy_registered():
+    registry.register(TOY)
+    yield TOY
+    registry.unregister("toy")
+
+
+def test_a_toy_effect_needs_only_its_adapter(toy_registered):
+    """An adapter registered in a test adds its key to the schema, its block to the model and its
+    output to the run and the report; nothing else is touched."""
+    from diffbearing.app.report import format_report
+
+    scene = load_scene("tapered_roller", ["effects.toy=true"])
+    model = build_model(scene)
+    assert [block.name for block in model.blocks] == ["roller_geometry", "roller_contact_influence", "toy"]
+    result = run_model(model)
+    assert float(result.values["toy.doubled_load"]) == pytest.approx(2000.0, rel=1e-14)  # the scene's 1 kN
+    assert "twice the load" in format_report(result)
+
+
+def test_a_toy_key_nothing_reads_is_refused(toy_registered):
+    scene = load_scene("tapered_roller", ["toy.factor=3.0"])
+    with pytest.raises(ValueError, match="'toy.factor' not read"):
+        build_model(scene)
+
+
+def test_unregistered_effect_is_unknown():
+    with pytest.raises(ValueError, match="unknown key 'effects.toy'"):
+        load_scene("tapered_roller", ["effects.toy=true"])
+
+
+def test_adapters_declare_distinct_blocks_and_consistent_keys():
+    names = [block.name for adapter in registry.ADAPTERS.values() for block in adapter.blocks]
+    assert len(names) == len(set(names))
+    clash = dataclasses.replace(TOY, name="clash", blocks=(), keys={"contact.load": Key("number")})
+    with pytest.raises(ValueError, match="declared twice with different meanings"):
+        registry.register(clash)
