@@ -7,7 +7,7 @@ import jax
 import numpy as np
 
 from ... import hertz
-from ...params import _is_concrete, check_range
+from ...params import check_range
 from ...roller_contact import roller_contact
 from ...roller_geometry import (ROLLER_KINDS, RollerLoading, equivalent_radius, pure_rolling_entrainment_speed,
                                 raceway_curvature, raceway_radius_of_pitch, roller_bearing, roller_modulus)
@@ -39,15 +39,19 @@ def _bearing(v, built) -> dict:
 
 
 def _check_roller_count(v) -> None:
-    """bearing.rollers ≥ 3, and with a pitch diameter the rollers must fit on the pitch circle."""
     count = v["bearing.rollers"]
-    if count < 3:
-        raise ValueError(f"bearing.rollers must be an integer ≥ 3, got {count}")
-    diameter = v.get("bearing.roller_diameter", v.get("bearing.roller_large_diameter"))
-    pitch = v.get("bearing.pitch_diameter")
-    if pitch is not None and diameter is not None and _is_concrete(pitch, diameter):
-        check_range("bearing.roller_diameter", diameter, low=0.0, high=float(pitch) * math.sin(math.pi / count),
-                    unit=" m", why="pitch_diameter·sin(π/rollers), so that the rollers fit on the pitch circle")
+    if count < 1:
+        raise ValueError(f"bearing.rollers must be an integer ≥ 1, got {count}")
+
+
+def _roller_count_text(scene, bearing) -> str:
+    """", Z rollers", with a note where they would not fit on the pitch circle (D > d_m sin(π/Z))."""
+    text = f", {bearing.roller_count} rollers"
+    pitch = scene.values.get("bearing.pitch_diameter")
+    if pitch is not None and float(bearing.large_diameter) > pitch * math.sin(math.pi / bearing.roller_count):
+        text += (f" (which would not fit on the {pitch * 1e3:.4g} mm pitch circle: that needs D ≤ d_m sin(π/Z) = "
+                 f"{pitch * math.sin(math.pi / bearing.roller_count) * 1e3:.4g} mm)")
+    return text
 
 
 def _raceway_curvature(v):
@@ -196,7 +200,7 @@ def _header(result) -> list[str]:
     else:
         shape = f"D = {float(bearing.small_diameter) * 1e3:.4g} mm"
     if bearing.roller_count is not None:
-        shape += f", {bearing.roller_count} rollers"
+        shape += _roller_count_text(scene, bearing)
     curvature = float(loading.raceway_curvature)
     raceway = ("flat raceway" if curvature == 0 else
                f"{'convex' if curvature > 0 else 'concave'} raceway, R = {abs(1 / curvature) * 1e3:.4g} mm at mid-length")
@@ -263,7 +267,7 @@ ADAPTER = register(Adapter(
         "bearing.roller_small_diameter": quantity("length"),
         "bearing.roller_large_diameter": quantity("length"),
         "bearing.roller_length": quantity("length"),
-        "bearing.rollers": Key("integer", doc="rollers in the bearing; checked to fit on the pitch circle"),
+        "bearing.rollers": Key("integer", doc="rollers in the bearing (reported; a single contact does not use it)"),
         "bearing.cone_half_angle": quantity("angle"),
         "bearing.pitch_diameter": quantity("length"),
         "operating.inner_speed": quantity("angular_speed"),
