@@ -21,6 +21,8 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from .stored_models import compile_stored
+
 
 @dataclasses.dataclass(frozen=True)
 class Key:
@@ -246,12 +248,13 @@ def compiled(blocks, settings: dict, inputs: dict):
 
     Compiled models are kept per process, keyed by the blocks, the settings and the structure,
     shapes and dtypes of the inputs: a second run of the same model with other numbers reuses it.
+    Between processes they are kept on disk (stored_models.py) where a compilation cache is set.
     """
     leaves, treedef = jax.tree.flatten(inputs)
-    key = (tuple(b.name for b in blocks), repr(sorted((k, sorted(v.items())) for k, v in settings.items())),
-           treedef, tuple((jnp.shape(x), jnp.result_type(x)) for x in leaves))
+    key = repr((tuple(b.name for b in blocks), sorted((k, sorted(v.items())) for k, v in settings.items()),
+                str(treedef), tuple((jnp.shape(x), str(jnp.result_type(x))) for x in leaves)))
     if key in _COMPILED:
         return _COMPILED[key], True
-    executable = jax.jit(evaluate(blocks, settings)).lower(inputs).compile()
+    executable = compile_stored(evaluate(blocks, settings), inputs, key)
     _COMPILED[key] = executable
     return executable, False

@@ -1,0 +1,59 @@
+"""Compiled models kept between processes: a second run of the same scene skips tracing.
+
+JAX's persistent compilation cache keeps XLA executables, but a run still traces and lowers the
+model first (seconds for the ball equilibrium with its implicit derivatives). Here the lowered
+model is stored with `jax.export` beside that cache, under a key of the blocks, the settings, the
+inputs' structure, shapes and dtypes, the JAX version and a digest of diffbearing's source (so an
+edit of the code invalidates it); the next process deserializes it and gets the executable from
+the persistent cache. Without a compilation cache folder (`jax_compilation_cache_dir` unset, as in
+a notebook that does not set it) nothing is stored.
+"""
+
+import functools
+import hashlib
+import tempfile
+from pathlib import Path
+
+import jax
+from jax import export
+
+PACKAGE = Path(__file__).resolve().parents[1]
+
+
+@functools.cache
+def source_digest() -> str:
+    """sha256 of every .py file of the diffbearing package (path and content)."""
+    digest = hashlib.sha256(jax.__version__.encode())
+    for path in sorted(PACKAGE.rglob("*.py")):
+        digest.update(str(path.relative_to(PACKAGE)).encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def _folder() -> Path | None:
+    root = jax.config.jax_compilation_cache_dir
+    return None if not root else Path(root) / "diffbearing-models"
+
+
+def compile_stored(function, inputs, key: str):
+    """A compiled callable inputs → outputs of `function` (a pure function of the inputs pytree),
+    loaded from the stored export of `key` where one exists, else exported, stored and compiled."""
+    leaves, treedef = jax.tree.flatten(inputs)
+    folder = _folder()
+    if folder is None:
+        return jax.jit(function).lower(inputs).compile()
+
+    def flat(*arrays):
+        return function(jax.tree.unflatten(treedef, arrays))
+
+    path = folder / (hashlib.sha256((key + source_digest()).encode()).hexdigest() + ".jaxexport")
+    if path.is_file():
+        exported = export.deserialize(bytearray(path.read_bytes()))
+    else:
+        exported = export.export(jax.jit(flat))(*leaves)
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=folder, suffix=".partial", delete=False) as temporary:
+            temporary.write(exported.serialize())
+        Path(temporary.name).replace(path)  # atomic: a process reading meanwhile sees all or nothing
+    executable = jax.jit(exported.call).lower(*leaves).compile()
+    return lambda values: executable(*jax.tree.leaves(values))
