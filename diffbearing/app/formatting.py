@@ -4,11 +4,9 @@ import numpy as np
 
 from .units import registry
 
-# display units of swept keys, by schema dimension, and their SI units
+# display units of swept keys, by schema dimension (their SI units: units.SI_UNITS)
 SWEEP_DISPLAY = {"length": "mm", "angular_speed": "rpm", "force": "kN", "moment": "N*m", "angle": "deg",
                  "pressure": "GPa"}
-SI_OF_DIMENSION = {"length": "m", "angular_speed": "rad/s", "force": "N", "moment": "N*m", "angle": "rad",
-                   "pressure": "Pa"}
 
 
 def to_display(value, unit: str, display: str):

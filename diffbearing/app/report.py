@@ -8,9 +8,10 @@ import json
 
 import numpy as np
 
-from .formatting import SI_OF_DIMENSION, SWEEP_DISPLAY, format_number, format_value, to_display, unit_label
+from .formatting import SWEEP_DISPLAY, format_number, format_value, to_display, unit_label
 from .registry import adapters_for
 from .schema import lookup
+from .units import SI_UNITS
 
 
 def active_adapters(model) -> list:
@@ -29,7 +30,7 @@ def _header(result) -> list[str]:
 def _swept_cells(key, values) -> tuple[str, list[str]]:
     dimension = lookup(key).dimension
     display = SWEEP_DISPLAY.get(dimension)
-    shown = to_display(values, SI_OF_DIMENSION[dimension], display) if display else np.asarray(values)
+    shown = to_display(values, SI_UNITS[dimension], display) if display else np.asarray(values)
     cells = [("[" + ", ".join(format_number(x) for x in np.ravel(v)) + "]") if np.ndim(v) else format_number(v)
              for v in shown]
     return f"{key} [{unit_label(display or '')}]", cells

@@ -5,10 +5,12 @@ import jax.numpy as jnp
 import numpy as np
 
 from ... import ball_equilibrium, ball_validity, hertz
+from ...kinematics import RACE_CONTROLS
 from ...params import BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
-from ..formatting import format_number, state_column, to_display, unit_label
-from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ..formatting import SWEEP_DISPLAY, format_number, state_column, to_display, unit_label
+from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
+from ..units import SI_UNITS
 from .materials import material
 
 # ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
@@ -248,13 +250,10 @@ def _stiffness(inputs: dict, settings: dict, results: dict) -> dict:
 
 def _stiffness_against_sweep(result, figure):
     """Diagonal stiffness against the first swept quantity (scalar sweeps) or the point index."""
-    from ..formatting import SI_OF_DIMENSION, SWEEP_DISPLAY
-    from ..registry import all_keys
-
     key, values = next(iter(result.sweep_axes.items()))
     dimension = all_keys()[key].dimension
     if np.ndim(values) == 1 and dimension in SWEEP_DISPLAY:
-        x = to_display(values, SI_OF_DIMENSION[dimension], SWEEP_DISPLAY[dimension])
+        x = to_display(values, SI_UNITS[dimension], SWEEP_DISPLAY[dimension])
         label = f"{key} [{SWEEP_DISPLAY[dimension]}]"
     else:
         x, label = np.arange(len(values)), f"{key} (point)"
@@ -382,9 +381,9 @@ ADAPTER = register(Adapter(
         "effects.centrifugal": Key("boolean"),
         "effects.gyroscopic": Key("boolean"),
         "effects.stiffness": Key("boolean"),
-        "fidelity.hertz": Key("choice", choices=("exact", "brewe_hamrock", "hamrock_brewe"),
+        "fidelity.hertz": Key("choice", choices=hertz.POINT_CONTACT_METHODS,
                               read_by=("raceway_contact", "equilibrium")),
-        "fidelity.race_control": Key("choice", choices=("outer", "inner"), read_by=("equilibrium",),
+        "fidelity.race_control": Key("choice", choices=RACE_CONTROLS, read_by=("equilibrium",),
                                      doc="raceway control hypothesis of the ball kinematics"),
         "fidelity.hertz_constants": Key("choice", choices=("contact_angle", "free_contact_angle"),
                                         read_by=("equilibrium",),
