@@ -6,18 +6,19 @@ Two bearings, in one process, after compilation (median of `repeats` batches; si
 the `check` loads compared below of each one's median of 5 calls):
   * MASTA-style deep-groove bearing: 7 balls of D_w = 11.5 mm on d_m = 43.5 mm, f_i = 0.52,
     f_o = 0.53, diametral clearance 10 µm; static; radial 100–3000 N and axial 0–2000 N (random);
-  * seed 001 (Z = 28) at 1500 r/min with centrifugal and gyroscopic effects, equilibrium + 5×5
-    stiffness; Fx, Fy, Fz swept as in benchmarks/ball_bearing.py.
+  * the aero-engine bearing of the stiffness paper (Z = 28) at 1500 r/min with centrifugal and
+    gyroscopic effects, equilibrium + 5×5 stiffness; Fx, Fy, Fz swept as in
+    benchmarks/ball_bearing.py.
 The batch answers are compared with single calls on a subset (largest relative difference of Δ
-and K). Targets: static ≤ 50 µs/case in a 10 000-case batch, seed 001 ≤ 200
+and K). Targets: static ≤ 50 µs/case in a 10 000-case batch, the aero-engine bearing ≤ 200
 µs/case, batch below single call for both. Writes benchmarks/results/ball_batch.md.
 
 Where the time went (after the solver changes; jit(vmap), 200–2000 cases, 2 shared cores). 7-ball
 static: the static start (regularized Newton on the elastic energy, ≤ 9 steps) is 22 µs/case of
 43; the ring Newton (3 steps, Jacobian with the Hertz constants held, 5 tangents) the rest. Before,
 `jax.jacfwd` through the Chebyshev (Clenshaw, degree 16) Hertz constants cost 48 000 flop/case per
-Jacobian against 2 300 for a residual. Seed 001 with speed effects: solve 720 µs/case, stiffness
-370 µs/case. Both are dominated by the per-ball 2×2 Newton (`_ball_newton`, about 25 µs/case per
+Jacobian against 2 300 for a residual. The aero-engine bearing with speed effects: solve 720
+µs/case, stiffness 370 µs/case. Both are dominated by the per-ball 2×2 Newton (`_ball_newton`, about 25 µs/case per
 step for 28 balls): the vmapped loop runs as many steps as the slowest ball of the batch needs,
 13 here (most cases need 4–6), where a lightly loaded ball whose inner contact is open at the start
 overshoots and comes back slowly on Hertz's δ^{3/2}. The solve pays it for its start (balls solved
@@ -121,7 +122,7 @@ def main():
                 solution.converged)
 
     rows = [measure("7-ball deep groove, static (Δ)", static_case, static_loads, args.repeats, args.check),
-            measure("seed 001, 1500 r/min, speed effects (Δ + 5×5 K)", speed_case, speed_loads, args.repeats,
+            measure("aero-engine bearing, 1500 r/min, speed effects (Δ + 5×5 K)", speed_case, speed_loads, args.repeats,
                     args.check)]
     targets = (50e-6, 200e-6)
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024

@@ -2,8 +2,8 @@
 
     python benchmarks/ball_bearing.py [--cases 1000] [--scipy-cases 8] [--repeats 15]
 
-Seed 001 bearing (built-in example, d_m = 252 mm) at 1500 r/min, centrifugal and gyroscopic
-effects on. Measured in one run on one machine:
+The aero-engine bearing of the stiffness paper (built-in example aero_angular_contact,
+d_m = 252 mm) at 1500 r/min, centrifugal and gyroscopic effects on. Measured in one run on one machine:
   * single case (equilibrium + 5×5 stiffness), after compilation, median of `repeats`; compile time;
   * a `cases`-point load sweep with stiffness (jit(vmap), chunks of 64), against the SciPy baseline
     (benchmarks/scipy_ball_bearing.py: root(hybr) on 5+2Z unknowns + finite-difference stiffness),
@@ -41,7 +41,7 @@ SPEED = 1500 * np.pi / 30
 
 
 def sweep_forces(cases):
-    """Load sweep around the seed 001 load: Fx, Fy, Fz scaled by 0.2…2, moments kept."""
+    """Load sweep around the example's load: Fx, Fy, Fz scaled by 0.2…2, moments kept."""
     scale = np.linspace(0.2, 2.0, cases)
     return np.stack([15e3 * scale, 18e3 * scale[::-1], 35e3 * np.sqrt(scale)], axis=1)
 
@@ -116,7 +116,7 @@ def main():
 
     machine = f"{platform.machine()}, {jax.devices()[0].platform.upper()} ×{len(jax.devices())}, jax {jax.__version__}"
     lines = [
-        f"Seed 001 bearing (Z = 28) at 1500 r/min, centrifugal + gyroscopic ({machine}); "
+        f"Aero-engine bearing of the stiffness paper (Z = 28) at 1500 r/min, centrifugal + gyroscopic ({machine}); "
         f"median of {args.repeats} runs unless stated.",
         "",
         "| measurement | diffbearing (JAX) | NumPy/SciPy baseline | ratio |",
@@ -129,11 +129,11 @@ def main():
         f"| compile (sweep, once) | {sweep.compile_s:.1f} s | – | – |",
         "",
         f"Same answers: displacement differs by {agreement_d:.1e} (relative to its largest component), "
-        f"stiffness by {agreement_k:.1e} at the seed load and at most {max(differences):.1e} over the "
+        f"stiffness by {agreement_k:.1e} at the example's load and at most {max(differences):.1e} over the "
         f"{len(differences)} sweep cases SciPy solved (relative to the largest entry; the baseline's K is a "
         f"finite difference). SciPy's hybr did not converge from its plain guess in {failures} of the "
         f"{args.scipy_cases} sweep cases; diffbearing converged in {int(np.sum(sweep.values['converged']))} of "
-        f"{args.cases}. Seed load converged: JAX {bool(converged)}, SciPy {bool(ok)}.",
+        f"{args.cases}. Example's load converged: JAX {bool(converged)}, SciPy {bool(ok)}.",
         "",
         "Cost of each effect alone (scene layer, one case, after compilation):",
         "",

@@ -1,4 +1,4 @@
-"""Cage forces of seed 000: the paper's figures, and the cost of a force map (JAX against NumPy/SciPy).
+"""Cage forces of the cage paper: its figures, and the cost of a force map (JAX against NumPy/SciPy).
 
     python benchmarks/cage_forces.py [--positions 100000] [--scipy-positions 200] [--repeats 5]
 
@@ -143,7 +143,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=5)
     args = parser.parse_args()
     RESULTS.mkdir(exist_ok=True)
-    lines = ["# Cage forces, seed 000 (B7005-class, outer-ring guided cage)", "",
+    lines = ["# Cage forces, the cage paper (B7005-class, outer-ring guided cage)", "",
              f"Machine: {platform.processor() or platform.machine()}, {jax.device_count()} JAX device(s) "
              f"({jax.default_backend()}), JAX {jax.__version__}. Command: `python benchmarks/cage_forces.py`.", ""]
 
@@ -214,7 +214,7 @@ def main():
     for axis in (angle_axis, eccentricity_axis):
         axis.grid(alpha=0.3)
         axis.legend(fontsize=8)
-    figure.suptitle("Restoring force of the B7005-class cage (seed 000)")
+    figure.suptitle("Restoring force of the B7005-class cage (the cage paper)")
     figure.savefig(RESULTS / "cage_forces.png", dpi=120)
     lines += ["![f_inv against offset angle and eccentricity](cage_forces.png)", ""]
     (RESULTS / "cage_forces.md").write_text("\n".join(lines))

@@ -1,8 +1,8 @@
-"""Cage whirl against the ratio of pocket clearance to guide clearance (issue 6, item 4).
+"""Cage whirl against the ratio of pocket clearance to guide clearance (the cage paper, §4).
 
     python benchmarks/cage_whirl_ratio.py [--revolutions 10] [--repeats 3]
 
-Seed 000's B7005-class bearing (diffbearing/scenes/cage_b7005.toml: F = [1120, 0, 400] N,
+The cage paper's B7005-class bearing (diffbearing/scenes/cage_b7005.toml: F = [1120, 0, 400] N,
 outer-lock pockets, guide clearance 0.24 mm diametral, m = 3 pushing and n = 4 resisting balls for
 the quasi-static equilibrium), pocket clearance c_p = ratio × 0.24 mm for ratio 0.6 … 1.6, at 1800
 and 20000 r/min. For each: the simulated orbit (`simulate_cage`, from ε = 0.8 at 240°, over
@@ -98,7 +98,7 @@ def main():
     cage_dynamics.SOLVER = diffrax.Tsit5()
 
     lines = [
-        "# Cage whirl against pocket / guide clearance (seed 000, B7005-class)",
+        "# Cage whirl against pocket / guide clearance (the cage paper, B7005-class)",
         "",
         "Command: `python benchmarks/cage_whirl_ratio.py` "
         f"(--revolutions {options.revolutions:g}, --repeats {options.repeats}). "

@@ -1,7 +1,7 @@
-"""The classical way (seed 004's method): a dense influence matrix and an active set, NumPy.
+"""The classical way (the crowning paper's method): a dense influence matrix and an active set, NumPy.
 
-Seed 004 builds the flexibility matrix of every cell pair from Love's rectangle formula, solves
-the linear system for the pressures and the approach with the load equation, removes the cells
+The crowning paper builds the flexibility matrix of every cell pair from Love's rectangle formula,
+solves the linear system for the pressures and the approach with the load equation, removes the cells
 whose pressure came out negative, and solves again until no pressure is negative (cells that
 then penetrate are put back). This is that method, written the usual way: `numpy.linalg.solve`
 (LAPACK LU) on the bordered system

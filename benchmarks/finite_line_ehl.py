@@ -1,10 +1,10 @@
-"""Seed 003's finite line contact (2-D, half domain, dense Newton), flooded and starved: films,
-accuracy against time of every fidelity level, and the paper's numbers.
+"""The starved-EHL paper's finite line contact (2-D, half domain, dense Newton), flooded and
+starved: films, accuracy against time of every fidelity level, and the paper's numbers.
 
     python benchmarks/finite_line_ehl.py
 
 Roller with a 12.7 mm flat and 10 mm crown radius, 14.7 mm long, on the outer raceway at
-1000 r/min (physics.md §4). Writes benchmarks/results/finite_line_ehl.{md,png}:
+1000 r/min (docs/papers.md, §The starved-EHL paper). Writes benchmarks/results/finite_line_ehl.{md,png}:
 
 1. accuracy against time at 1028 N, flooded and starved by h_oil = 0.8 µm: the formulas, the 1-D
    line contact (129 and 513 nodes) and the 2-D solver on 25, 33 and 41 × 48, each against the
@@ -48,7 +48,8 @@ GRIDS = ((25, 48), (33, 48), (41, 48))
 REFERENCE_GRID = (65, 65)  # the public scene's [65, 129]
 # (grid, loads [N], oil layers [m]): on 65 × 65, 2471 N and the Er pair are left out of this run:
 # 2471 N spent over 10 minutes in the continuation's first stage (1606 N) without converging
-# (README), and the Er pair's oil-layer continuation would take about 10 minutes there
+# (docs/validation/lubricant_film.md, §The paper's starved minimum films), and the Er pair's
+# oil-layer continuation would take about 10 minutes there
 PAPER_CASES = (((33, 48), (1028.0, 1607.0, 2471.0), (1.8e-6, 2.0e-6)),
                (REFERENCE_GRID, (1028.0, 1607.0), ()))
 CONTINUATION_STEP = 0.02e-6  # the oil-layer continuation's step [m] (the Er pair)
@@ -121,7 +122,7 @@ def plot(flooded, starved, path):
                  title=f"{title}: ○ central film, □ minimum film")
         axis.grid(alpha=0.3, which="both")
     axes[1].legend(fontsize=7)
-    figure.suptitle("Seed 003 roller contact at 1028 N: what accuracy costs in time")
+    figure.suptitle("The starved-EHL paper's roller contact at 1028 N: what accuracy costs in time")
     figure.savefig(path, dpi=120)
     plt.close(figure)
 
@@ -180,7 +181,7 @@ def starvation_criterion(grid, layers):
 
 def main():
     flooded, starved = level_rows(None), level_rows(OIL_LAYER)
-    lines = ["# Seed 003 finite line contact (2-D, dense Newton): accuracy against time", "",
+    lines = ["# The starved-EHL paper's finite line contact (2-D, dense Newton): accuracy against time", "",
              "`python benchmarks/finite_line_ehl.py`: 1028 N, 1000 r/min, errors against the 2-D solution on 65 × 65 "
              "(the half domain of the public scene's grid [65, 129], the finest the dense Newton takes). 2-D grids are "
              "named by the half domain solved. Formulas and 1-D: median of 5 runs; 2-D: one run. Formulas and 1-D at "

@@ -1,4 +1,4 @@
-"""Seed 003's roller-end minimum film against the 2-D grid: how far it is from converged.
+"""The starved-EHL paper's roller-end minimum film against the 2-D grid: how far it is from converged.
 
     python benchmarks/finite_line_grid.py
 
@@ -125,7 +125,7 @@ def paper_line(direction, load, solved, halving=True):
 
 def main():
     results = solve_all()
-    lines = ["# Seed 003: the roller-end minimum film against the 2-D grid", "",
+    lines = ["# The starved-EHL paper: the roller-end minimum film against the 2-D grid", "",
              "1000 r/min; grids nx × ny of the half domain (nodes along rolling × cells along the half",
              "roller); `python benchmarks/finite_line_grid.py`, one run of each solve.", ""]
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
@@ -172,7 +172,7 @@ def main():
         axis.set(xlabel=label, ylabel="roller-end minimum film [µm]")
         axis.grid(alpha=0.3, which="both")
     axes[0].legend(fontsize=7)
-    figure.suptitle("Seed 003: the minimum film against the grid (dotted: Richardson; black: the paper, starved)")
+    figure.suptitle("The starved-EHL paper: the minimum film against the grid (dotted: Richardson; black: the paper, starved)")
     RESULTS.mkdir(exist_ok=True)
     figure.savefig(RESULTS / "finite_line_grid.png", dpi=120)
     (RESULTS / "finite_line_grid.md").write_text("\n".join(lines) + "\n")

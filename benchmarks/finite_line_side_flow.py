@@ -1,4 +1,4 @@
-"""Seed 003 starved: what the side flow at the meniscus does to the roller-end minimum film.
+"""The starved-EHL paper, starved: what the side flow at the meniscus does to the roller-end minimum film.
 
     python benchmarks/finite_line_side_flow.py
 
@@ -114,7 +114,7 @@ def table(load, rows):
 
 def main():
     RESULTS.mkdir(exist_ok=True)
-    lines = ["# Seed 003 starved (0.8 µm): side flow in the meniscus balance", "",
+    lines = ["# The starved-EHL paper, starved (0.8 µm): side flow in the meniscus balance", "",
              f"`python benchmarks/finite_line_side_flow.py`; grid {GRID[0]} × {GRID[1]} on the half domain, cells "
              f"clustered at the flat's end (β = {CLUSTERING:g}). γ = `side_inflow`, the fraction of the side inflow "
              "counted in each column's meniscus balance (1: mass conserving). Continuation in γ from the column "

@@ -1,10 +1,10 @@
-"""Seed 003 starved: the oil supply that the paper's starvation criterion implies, and the
-roller-end minimum films at that supply.
+"""The starved-EHL paper, starved: the oil supply that the paper's starvation criterion implies,
+and the roller-end minimum films at that supply.
 
     python benchmarks/finite_line_supply.py
 
-The paper (physics.md §4) reports at 1028 N a flooded central film of 1.207 µm, Er < 1 % at
-h_oil = 2.0 µm and Er > 1 % at 1.8 µm. By mass conservation a contact starves only once the supply
+The paper (docs/papers.md, §The starved-EHL paper) reports at 1028 N a flooded central film of
+1.207 µm, Er < 1 % at h_oil = 2.0 µm and Er > 1 % at 1.8 µm. By mass conservation a contact starves only once the supply
 falls below the flux its flooded film carries, ρ̄h_c at the pressure plateau: about 1.39 µm from
 the paper's own film and the Dowson–Higginson density at p_h. So a mass-conserving solver gives
 Er > 1 % at 1.8 µm only if the supply it applied was smaller than the layer stated.
@@ -64,7 +64,7 @@ RESOLVED = {(1028.0, (33, 48)): "rising with the cells: 0.338 / 0.345 / 0.354 µ
             (1028.0, (33, 64)): "the finest converged along the roller at 1028 N"}
 LAYER_STEP = 0.02e-6  # [m]
 SMALLEST_STEP = 0.0025e-6  # [m]
-TOLERANCE = 0.15  # the issue's tolerance on the paper's minimum films
+TOLERANCE = 0.15  # the tolerance held against the paper's minimum films
 
 
 def line_central(oil_layer=None):
@@ -152,7 +152,7 @@ def main():
         minimum = float(film.minimum)
         return f"{minimum * 1e6:.4f} µm ({100 * (minimum / PAPER_MINIMUM[load] - 1):+.1f} %)"
 
-    lines = ["# Seed 003 starved: the supply the paper's criterion implies", "",
+    lines = ["# The starved-EHL paper, starved: the supply the paper's criterion implies", "",
              "`python benchmarks/finite_line_supply.py`", "",
              "## 1. The starvation criterion (1-D line contact, 1028 N)", "",
              f"- Flooded central film: {flooded * 1e6:.4f} µm ({LINE_NODES} nodes; paper's 2-D: "
@@ -193,7 +193,7 @@ def main():
         axis.axhline(paper, color=color, ls=":")
     axis.axvspan(k_low, k_high, color="0.5", alpha=0.2, label="supply window of the paper's Er criterion")
     axis.set(xlabel=f"supply k = h_oil / {OIL_LAYER * 1e6:.1f} µm", ylabel="roller-end minimum film [µm]",
-             title="Seed 003 starved, clustered cells: paper's minima (dotted) ±15 %")
+             title="The starved-EHL paper, starved, clustered cells: paper's minima (dotted) ±15 %")
     axis.legend(fontsize=8)
     figure.tight_layout()
     figure.savefig(RESULTS / "finite_line_supply.png", dpi=120)

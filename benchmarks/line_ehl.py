@@ -1,4 +1,4 @@
-"""Seed 003's contact as a line contact: what each film fidelity costs and how close it comes.
+"""The starved-EHL paper's contact as a line contact: what each film fidelity costs and how close it comes.
 
     python benchmarks/line_ehl.py
 
@@ -7,8 +7,8 @@
    Dowson–Higginson) at 129 … 1025 nodes, error of central and minimum film against the
    2049-node solution, wall time (median of 5 runs after compilation) and compile time.
    The 2-D finite line level does not exist yet, so the reference is the finest 1-D grid.
-2. The inlet: the flooded film against where the domain starts (seed 003's −4.5 b and longer).
-3. Starvation onset: Er = (h_c,ff − h_c)/h_c,ff against the oil layer (seed 003's criterion), and
+2. The inlet: the flooded film against where the domain starts (the paper's −4.5 b and longer).
+3. Starvation onset: Er = (h_c,ff − h_c)/h_c,ff against the oil layer (the paper's criterion), and
    the starved films at 1028 / 1607 / 2471 N beside the paper's 2-D minimum films.
 4. A heavy-load case (10× the load at 1/100 the speed, Moes M ≈ 209) on 257 … 1025 nodes
    against Pan–Hamrock, to show the grid such a load needs.
@@ -125,14 +125,14 @@ def plot_accuracy(tables):
     axes[0].plot([], [], "o", color="k", label="central film")
     axes[0].plot([], [], "s", color="k", mfc="none", label="minimum film")
     axes[0].legend()
-    figure.suptitle("Seed 003 contact as a line contact: accuracy against time (blue: 1-D EHL, orange: formulas)")
+    figure.suptitle("The starved-EHL paper's contact as a line contact: accuracy against time (blue: 1-D EHL, orange: formulas)")
     figure.savefig(RESULTS / "line_ehl.png", dpi=120)
 
 
 def main():
     flooded = formula_rows(None) + line_rows(None)
     starved = formula_rows(OIL_LAYER) + line_rows(OIL_LAYER)
-    lines = ["# Seed 003's contact as a line contact: film fidelity against time", "",
+    lines = ["# The starved-EHL paper's contact as a line contact: film fidelity against time", "",
              f"W = 1028 N on {FLAT_LENGTH * 1e3:.1f} mm, u = {SPEED:.3f} m/s, R = {RADIUS * 1e3:.2f} mm, η0 = 0.08 Pa·s, "
              "α = 2.2e-8 1/Pa, E' = 2.26e11 Pa (Moes M = "
              f"{float(moes_load_parameter(LOAD, RADIUS, SPEED, 0.08, 2.26e11)):.2f}). Paper (2-D numerical): flooded "
@@ -169,7 +169,7 @@ def main():
     lines += ["", "By mass conservation in steady pure rolling the contact passes exactly the supplied layer: a "
               "line contact starves only once h_oil falls below what the flooded contact passes, "
               f"ρ̄h_c ≈ {density * flooded_central * 1e6:.2f} µm here. The paper's onset between 1.8 and 2.0 µm "
-              "is not reproduced (see the README).", "",
+              "is not reproduced (see docs/validation/lubricant_film.md, §The 1-D line contact).", "",
               "### Load at h_oil = 0.8 µm (513 nodes) beside the paper's 2-D minimum film at the roller ends", "",
               "| load | 1-D central film | 1-D minimum film | paper 2-D minimum (roller ends) |", "|---|---|---|---|"]
     for load, paper in ((1028.0, 0.319e-6), (1607.0, 0.215e-6), (2471.0, 0.159e-6)):

@@ -1,5 +1,5 @@
 """Roller contact: accuracy against time for every fidelity level, and the speed ratio against the
-dense active-set method of seed 004.
+dense active-set method of the crowning paper.
 
     python benchmarks/roller_contact.py            # everything (the 64×512 dense solve takes minutes)
     python benchmarks/roller_contact.py --quick    # skip the 64×512 dense solve
@@ -7,9 +7,9 @@ dense active-set method of seed 004.
 1. A fully crowned roller (flat length 0, Rc = 100 mm, D = 10 mm, l = 12 mm, flat raceway, 1 kN,
    E = 207 GPa, ν = 0.29) is an exact Hertz point contact: error of peak pressure and approach
    against Hertz, per grid, and for the Hertz-slice level.
-2. Seed 004's tapered roller with the Johns–Gohar profile (no closed form): error against the
+2. The crowning paper's tapered roller with the Johns–Gohar profile (no closed form): error against the
    finest grid (256 × 2048).
-3. Seed 004's method — a dense influence matrix with an active set, NumPy/LAPACK
+3. The crowning paper's method — a dense influence matrix with an active set, NumPy/LAPACK
    (`dense_roller_contact.py`) — against the DC-FFT Polonsky–Keer solver at 32 × 256 and 64 × 512
    on the same grid: wall times, ratio, and the largest pressure difference.
 
@@ -67,7 +67,7 @@ def crowned_roller():
     return bearing, loading, float(exact.max_pressure), float(exact.approach)
 
 
-def seed004_roller():
+def crowning_paper_roller():
     length = 12e-3
     bearing = roller_bearing(kind="tapered_roller", length=length, small_diameter=7e-3, large_diameter=8e-3,
                              cone_half_angle=np.radians(2.4), material=GCR15,
@@ -94,7 +94,7 @@ def accuracy_table(bearing, loading, reference_pressure, reference_approach, gri
 def dense_comparison(grids, first_round_only):
     """Rows per grid; for grids in `first_round_only` only the first dense solve is timed (a
     lower bound on the dense method's time: it needs several such solves)."""
-    bearing, loading = seed004_roller()
+    bearing, loading = crowning_paper_roller()
     rows = []
     for grid in grids:
         partial = grid in first_round_only
@@ -136,7 +136,7 @@ def main():
 
     bearing, loading, p0, delta = crowned_roller()
     hertz_rows = accuracy_table(bearing, loading, p0, delta, GRIDS)
-    bearing, loading = seed004_roller()
+    bearing, loading = crowning_paper_roller()
     finest = jax.jit(lambda b, l: roller_contact(b, l, FINEST))(bearing, loading)
     seed_rows = accuracy_table(bearing, loading, float(finest.max_pressure), float(finest.approach), GRIDS)
     dense_rows = dense_comparison([(32, 256)] + ([] if arguments.quick else [(64, 512)]),
@@ -150,10 +150,10 @@ def main():
         f"D = 10 mm, l = 12 mm, flat length 0, Rc = 100 mm, flat raceway, Q = 1 kN: Hertz p0 = {p0 / 1e9:.4f} GPa, "
         f"δ = {delta * 1e6:.4f} µm.", hertz_rows)
     lines += accuracy_lines(
-        "Seed 004 tapered roller, Johns–Gohar profile, against the finest grid",
+        "The crowning paper's tapered roller, Johns–Gohar profile, against the finest grid",
         f"Finest grid {FINEST[0]}×{FINEST[1]}: p_max = {float(finest.max_pressure) / 1e9:.4f} GPa, "
         f"δ = {float(finest.approach) * 1e6:.4f} µm.", seed_rows)
-    lines += ["", "## Against seed 004's method: dense influence matrix with an active set (NumPy/LAPACK)", "",
+    lines += ["", "## Against the crowning paper's method: dense influence matrix with an active set (NumPy/LAPACK)", "",
               "| grid | DC-FFT + preconditioned PK (JAX) | compile | dense active set (NumPy) | dense solves | ratio |"
               " max pressure difference / p_max | approach difference |",
               "|---|---|---|---|---|---|---|---|"]
@@ -175,7 +175,7 @@ def main():
 
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.5), layout="constrained")
     for axis, rows, title in ((axes[0], hertz_rows, "fully crowned roller vs exact Hertz"),
-                              (axes[1], seed_rows, "seed 004 Johns–Gohar vs 256×2048")):
+                              (axes[1], seed_rows, "crowning paper, Johns–Gohar vs 256×2048")):
         numeric = [r for r in rows if r[0].startswith("influence")]
         times = [r[1] * 1e3 for r in numeric]
         axis.loglog(times, [max(r[3], 1e-7) for r in numeric], "o-", label="influence: peak pressure")

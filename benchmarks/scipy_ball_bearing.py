@@ -4,8 +4,8 @@ Same physics as diffbearing.ball_equilibrium (Jones–Harris, exact Hertz consta
 angle, outer-raceway control, centrifugal force and gyroscopic moment), solved the usual way:
 `scipy.optimize.root` (MINPACK hybr): first the static problem on the 5 ring unknowns (balls on
 the line of groove centres) from a plain guess, then all 5 + 2Z unknowns from there (a cold start on
-the full system fails, physics.md §7); the stiffness by central finite differences of the ring force
-with the balls re-solved (`root` on the 2Z ball unknowns) at ±h.
+the full system fails, docs/theory.md, §Numerical notes); the stiffness by central finite
+differences of the ring force with the balls re-solved (`root` on the 2Z ball unknowns) at ±h.
 Vectorized over balls with NumPy; κ by vectorized Newton with scipy.special.ellipk/ellipe.
 """
 

@@ -8,9 +8,10 @@ raceways. Such a state is reported as not converged, with its reason, rather tha
   (Johnson, *Contact Mechanics*, 1985, §4.1: a ≪ R); the load–approach law Q = K δ^{3/2} and the
   rigid-ring geometry assume deflections small against the ball. The limit is an elastic approach
   of `MAX_APPROACH_FRACTION` D_w at either contact. For the ball bearings of the tests and
-  benchmarks (seed 001's, a 6411, a 218 and a 7-ball 11.5 mm deep-groove bearing) that is a peak
-  pressure of 5.7–7.0 GPa, well past the 4.2 GPa of ISO 76 where steel starts to yield, with a
-  contact semi-major axis of 0.35–0.50 D_w (`hertz.point_contact` at α₀).
+  benchmarks (the aero-engine bearing of the stiffness paper, a 6411, a 218 and a 7-ball 11.5 mm
+  deep-groove bearing) that is a peak pressure of 5.7–7.0 GPa, well past the 4.2 GPa of ISO 76
+  where steel starts to yield, with a contact semi-major axis of 0.35–0.50 D_w
+  (`hertz.point_contact` at α₀).
 * **Contact angle.** A contact angle outside (−90°, 90°) puts the contact on the far side of the
   groove's curvature centre: the ball has been pushed through the raceway.
 

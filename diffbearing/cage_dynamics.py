@@ -1,8 +1,9 @@
 """Cage dynamics: the cage centre's planar whirl and its spin, integrated in time.
 
-Seed 000 (physics.md §6; Liu et al. 2020, §4, the experiment on pocket / guide clearance). The
-quasi-static model (`cage_forces`) prescribes which balls push and which resist; here the roles
-follow from the motion:
+The cage paper (docs/theory.md, §Cage dynamics and stability; docs/papers.md, §The cage paper;
+Liu et al. 2020, §4, the experiment on pocket / guide clearance). The quasi-static model
+(`cage_forces`) prescribes which balls push and which resist; here the roles follow from the
+motion:
 
 * balls inside the Sjövall load zone (`load_zone_half`) are held by the raceways at the epicyclic
   orbital speed ω_m: their orbital lag λ_j relaxes to ω_m within `traction_time` τ_t (the raceway
@@ -21,9 +22,9 @@ follow from the motion:
 
 Integrator: diffrax's Tsit5 with a PID step controller on the scaled state (`state_scale`). The
 steps shrink through each pocket impact (tens of microseconds) and the squeeze film near a land,
-and open up in free flight. `python benchmarks/cage_whirl_ratio.py`: over 5 ms of the seed 000
-cage at 20000 r/min, Tsit5 takes 0.11 s and Kvaerno5 (an implicit ESDIRK) 20.7 s, with whirl radii
-equal to 5 × 10⁻⁶ relative — the stiffness is oscillatory (contacts), which an
+and open up in free flight. `python benchmarks/cage_whirl_ratio.py`: over 5 ms of the cage
+paper's cage at 20000 r/min, Tsit5 takes 0.11 s and Kvaerno5 (an implicit ESDIRK) 20.7 s, with
+whirl radii equal to 5 × 10⁻⁶ relative — the stiffness is oscillatory (contacts), which an
 implicit scheme must resolve too. A scan of fixed steps would be held to the shortest impact
 throughout. Reverse-mode derivatives come from diffrax's checkpointed adjoint, but over many
 revolutions the orbit is an impact oscillator whose measures are not differentiable in any useful

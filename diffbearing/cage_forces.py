@@ -1,9 +1,9 @@
 """Quasi-static forces on an outer-ring guided ball-bearing cage, and its restoring force f_inv.
 
-Seed 000 (physics.md §6; Liu et al., J. Vib. Shock 39(21), 2020, §2). Inertial frame: z the
-bearing axis, x and y radial; ball j sits at azimuth ψ_j = φ_F + 2πj/Z on the pitch circle, with
-φ_F the direction of the radial load; the cage centre is offset by (x, y) and tilted by
-(θx, θy) (small angles). Assumptions of the paper:
+The cage paper (docs/theory.md, §Cage forces; Liu et al., J. Vib. Shock 39(21), 2020, §2).
+Inertial frame: z the bearing axis, x and y radial; ball j sits at azimuth ψ_j = φ_F + 2πj/Z on
+the pitch circle, with φ_F the direction of the radial load; the cage centre is offset by (x, y)
+and tilted by (θx, θy) (small angles). Assumptions of the paper:
 
 1. steady rotation: the cage turns at the epicyclic speed ω_c = ω_o + (ω_i − ω_o)(1 − γ)/2,
    γ = D_w cos α/d_m, its spin in moment balance on the pitch circle (item 3; the radial parts of

@@ -1,7 +1,7 @@
 """The cage's guiding lands on the outer ring as short journal bearings, bounded by metal contact.
 
-Each land (seed 000, physics.md §6; Liu et al. 2020, eqs. 25–28) is a short journal bearing of
-width L, radial clearance C and radius R (the cage's outer radius), entrained at
+Each land (the cage paper, docs/theory.md, §Cage lands; Liu et al. 2020, eqs. 25–28) is a short
+journal bearing of width L, radial clearance C and radius R (the cage's outer radius), entrained at
 U = R(ω_c + ω_o). With ε = e/C the cage's relative eccentricity at the land, the Ocvirk
 (half-Sommerfeld) film force on the cage (Hamrock, Schmid & Jacobson, *Fundamentals of Fluid
 Film Lubrication*, 2nd ed., ch. 10) is

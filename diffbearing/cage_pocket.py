@@ -1,8 +1,9 @@
 """Ball–pocket contact of a ball-bearing cage: cylindrical and "outer-lock" pockets.
 
-Seed 000 (physics.md §6; Liu et al., J. Vib. Shock 39(21), 2020, eqs. 1–7). Pocket frame: origin at
-the pocket's centre on the pitch circle, x radially outward, z along the bearing axis, y = z × x
-(the direction of positive rotation). r_b = (x_b, y_b, z_b) is the ball centre in that frame.
+The cage paper (docs/theory.md, §Cage pockets; Liu et al., J. Vib. Shock 39(21), 2020, eqs. 1–7).
+Pocket frame: origin at the pocket's centre on the pitch circle, x radially outward, z along the
+bearing axis, y = z × x (the direction of positive rotation). r_b = (x_b, y_b, z_b) is the ball
+centre in that frame.
 
 * cylindrical pocket: a cylinder of radius R_pok = (D_w + c_p)/2 about the pocket's x axis;
 * outer-lock pocket: for x_b > 0 a sphere of radius R_pok about the origin (its outer mouth is

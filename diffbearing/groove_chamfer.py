@@ -1,7 +1,8 @@
 """Groove–shoulder transition chamfer: the contact-ellipse limit point M and the chamfer height H.
 
-Seed 002 (physics.md §3): under the worst case — the largest ball load Q_max (the ellipse's
-semi-major axis a) at the contact angle α′ the axial load produces — the loaded ellipse reaches
+The 6411E chamfer paper (docs/papers.md, §The 6411E chamfer paper; docs/theory.md, §Groove
+chamfer): under the worst case — the largest ball load Q_max (the ellipse's semi-major axis a)
+at the contact angle α′ the axial load produces — the loaded ellipse reaches
 along the groove to the limit point M, at the angle θ_M = α′ + a/r from the groove bottom (a laid
 along the groove arc of radius r = f D_w, as the paper does). In the ring's own cross-section, M
 lies r(1 − cos θ_M) above the groove bottom; a chamfer that starts at the shoulder must stop above

@@ -1,7 +1,7 @@
 """Hertz contact: elliptical point contact (exact and approximate) and line contact.
 
-Notation (physics.md §1; Hamrock, Schmid & Jacobson, *Fundamentals of Machine Elements*, ch. 8;
-Harris & Kotzalas, *Rolling Bearing Analysis* 5th ed., vol. 1, ch. 6):
+Notation (docs/theory.md, §Hertz point contact; Hamrock, Schmid & Jacobson, *Fundamentals of
+Machine Elements*, ch. 8; Harris & Kotzalas, *Rolling Bearing Analysis* 5th ed., vol. 1, ch. 6):
 
 * curvature sum Σρ [1/m] and curvature difference F(ρ) ∈ [0, 1) [-]; effective radius R = 1/Σρ;
   the principal radius ratio is R_y/R_x = (1 + F)/(1 − F).

@@ -1,7 +1,7 @@
 """Ball kinematics under raceway control, centrifugal force and gyroscopic moment.
 
-physics.md §2 (seed 001; Harris & Kotzalas vol. 2, ch. 2–3, Jones' raceway control), with
-r = D_w / d_m and ω the speed of the inner ring relative to the outer ring:
+docs/theory.md, §Ball kinematics (the stiffness paper; Harris & Kotzalas vol. 2, ch. 2–3, Jones'
+raceway control), with r = D_w / d_m and ω the speed of the inner ring relative to the outer ring:
 
     outer-raceway control: tan β = sin α_o / (cos α_o + r)
     inner-raceway control: tan β = sin α_i / (cos α_i − r)

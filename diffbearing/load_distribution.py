@@ -1,7 +1,7 @@
 """Closed-form load distribution of a ball bearing: Sjövall integrals and Stribeck's estimate.
 
 Rigid rings, one contact angle α for every ball, Hertz Q ∝ δ^{3/2} (Harris & Kotzalas vol. 1, §7.2;
-physics.md §6, seed 000):
+docs/theory.md, §Load distribution; the cage paper):
 
     Q(ψ) = Q_max [1 − (1 − cos ψ)/(2ε)]^{3/2} on the loaded arc |ψ| ≤ ψ_l = arccos(1 − 2ε) (ε ≤ 1),
     J_r(ε) = (1/2π) ∫ [·]^{3/2} cos ψ dψ,   J_a(ε) = (1/2π) ∫ [·]^{3/2} dψ,
@@ -76,5 +76,5 @@ def max_ball_load(radial_load, ball_count, contact_angle, load_zone_parameter_va
 
 
 def stribeck_max_ball_load(radial_load, ball_count, contact_angle=0.0):
-    """Stribeck's Q_max ≈ 5 F_r / (Z cos α) [N] (seed 002 uses it with F_r = C_r)."""
+    """Stribeck's Q_max ≈ 5 F_r / (Z cos α) [N] (the 6411E chamfer paper uses it with F_r = C_r)."""
     return 5.0 * radial_load / (ball_count * jnp.cos(contact_angle))

@@ -1,6 +1,7 @@
 """Numerical guards shared by every physics block.
 
-* `require_float64` — the library computes in float64 only (DESIGN.md, "Conventions").
+* `require_float64` — the library computes in float64 only (docs/conventions.md, §Units and
+  precision).
 * NaN-safe branches (the double-`where` trick of jax-md's `safe_mask`): the value is exact and
   the gradient finite where a contact opens (`max(δ, 0)^1.5`) or a load vanishes (`Q^(1/3)`).
 """

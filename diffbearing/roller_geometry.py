@@ -6,8 +6,9 @@ Frame of the contact (used by every roller block and output):
 * x is the rolling direction, y runs along the roller axis from the middle of the effective
   length l (−l/2 ≤ y ≤ l/2); for a tapered roller y = −l/2 is the small end.
 * The roller diameter grows linearly from d (small end) to D (large end):
-  D_k = (1 − L_k/l) d + (L_k/l) D with L_k = y + l/2 (seed 004 eq. 6); the rolling radius is
-  R_k = 0.5 D_k / cos θ, θ the cone half angle (seed 004 eq. 5; θ = 0 for cylindrical rollers).
+  D_k = (1 − L_k/l) d + (L_k/l) D with L_k = y + l/2 (the crowning paper, eq. 6); the rolling
+  radius is R_k = 0.5 D_k / cos θ, θ the cone half angle (the crowning paper, eq. 5; θ = 0 for
+  cylindrical rollers).
 * The raceway curvature in the rolling direction is signed: convex (inner ring) positive,
   concave (outer ring) negative, 0 for a flat. For a tapered roller it scales with the roller
   diameter (roller and cone share an apex), so the raceway radius is given at mid-length.
@@ -95,7 +96,7 @@ def roller_modulus(bearing: RollerBearing):
 
 
 def roller_diameter(bearing: RollerBearing, y):
-    """Roller diameter D_k [m] at axial positions y [m] (seed 004 eq. 6)."""
+    """Roller diameter D_k [m] at axial positions y [m] (the crowning paper, eq. 6)."""
     fraction = y / bearing.length + 0.5
     return (1.0 - fraction) * bearing.small_diameter + fraction * bearing.large_diameter
 

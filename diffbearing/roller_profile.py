@@ -7,7 +7,7 @@ Logarithmic profiles follow the elastic deflection of a uniform line load of fin
 
 * straight: z = 0 (edge stress peaks, Johnson §5.5).
 * circular: flat middle of length Lz, then an arc of radius Rc: z = Rc − √(Rc² − (|y| − Lz/2)²)
-  beyond |y| = Lz/2; Lz = 0 gives a fully crowned roller (seed 004 eq. 11).
+  beyond |y| = Lz/2; Lz = 0 gives a fully crowned roller (the crowning paper, eq. 11).
 * lundberg: z = 2Q/(πlE') ln[1 / (1 − (2y/l)²)] (Lundberg 1939); infinite at the ends, so it is
   only evaluated at cell centres.
 * johns_gohar: z = 2Q/(πlE') ln[1 / (1 − (1 − 0.3033 b/a)(y/a)²)], a = l/2, b the Hertz line

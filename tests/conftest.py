@@ -1,4 +1,5 @@
-"""Test set-up: float64 for every test (DESIGN.md) and a compilation cache shared by the run's processes."""
+"""Test set-up: float64 for every test (docs/conventions.md, §Units and precision) and a compilation
+cache shared by the run's processes."""
 
 import os
 import tempfile

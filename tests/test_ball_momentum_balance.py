@@ -30,8 +30,9 @@ RPM = np.pi / 30
 TOLERANCE = 1e-9
 
 
-def seed001_bearing():
-    """The built-in aero-engine bearing: 28 balls of 28 mm on d_m = 252 mm, α₀ = 25°."""
+def aero_bearing():
+    """The built-in aero-engine bearing of the stiffness paper: 28 balls of 28 mm on d_m = 252 mm,
+    α₀ = 25°."""
     return build_model(load_scene()).inputs["bearing"]
 
 
@@ -44,7 +45,7 @@ def bearing_218():
 
 CASES = {
     # name: (bearing, inner speed [r/min], force [N], moment [N·m])
-    "seed 001, combined load and moment, 12000 r/min": (seed001_bearing, 12000.0, [15e3, 18e3, 35e3], [100.0, 300.0]),
+    "aero-engine bearing, combined load and moment, 12000 r/min": (aero_bearing, 12000.0, [15e3, 18e3, 35e3], [100.0, 300.0]),
     "218, 40°, pure thrust, 10000 r/min": (bearing_218, 10000.0, [0.0, 0.0, 17.8e3], [0.0, 0.0]),
     "218, 40°, pure thrust, 20000 r/min": (bearing_218, 20000.0, [0.0, 0.0, 17.8e3], [0.0, 0.0]),
 }

@@ -1,4 +1,4 @@
-"""Cage forces under combined guidance (issue 6, seed 000): land bearings, pocket contact, the
+"""Cage forces under combined guidance (the cage paper): land bearings, pocket contact, the
 restoring force f_inv and the paper's trends through the CLI."""
 
 import json
@@ -25,8 +25,8 @@ OIL = Lubricant(0.01, 2e-8, 870.0)
 GUIDE_RADIAL_CLEARANCE = 0.12e-3
 
 
-def seed000_forces(pocket="outer_lock", rpm=20000.0, pocket_clearance=0.26e-3, pushing=3, resisting=4):
-    """(x, y) [m] → CageForces of the seed 000 bearing."""
+def cage_paper_forces(pocket="outer_lock", rpm=20000.0, pocket_clearance=0.26e-3, pushing=3, resisting=4):
+    """(x, y) [m] → CageForces of the cage paper's bearing."""
     cage = ball_cage(B7005, pocket=pocket, pocket_clearance=pocket_clearance, guide_clearance=0.24e-3,
                      land_width=2e-3, pushing_balls=pushing, resisting_balls=resisting)
     operating = Operating(rpm * np.pi / 30.0, 0.0, [1120.0, 0.0, 400.0], [0.0, 0.0])
@@ -64,8 +64,8 @@ def test_land_force_is_the_integral_of_the_short_bearing_pressure():
 
 @pytest.fixture(scope="module")
 def restoring_and_jacobian():
-    """(x, y) [m] → (f_inv [N], ∂F_xy/∂(x, y) [N/m]) of the seed 000 outer-lock cage, compiled once."""
-    forces = seed000_forces()
+    """(x, y) [m] → (f_inv [N], ∂F_xy/∂(x, y) [N/m]) of the cage paper's outer-lock cage, compiled once."""
+    forces = cage_paper_forces()
 
     def planar(offset):
         return forces(offset).force[:2]
@@ -116,7 +116,7 @@ def test_cage_at_rest_feels_no_force_and_has_finite_gradients():
     """At zero speed there is no drag, no film and no push: every force is exactly zero, and the
     derivative with respect to speed is finite."""
     def restoring(rpm):
-        return seed000_forces(rpm=rpm)(offset_at(0.8, 240.0)).restoring_force
+        return cage_paper_forces(rpm=rpm)(offset_at(0.8, 240.0)).restoring_force
 
     assert float(restoring(0.0)) == 0.0
     assert np.isfinite(float(jax.grad(restoring)(0.0)))
@@ -124,9 +124,9 @@ def test_cage_at_rest_feels_no_force_and_has_finite_gradients():
 
 def test_restoring_force_derivatives_match_central_differences():
     """f_inv and the resultant (F_x, F_y) against offset (x, y) [µm], diametral pocket clearance
-    [µm] and inner-ring speed [krpm], forward and reverse, at the seed 000 point (ε = 0.8, 240°)."""
+    [µm] and inner-ring speed [krpm], forward and reverse, at the cage paper's point (ε = 0.8, 240°)."""
     def forces(p):
-        solved = seed000_forces(rpm=p[3] * 1e3, pocket_clearance=p[2] * 1e-6)(p[:2] * 1e-6)
+        solved = cage_paper_forces(rpm=p[3] * 1e3, pocket_clearance=p[2] * 1e-6)(p[:2] * 1e-6)
         return jnp.concatenate([solved.restoring_force[None], solved.force[:2]])
 
     point = jnp.concatenate([offset_at(0.8, 240.0) * 1e6, jnp.array([260.0, 20.0])])
@@ -136,8 +136,8 @@ def test_restoring_force_derivatives_match_central_differences():
 
 
 @pytest.fixture(scope="module")
-def seed000_cli(tmp_path_factory):
-    """f_inv [N] of the public seed 000 scene through `diffbearing run --json` with --set overrides
+def cage_paper_cli(tmp_path_factory):
+    """f_inv [N] of the packaged cage_b7005 scene through `diffbearing run --json` with --set overrides
     (the outer-lock and cylindrical models compile once each; later runs reuse them)."""
     scene = example_scene("cage_b7005")
     path = tmp_path_factory.mktemp("cage") / "out.json"
@@ -154,34 +154,35 @@ def seed000_cli(tmp_path_factory):
 
 # Fig. 8 of the paper: the cage offset by half the guide clearance (ε = 0.5). Its offset angle,
 # 150°, is given without a sense of measure; here the trends are tested at the scene's 240°
-# (README, "Cage": at 150° measured with the rotation this model's f_inv is negative).
+# (docs/validation/cage.md, §The paper's findings: at 150° measured with the rotation this model's
+# f_inv is negative).
 FIG8 = "cage.eccentricity=0.5"
 
 
-def test_seed000_restoring_force_grows_with_speed_and_resisting_balls(seed000_cli, capsys):
+def test_cage_paper_restoring_force_grows_with_speed_and_resisting_balls(cage_paper_cli, capsys):
     """Liu et al. 2020, Fig. 8 and conclusion 1 (ε = 0.5 at 240°, m = 3, n = 4): f_inv grows with
     speed (drag ∝ v², film ∝ ω) and with the number n of balls the cage drives."""
-    speeds = [seed000_cli(FIG8, f'operating.inner_speed="{rpm} rpm"') for rpm in (5000, 20000, 40000, 60000)]
-    resisting = [seed000_cli(FIG8, f"cage.resisting_balls={n}") for n in (1, 2, 3, 4, 5, 6)]
+    speeds = [cage_paper_cli(FIG8, f'operating.inner_speed="{rpm} rpm"') for rpm in (5000, 20000, 40000, 60000)]
+    resisting = [cage_paper_cli(FIG8, f"cage.resisting_balls={n}") for n in (1, 2, 3, 4, 5, 6)]
     capsys.readouterr()
     assert np.all(np.diff(speeds) > 0) and np.all(np.diff(resisting) > 0)
 
 
-def test_seed000_restoring_force_falls_with_pushing_balls(seed000_cli, capsys):
+def test_cage_paper_restoring_force_falls_with_pushing_balls(cage_paper_cli, capsys):
     """Fig. 8, conclusion 1 (ε = 0.5 at 240°, n = 4): f_inv falls as more balls (m) share the push:
     their circumferential forces spread over a wider arc and partly cancel."""
-    pushing = [seed000_cli(FIG8, f"cage.pushing_balls={m}") for m in (1, 2, 3, 4, 5, 6, 7)]
+    pushing = [cage_paper_cli(FIG8, f"cage.pushing_balls={m}") for m in (1, 2, 3, 4, 5, 6, 7)]
     capsys.readouterr()
     assert np.all(np.diff(pushing) < 0)
 
 
-def test_seed000_restoring_force_rises_steeply_beyond_relative_eccentricity_0_6(seed000_cli, capsys):
+def test_cage_paper_restoring_force_rises_steeply_beyond_relative_eccentricity_0_6(cage_paper_cli, capsys):
     """Fig. 10 and conclusion 3: below ε = 0.6 f_inv changes little, above it the land film force
     ε²/(1 − ε²)² takes over; the slope over 0.6–0.9 is more than five times that over 0.2–0.6, and
     the outer-lock cage's f_inv is larger than the cylindrical one's at every ε."""
     eccentricities = (0.2, 0.4, 0.6, 0.75, 0.9)
-    outer_lock = np.array([seed000_cli(f"cage.eccentricity={e}") for e in eccentricities])
-    cylindrical = np.array([seed000_cli(f"cage.eccentricity={e}", 'cage.pocket="cylindrical"') for e in eccentricities])
+    outer_lock = np.array([cage_paper_cli(f"cage.eccentricity={e}") for e in eccentricities])
+    cylindrical = np.array([cage_paper_cli(f"cage.eccentricity={e}", 'cage.pocket="cylindrical"') for e in eccentricities])
     capsys.readouterr()
     for forces in (outer_lock, cylindrical):
         assert np.all(np.diff(forces) > 0)
@@ -189,23 +190,23 @@ def test_seed000_restoring_force_rises_steeply_beyond_relative_eccentricity_0_6(
     assert np.all(outer_lock > cylindrical)
 
 
-def test_seed000_pocket_gap_widens_with_speed(seed000_cli, capsys):
+def test_cage_paper_pocket_gap_widens_with_speed(cage_paper_cli, capsys):
     """Fig. 10, conclusion 3: the outer-lock cage's advantage over the cylindrical pocket grows
     with speed (the wall forces grow with the drag, and only the sphere turns them radial)."""
-    gaps = [seed000_cli(f'operating.inner_speed="{rpm} rpm"')
-            - seed000_cli(f'operating.inner_speed="{rpm} rpm"', 'cage.pocket="cylindrical"') for rpm in (5000, 20000, 60000)]
+    gaps = [cage_paper_cli(f'operating.inner_speed="{rpm} rpm"')
+            - cage_paper_cli(f'operating.inner_speed="{rpm} rpm"', 'cage.pocket="cylindrical"') for rpm in (5000, 20000, 60000)]
     capsys.readouterr()
     assert gaps[0] > 0 and np.all(np.diff(gaps) > 0)
 
 
-def test_seed000_outer_lock_beats_cylindrical_at_most_offset_angles(seed000_cli, capsys):
+def test_cage_paper_outer_lock_beats_cylindrical_at_most_offset_angles(cage_paper_cli, capsys):
     """Fig. 9 (20000 r/min, m = 4, n = 2, ε = 0.8): over offset angles every 15°, the outer-lock
     cage's f_inv exceeds the cylindrical one's at most angles (the paper: "at most angles"; this
     model: at all 24, see benchmarks/cage_forces.py)."""
     common = ("cage.pushing_balls=4", "cage.resisting_balls=2")
     angles = range(0, 360, 15)
-    outer_lock = np.array([seed000_cli(*common, f'cage.offset_angle="{a} deg"') for a in angles])
-    cylindrical = np.array([seed000_cli(*common, f'cage.offset_angle="{a} deg"', 'cage.pocket="cylindrical"')
+    outer_lock = np.array([cage_paper_cli(*common, f'cage.offset_angle="{a} deg"') for a in angles])
+    cylindrical = np.array([cage_paper_cli(*common, f'cage.offset_angle="{a} deg"', 'cage.pocket="cylindrical"')
                             for a in angles])
     capsys.readouterr()
     assert np.mean(outer_lock > cylindrical) > 0.5

@@ -1,4 +1,4 @@
-"""Cage dynamics and whirl stability (issue 6, items 4–5): the whirling land film, the simulated
+"""Cage dynamics and whirl stability (the cage paper, §4): the whirling land film, the simulated
 orbit and its measures, the hard cases, and the gradient of the stability objective."""
 
 import json
@@ -20,8 +20,9 @@ from .test_cage import B7005, GUIDE_RADIAL_CLEARANCE, OIL
 SCENE = example_scene("cage_b7005")
 
 
-def seed000(rpm, ratio=1.083, pocket="outer_lock"):
-    """(cage, operating) of the seed 000 scene at `rpm` and pocket / guide clearance `ratio`."""
+def cage_paper_scene(rpm, ratio=1.083, pocket="outer_lock"):
+    """(cage, operating) of the cage paper's bearing (cage_b7005) at `rpm` and pocket / guide
+    clearance `ratio`."""
     cage = ball_cage(B7005, pocket=pocket, pocket_clearance=ratio * 0.24e-3, guide_clearance=0.24e-3,
                      land_width=2e-3, pushing_balls=3, resisting_balls=4)
     return cage, Operating(rpm * np.pi / 30.0, 0.0, [1120.0, 0.0, 400.0], [0.0, 0.0])
@@ -98,7 +99,7 @@ def test_orbit_measures_of_a_synthetic_whirl():
 @pytest.fixture(scope="module")
 def short_orbit():
     """Compiled 20000 r/min orbit of 10 ms (1.4 cage revolutions) as a function of the start."""
-    cage, operating = seed000(20000.0)
+    cage, operating = cage_paper_scene(20000.0)
     return jax.jit(lambda start, duration: simulate_cage(cage, B7005, operating, OIL, start, duration, 256))
 
 
@@ -125,7 +126,7 @@ def test_orbit_gradient_is_finite_in_land_contact():
     discrete solution for its step sequence, so the tolerance is tightened to 1e-10 (at the
     default 1e-5 the adaptive steps change under a finite-difference step and the difference
     scatters by 10 %); they agree to 0.1 %."""
-    cage, operating = seed000(20000.0)
+    cage, operating = cage_paper_scene(20000.0)
     settings = DynamicsSettings(rtol=1e-10, atol=1e-10)
 
     @jax.jit
@@ -145,7 +146,7 @@ def test_orbit_gradient_is_finite_in_land_contact():
 def stability_decay():
     """Compiled whirl decay rate [1/s] at the equilibrium against (rpm, clearance ratio)."""
     def decay(rpm, ratio):
-        cage, operating = seed000(rpm, ratio)
+        cage, operating = cage_paper_scene(rpm, ratio)
         return cage_stability(cage, B7005, operating, OIL).decay_rate
     return jax.jit(decay)
 
@@ -167,7 +168,7 @@ def test_stability_at_the_equilibrium_is_a_force_balance():
     equilibrium is stable at the scene's speed (σ > 0), the slowest mode real or complex."""
     from diffbearing.cage_forces import cage_forces
 
-    cage, operating = seed000(20000.0)
+    cage, operating = cage_paper_scene(20000.0)
 
     @jax.jit
     def solve(cage):

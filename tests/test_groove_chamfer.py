@@ -1,4 +1,5 @@
-"""Seed 002's chamfer: the paper's numbers are consistent with the model's contact angle and ellipse."""
+"""The 6411E chamfer paper's chamfer: its numbers are consistent with the model's contact angle and
+ellipse."""
 
 import numpy as np
 
@@ -7,8 +8,8 @@ from diffbearing import groove_chamfer
 INNER_GROOVE_RADIUS = 13.9e-3
 
 
-def test_seed002_chamfer_height():
-    """Seed 002 prints α′ = 18.10°, a = 9.234 mm and H = 0.34 mm but not the shoulder geometry.
+def test_chamfer_paper_chamfer_height():
+    """The 6411E chamfer paper prints α′ = 18.10°, a = 9.234 mm and H = 0.34 mm but not the shoulder geometry.
     Those three imply a groove depth of 6.50 mm (0.241 D_w). With that depth, this model's own
     α′ = 18.06° (10 kN axial, tests/test_ball_equilibrium.py) and exact a = 9.262 mm at
     Q_max = 72.14 kN (tests/test_hertz.py) must give H within 0.03 mm of 0.34 mm: the printed H

@@ -56,11 +56,11 @@ def test_ellipticity_against_scipy_reference():
         np.testing.assert_allclose(hertz.ellipticity(difference), kappa, rtol=1e-12)
 
 
-def test_seed002_inner_contact():
-    """Seed 002 (6411E): Σρ_i = 0.1040 1/mm, F(ρ_i) = 0.9583, a = 9.234 mm at Q = 72.14 kN.
+def test_chamfer_paper_inner_contact():
+    """The 6411E chamfer paper: Σρ_i = 0.1040 1/mm, F(ρ_i) = 0.9583, a = 9.234 mm at Q = 72.14 kN.
 
-    The paper read its Hertz coefficients off tables (physics.md §3): exact Hertz must land within
-    1 % of a. The paper's γ_i = 0.2726 is used as printed (α0 = 9.23° would give 0.2732).
+    The paper read its Hertz coefficients off tables (docs/papers.md, §The 6411E chamfer paper):
+    exact Hertz must land within 1 % of a. The paper's γ_i = 0.2726 is used as printed (α0 = 9.23° would give 0.2732).
     """
     ball_diameter, fi = 26.9875e-3, 13.9 / 26.9875
     gamma = 0.2726
@@ -72,7 +72,7 @@ def test_seed002_inner_contact():
     np.testing.assert_allclose(contact.semi_major_axis, 9.234e-3, rtol=0.01)
 
 
-def test_seed002_geometry_through_the_bearing_model():
+def test_chamfer_paper_geometry_through_the_bearing_model():
     # The same contact built from the bearing: α0 from the 28 µm clearance (paper: 9.23°).
     bearing = ball_bearing(ball_diameter=26.9875e-3, pitch_diameter=97.5e-3, balls=7, kind="deep_groove_ball",
                            inner_groove_radius=13.9e-3, outer_groove_radius=14.17e-3, radial_clearance=0.028e-3)

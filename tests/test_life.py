@@ -18,8 +18,8 @@ def bearing_6411E(radial_clearance=0.0):
 
 
 def test_iso281_rating_of_6411E():
-    # Seed 002 quotes the catalogue C_r = 101 kN; ISO 281 (D_w > 25.4 mm branch, f_c at γ = 0.277,
-    # interpolated in Table 2) must give it within 1 %.
+    # The 6411E chamfer paper quotes the catalogue C_r = 101 kN; ISO 281 (D_w > 25.4 mm branch, f_c
+    # at γ = 0.277, interpolated in Table 2) must give it within 1 %.
     np.testing.assert_allclose(life.basic_dynamic_load_rating(bearing_6411E()), 101e3, rtol=0.01)
 
 

@@ -18,10 +18,11 @@ def test_sjovall_integrals_against_harris_table():
     np.testing.assert_allclose(radial / axial, 0.7427, atol=5e-5)
 
 
-def test_seed000_load_zone():
-    """Seed 000 quotes "a load zone of about 229°" for F_r tan α / F_a = 0.75 (physics.md §6). The
-    point-contact Sjövall integrals give ε = 0.682 and 222.8° (they reproduce Harris's table: 0.7427
-    at ε = 0.7); 229° would need J_r/J_a = 0.740. Asserted: 229° within 7° (3 %), the gap stated."""
+def test_cage_paper_load_zone():
+    """The cage paper quotes "a load zone of about 229°" for F_r tan α / F_a = 0.75 (docs/papers.md,
+    §The cage paper). The point-contact Sjövall integrals give ε = 0.682 and 222.8° (they reproduce
+    Harris's table: 0.7427 at ε = 0.7); 229° would need J_r/J_a = 0.740. Asserted: 229° within 7°
+    (3 %), the gap stated."""
     epsilon = ld.load_zone_parameter(0.75)
     radial, axial = ld.sjovall_integrals(epsilon)
     np.testing.assert_allclose(radial / axial, 0.75, rtol=1e-12)
@@ -34,7 +35,7 @@ def test_full_circle_limit_and_stribeck():
     # ε = 1: every ball loaded, J_r/J_a = 0.6 (the bracket is cos²(ψ/2)^{3/2} = |cos³(ψ/2)|: ratio 3/5).
     radial, axial = ld.sjovall_integrals(1.0)
     np.testing.assert_allclose(radial / axial, 0.6, rtol=1e-9)
-    assert float(ld.stribeck_max_ball_load(101e3, 7)) == 5 * 101e3 / 7  # seed 002: 72.14 kN
+    assert float(ld.stribeck_max_ball_load(101e3, 7)) == 5 * 101e3 / 7  # the 6411E chamfer paper: 72.14 kN
     np.testing.assert_allclose(ld.stribeck_max_ball_load(101e3, 7), 72.14e3, rtol=1e-4)
 
 

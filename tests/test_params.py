@@ -44,7 +44,8 @@ def test_bad_bearing_raises_naming_parameter(changes, message):
 
 
 def test_clearance_and_free_contact_angle_round_trip():
-    # Seed 002: cos α0 = 1 − Gr/(2(fi + fe − 1)Dw) gives α0 = 9.23° for Gr = 28 µm (physics.md §3).
+    # The 6411E chamfer paper: cos α0 = 1 − Gr/(2(fi + fe − 1)Dw) gives α0 = 9.23° for Gr = 28 µm
+    # (docs/theory.md, §Groove geometry and clearance).
     bearing = build()
     np.testing.assert_allclose(np.degrees(bearing.free_contact_angle), 9.23, atol=0.01)
     np.testing.assert_allclose(radial_clearance(bearing), 0.028e-3, rtol=1e-12)

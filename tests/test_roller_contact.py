@@ -1,5 +1,5 @@
-"""Roller–raceway contact (issue 4): Love's coefficients, DC-FFT, the Polonsky–Keer solver against
-Hertz, edge effects, logarithmic profiles, seed 004's findings, derivatives and hard cases."""
+"""Roller–raceway contact: Love's coefficients, DC-FFT, the Polonsky–Keer solver against Hertz,
+edge effects, logarithmic profiles, the crowning paper's findings, derivatives and hard cases."""
 
 from pathlib import Path
 
@@ -20,7 +20,7 @@ from diffbearing import build_model, load_scene, run_model
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 
-GCR15 = Material(207e9, 0.29, 7830.0)  # seed 004: E = 207 GPa, ν = 0.29
+GCR15 = Material(207e9, 0.29, 7830.0)  # the crowning paper: E = 207 GPa, ν = 0.29
 LENGTH, DIAMETER, LOAD = 12e-3, 10e-3, 1000.0
 
 solve = jax.jit(roller_contact, static_argnames=("grid", "method", "tolerance", "max_iterations"))
@@ -125,12 +125,12 @@ def test_logarithmic_profile_at_its_design_load_is_nearly_uniform(kind):
     assert inner.mean() == pytest.approx(float(line.max_pressure), rel=0.01)  # Hertz p0 at Q/l
 
 
-# --- seed 004 through the scene layer -------------------------------------------------------
+# --- the crowning paper through the scene layer ---------------------------------------------
 
 
 @pytest.fixture(scope="module")
-def seed004_profiles():
-    """Seed 004's tapered roller at 1 kN with three profiles; circular: 6 mm flat + 100 mm arc."""
+def crowning_paper_profiles():
+    """The crowning paper's tapered roller at 1 kN with three profiles; circular: 6 mm flat + 100 mm arc."""
     results = {}
     for kind, extra in (("straight", []), ("circular", ['profile.flat_length="6 mm"', 'profile.crown_radius="100 mm"']),
                         ("johns_gohar", [])):
@@ -139,25 +139,26 @@ def seed004_profiles():
     return results
 
 
-def test_seed004_findings(seed004_profiles):
-    """Seed 004, Fig. 12: straight rollers show edge stress peaks; arc crowning raises the central
+def test_crowning_paper_findings(crowning_paper_profiles):
+    """The crowning paper, Fig. 12: straight rollers show edge stress peaks; arc crowning raises the central
     peak above the straight and logarithmic rollers; the logarithmic profile is near uniform."""
-    along = {kind: np.asarray(v["contact.pressure"]).max(axis=0) for kind, v in seed004_profiles.items()}
+    along = {kind: np.asarray(v["contact.pressure"]).max(axis=0) for kind, v in crowning_paper_profiles.items()}
     middle = {kind: a[len(a) // 2] for kind, a in along.items()}
     assert along["straight"].max() > 1.5 * middle["straight"]  # edge peak
     assert middle["circular"] > 1.2 * middle["straight"] and middle["circular"] > 1.2 * middle["johns_gohar"]
-    assert float(seed004_profiles["circular"]["contact.max_pressure"]) > float(
-        seed004_profiles["johns_gohar"]["contact.max_pressure"])
-    y = np.asarray(seed004_profiles["johns_gohar"]["contact.y"])
+    assert float(crowning_paper_profiles["circular"]["contact.max_pressure"]) > float(
+        crowning_paper_profiles["johns_gohar"]["contact.max_pressure"])
+    y = np.asarray(crowning_paper_profiles["johns_gohar"]["contact.y"])
     inner = along["johns_gohar"][np.abs(y) <= 0.45 * LENGTH]
     assert inner.max() / inner.min() < 1.06  # near uniform; the small end carries a little more
-    assert inner[0] > inner[-1]  # seed 004 Fig. 13: small end slightly above the large end
-    for values in seed004_profiles.values():
+    assert inner[0] > inner[-1]  # the crowning paper, Fig. 13: small end slightly above the large end
+    for values in crowning_paper_profiles.values():
         assert bool(values["contact.converged"]) and float(values["contact.load"]) == pytest.approx(1000.0, rel=1e-12)
 
 
 def test_crowned_roller_peak_is_grid_converged():
-    """physics.md §7: a crowned roller's peak converges with the grid (unlike a straight one)."""
+    """A crowned roller's peak converges with the grid, unlike a straight one (docs/theory.md,
+    §Numerical notes)."""
     bearing = cylindrical("circular", flat_length=6e-3, crown_radius=0.1)
     peaks = [float(solve(bearing, RollerLoading(LOAD, 0.0, 0.0), grid=grid).max_pressure)
              for grid in ((32, 128), (64, 512))]
@@ -253,7 +254,7 @@ def test_bad_roller_input_names_the_parameter():
 # --- the command ------------------------------------------------------------------------------
 
 
-def test_cli_runs_seed004_with_json_and_pressure_map(capsys, tmp_path):
+def test_cli_runs_tapered_roller_with_json_and_pressure_map(capsys, tmp_path):
     import json
 
     from diffbearing.app import cli

@@ -92,9 +92,9 @@ def test_sharded_sweep_matches_single_device(swept, scene_file):
 
 @pytest.mark.slow
 def test_sweep_of_the_starved_line_film_equals_single_runs(tmp_path):
-    """A sweep through the iterative 1-D EHL solver (seed 003, line film, starved) runs its points
-    one after another (`sequential_sweep`; the vmapped batch of two solves ran past 150 s) and
-    each point equals a single run at that load."""
+    """A sweep through the iterative 1-D EHL solver (the starved-EHL paper's contact, line film,
+    starved) runs its points one after another (`sequential_sweep`; the vmapped batch of two solves
+    ran past 150 s) and each point equals a single run at that load."""
     scene = tmp_path / "line_sweep.toml"
     text = Path(example_scene("starved_roller")).read_text().replace('film = "finite_line"', 'film = "line"')
     scene.write_text(text.split("[fidelity]")[0] + '[sweep]\n"contact.load" = ["1000 N", "1600 N"]\n')
