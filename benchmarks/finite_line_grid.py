@@ -24,7 +24,6 @@ One run of each solve on this 2-core machine; compile time separately.
 """
 
 import math
-import time
 
 import jax
 

@@ -109,7 +109,7 @@ def plot_accuracy(tables):
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.5), layout="constrained")
     for axis, (title, rows) in zip(axes, tables):
         reference = rows[-1]
-        for index, (column, marker) in enumerate(((1, "o"), (2, "s"))):
+        for column, marker in ((1, "o"), (2, "s")):
             for name, *values in rows[:-1]:
                 value, run = values[column - 1], values[2]
                 if np.isnan(value):

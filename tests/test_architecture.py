@@ -5,7 +5,6 @@ import ast
 import dataclasses
 from pathlib import Path
 
-import jax.numpy as jnp
 import pytest
 
 from diffbearing import build_model, load_scene, run_model
