@@ -137,3 +137,13 @@ def test_adapters_declare_distinct_blocks_and_consistent_keys():
     clash = dataclasses.replace(TOY, name="clash", blocks=(), keys={"contact.load": Key("number")})
     with pytest.raises(ValueError, match="declared twice with different meanings"):
         registry.register(clash)
+
+
+def test_ruff_is_clean():
+    """The linter's rules (pyproject.toml, [tool.ruff]) hold over the whole repository."""
+    import subprocess
+    import sys
+
+    checked = subprocess.run([sys.executable, "-m", "ruff", "check", "--output-format", "concise", str(PACKAGE.parent)],
+                             capture_output=True, text=True)
+    assert checked.returncode == 0, checked.stdout + checked.stderr
