@@ -264,7 +264,9 @@ def _equilibrium(inputs: SceneInputs, settings: dict, results: dict) -> dict:
     out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
            "residual": solution.residual, "validity.approach_ratio": solution.approach_ratio,
            "validity.contact_angle": solution.contact_angle}
-    return out | ball_equilibrium.ball_results(solution.displacement, inputs.bearing, inputs.operating, model)
+    balls = ball_equilibrium.ball_results(solution.displacement, inputs.bearing, inputs.operating, model)
+    return out | {"balls." + field.name.replace("inner_", "inner.").replace("outer_", "outer."): getattr(balls, field.name)
+                  for field in dataclasses.fields(balls) if getattr(balls, field.name) is not None}
 
 
 def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:

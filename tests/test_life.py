@@ -39,7 +39,7 @@ def reference_life():
         solution = solve_equilibrium(bearing, operating, BallModel())
         results = ball_results(solution.displacement, bearing, operating, BallModel())
         rating = life.basic_dynamic_load_rating(bearing)
-        return life.reference_rating_life(bearing, rating, results["balls.inner.load"], results["balls.outer.load"])
+        return life.reference_rating_life(bearing, rating, results.inner_load, results.outer_load)
 
     return jax.jit(run)
 
