@@ -174,10 +174,10 @@ def minimise_convex(function, y0, args, *, gradient_tolerance=1e-12, max_steps=2
     after `max_steps`.
     """
     gradient = jax.grad(function)
-    hessian = jax.hessian(function)
 
-    def regularised_hessian(y, args):
-        return hessian(y, args) + REGULARIZATION * jnp.linalg.norm(gradient(y, args)) * jnp.eye(y.shape[0])
+    def regularised_hessian(y, args):  # H and ∇f from one forward pass over the gradient
+        hessian, slope = jax.jacfwd(lambda y: (g := gradient(y, args), g), has_aux=True)(y)
+        return hessian + REGULARIZATION * jnp.linalg.norm(slope) * jnp.eye(y.shape[0])
 
     return newton(gradient, y0, args, max_steps=max_steps, loop="while", jacobian=regularised_hessian,
                   objective=function, shortest=shortest, floor=gradient_tolerance)
