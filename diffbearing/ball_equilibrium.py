@@ -53,21 +53,23 @@ modelled with the same full groove (their low shoulder is not a separate limit).
 
 Solution (physics.md §7): the ring problem starts from the static solution, found by minimising
 the convex elastic energy Σ (2/5) K_n max(|A| − B D_w, 0)^{5/2} − F·Δ (no initial guess needed,
-zero stiffness at the start is fine). Newton then adds the contact-angle dependence of the Hertz
-constants and the speed terms: without speed effects on the 5 ring unknowns with the balls at the
-closed-form static split; with them on the ring and ball unknowns together (5 + 2Z, the balls
-first solved per ball at the static ring position), each step through the 5×5 Schur complement of
-the block-arrow Jacobian. Each step evaluates the Hertz constants once at the current contact
-angles and holds them in the Jacobian (their angle dependence is weak); the residuals are exact.
-The implicit derivative of the solution uses the exact linearisation (`jax.lax.custom_root`,
-least squares on the 5×5 Jacobian of `ring_force`). `ball_positions` solves the balls per ball
-(vmap, 2×2 Newton) for a given Δ and carries the implicit-function derivative
-dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ, so the ring force F(Δ) has exact total derivatives and the
-stiffness K = dF/dΔ (balls re-equilibrated) is `jax.jacfwd(ring_force)`.
+zero stiffness at the start is fine; `newton.minimise_convex`). Newton (`newton.newton`, full
+steps) then adds the contact-angle dependence of the Hertz constants and the speed terms: without
+speed effects on the 5 ring unknowns with the balls at the closed-form static split; with them on
+the ring and ball unknowns together (5 + 2Z, the balls first solved per ball at the static ring
+position), each step through the 5×5 Schur complement of the block-arrow Jacobian. Each step
+evaluates the Hertz constants once at the current contact angles and holds them in the Jacobian
+(their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
+from a Chebyshev table of K(α) that it builds from the bearing (`constant_table`) and passes
+down as `table`. The implicit derivative of the solution uses the exact linearisation
+(`newton.implicit_root`, least squares on the 5×5 Jacobian of `ring_force`). `ball_positions`
+solves the balls per ball (2×2 Newton steps) for a given Δ and carries the implicit-function
+derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ (`implicit_root`, block by block), so the ring force
+F(Δ) has exact total derivatives and the stiffness K = dF/dΔ (balls re-equilibrated) is
+`jax.jacfwd(ring_force)`.
 """
 
 import dataclasses
-import functools
 
 import equinox as eqx
 import jax
@@ -76,9 +78,9 @@ import jax.numpy as jnp
 from . import ball_validity, hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
 from .params import BallBearing, Operating, groove_curvature_centre_distance
-from .raceway_contact import (ball_raceway_modulus, contact_constant_table, contact_constants, inner_curvature,
-                              outer_curvature, table_constants)
-from .solvers import minimise_convex
+from .newton import implicit_root, minimise_convex, newton
+from .raceway_contact import (ContactConstantTable, ball_raceway_modulus, contact_constant_table, contact_constants,
+                              inner_curvature, outer_curvature, table_constants)
 
 BALL_NEWTON_MAX_STEPS = 40
 BALL_POSITION_TOLERANCE = 1e-13  # × D_w: step size at which the per-ball Newton stops
@@ -133,25 +135,26 @@ def inner_groove_centres(bearing: BallBearing, displacement):
     return jnp.stack([axial, radial], axis=-1)
 
 
-def hertz_constants(bearing: BallBearing, inner_angle, outer_angle, model: BallModel):
+def hertz_constants(bearing: BallBearing, inner_angle, outer_angle, model: BallModel,
+                    table: ContactConstantTable | None = None):
     """(K_i, K_o) [N/m^1.5] at the contact angles, or at α₀ (`model.hertz_constants`).
 
-    Inside the solvers the bearing carries a Chebyshev table of K(α) (`with_constant_table`);
-    without one each contact's constant is solved exactly.
+    From `table`, a Chebyshev table of K(α) (`constant_table`; the solvers build one per solve and
+    pass it down), or, without one, each contact's constant solved exactly.
     """
     if model.hertz_constants == "free_contact_angle":
         angle = bearing.free_contact_angle
         return tuple(jnp.broadcast_to(k, jnp.shape(inner_angle))
                      for k in contact_constants(bearing, angle, angle, model.hertz_method))
-    if bearing.contact_constant_table is not None:
-        return table_constants(bearing.contact_constant_table, inner_angle, outer_angle)
+    if table is not None:
+        return table_constants(table, inner_angle, outer_angle)
     return contact_constants(bearing, inner_angle, outer_angle, model.hertz_method)
 
 
-def with_constant_table(bearing: BallBearing, model: BallModel) -> BallBearing:
-    """The bearing with a fresh Chebyshev table of its Hertz constants for `model`'s fidelity level."""
-    table = contact_constant_table(bearing, model.hertz_method) if model.hertz_constants == "contact_angle" else None
-    return eqx.tree_at(lambda b: b.contact_constant_table, bearing, table, is_leaf=lambda x: x is None)
+def constant_table(bearing: BallBearing, model: BallModel) -> ContactConstantTable | None:
+    """A Chebyshev table of the bearing's Hertz constants K(α) at `model`'s fidelity level, or None
+    where the model holds them at α₀ (`raceway_contact.contact_constant_table`)."""
+    return contact_constant_table(bearing, model.hertz_method) if model.hertz_constants == "contact_angle" else None
 
 
 def _groove_offsets(bearing: BallBearing):
@@ -160,33 +163,35 @@ def _groove_offsets(bearing: BallBearing):
             (bearing.outer_groove_ratio - 0.5) * bearing.ball_diameter)
 
 
-def static_positions(bearing: BallBearing, centres, model: BallModel, constants=None):
+def static_positions(bearing: BallBearing, centres, model: BallModel, constants=None, table=None):
     """(Z, 2) ball centres without speed effects: on the line of groove centres, the total approach
     split so that K_i δ_i^{3/2} = K_o δ_o^{3/2} (both contacts at the same angle).
 
-    `constants` = (K_i, K_o) overrides the Hertz constants at the angle of the line of centres.
+    `constants` = (K_i, K_o) overrides the Hertz constants at the angle of the line of centres;
+    otherwise they come from `table` (`hertz_constants`).
     """
     inner_offset, outer_offset = _groove_offsets(bearing)
     length = jnp.linalg.norm(centres, axis=-1)
     total = length - groove_curvature_centre_distance(bearing)
     if constants is None:
-        constants = _static_constants(bearing, centres, model)
+        constants = _static_constants(bearing, centres, model, table)
     k_inner, k_outer = constants
     outer_approach = total / (1.0 + (k_outer / k_inner) ** (2.0 / 3.0))
     return centres / length[..., None] * (outer_offset + outer_approach)[..., None]
 
 
-def _static_constants(bearing: BallBearing, centres, model: BallModel):
+def _static_constants(bearing: BallBearing, centres, model: BallModel, table=None):
     """(K_i, K_o) [N/m^1.5] at the angle of the line of groove centres, where both static contacts lie."""
     angle = jnp.arctan2(centres[..., 0], centres[..., 1])
-    return hertz_constants(bearing, angle, angle, model)
+    return hertz_constants(bearing, angle, angle, model, table)
 
 
-def _static_state(bearing: BallBearing, operating: Operating, centres, model: BallModel, constants=None):
+def _static_state(bearing: BallBearing, operating: Operating, centres, model: BallModel, constants=None,
+                  table=None):
     """`ball_state` at the static split, with the Hertz constants evaluated once for both contacts
     (they lie on the line of groove centres, at the same angle)."""
     if constants is None:
-        constants = _static_constants(bearing, centres, model)
+        constants = _static_constants(bearing, centres, model, table)
     positions = static_positions(bearing, centres, model, constants)
     return ball_state(bearing, operating, centres, positions, model, constants)
 
@@ -197,11 +202,13 @@ def _contact_angles(centres, positions):
     return jnp.arctan2(to_inner[..., 0], to_inner[..., 1]), jnp.arctan2(positions[..., 0], positions[..., 1])
 
 
-def ball_state(bearing: BallBearing, operating: Operating, centres, positions, model: BallModel, constants=None):
+def ball_state(bearing: BallBearing, operating: Operating, centres, positions, model: BallModel, constants=None,
+               table=None):
     """Per-ball contact and kinematic state for ball centres `positions` (Z, 2); SI units.
 
     `constants` = (K_i, K_o) overrides the Hertz constants at the actual contact angles (the per-ball
-    Newton holds them fixed within a step; the converged state always uses the exact ones).
+    Newton holds them fixed within a step; the converged state always uses the exact ones), which
+    otherwise come from `table` (`hertz_constants`).
     """
     inner_offset, outer_offset = _groove_offsets(bearing)
     to_inner = centres - positions
@@ -210,7 +217,7 @@ def ball_state(bearing: BallBearing, operating: Operating, centres, positions, m
     outer_angle = jnp.arctan2(positions[..., 0], positions[..., 1])
     inner_angle = jnp.arctan2(to_inner[..., 0], to_inner[..., 1])
     if constants is None:
-        constants = hertz_constants(bearing, inner_angle, outer_angle, model)
+        constants = hertz_constants(bearing, inner_angle, outer_angle, model, table)
     k_inner, k_outer = constants
     ratio = bearing.ball_diameter / bearing.pitch_diameter
     relative_speed = operating.inner_speed - operating.outer_speed
@@ -256,9 +263,11 @@ def contact_forces(bearing: BallBearing, state: dict, model: BallModel) -> dict:
     )
 
 
-def ball_residual(positions, centres, bearing: BallBearing, operating: Operating, model: BallModel, constants=None):
+def ball_residual(positions, centres, bearing: BallBearing, operating: Operating, model: BallModel, constants=None,
+                  table=None):
     """(Z, 2) force residual [N] of each ball's equilibrium, ΣF (module docstring), axial then radial."""
-    forces = contact_forces(bearing, ball_state(bearing, operating, centres, positions, model, constants), model)
+    forces = contact_forces(bearing, ball_state(bearing, operating, centres, positions, model, constants, table),
+                            model)
     return sum(forces.values())
 
 
@@ -273,10 +282,10 @@ def _free_balls(bearing: BallBearing, operating: Operating, centres):
     return (approach <= FREE_APPROACH * bearing.ball_diameter) & standstill
 
 
-def free_contact_constant(bearing: BallBearing, model: BallModel):
+def free_contact_constant(bearing: BallBearing, model: BallModel, table=None):
     """K_n(α₀) [N/m^1.5]: both contacts in series at the free contact angle."""
     angle = jnp.asarray(bearing.free_contact_angle)
-    return hertz.combined_load_deflection_constant(*hertz_constants(bearing, angle, angle, model))
+    return hertz.combined_load_deflection_constant(*hertz_constants(bearing, angle, angle, model, table))
 
 
 class _FreeBalls(eqx.Module):
@@ -288,9 +297,9 @@ class _FreeBalls(eqx.Module):
     scale: jax.Array
 
 
-def _free_ball_equations(bearing, operating, centres, model):
-    return _FreeBalls(_free_balls(bearing, operating, centres), static_positions(bearing, centres, model),
-                      free_contact_constant(bearing, model) * 1e-3)
+def _free_ball_equations(bearing, operating, centres, model, table):
+    return _FreeBalls(_free_balls(bearing, operating, centres), static_positions(bearing, centres, model, table=table),
+                      free_contact_constant(bearing, model, table) * 1e-3)
 
 
 def _with_free_balls(residual, positions, free: _FreeBalls):
@@ -298,86 +307,54 @@ def _with_free_balls(residual, positions, free: _FreeBalls):
     return jnp.where(free.mask[:, None], (positions - free.reference) * free.scale, residual)
 
 
-def _masked_residual(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None):
+def _masked_residual(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None, table=None):
     """`ball_residual` at `positions`, free balls' equations replaced (`_with_free_balls`)."""
-    return _with_free_balls(ball_residual(positions, centres, bearing, operating, model, constants), positions, free)
+    return _with_free_balls(ball_residual(positions, centres, bearing, operating, model, constants, table), positions,
+                            free)
 
 
-def _ball_jacobians(positions, centres, bearing, operating, model, free: _FreeBalls, constants=None):
-    """(Z, 2, 2) ∂g/∂X of every ball. Ball j's residual depends on X_j alone, so two JVPs with the
-    same unit tangent on every ball give the two columns of all 2×2 blocks at once. With fixed
-    `constants` the Hertz constants' (weak) dependence on the contact angles is left out."""
-    def residual(x):
-        return _masked_residual(x, centres, bearing, operating, model, free, constants)
-
-    _, linear = jax.linearize(residual, positions)
-    units = jnp.broadcast_to(jnp.eye(2)[:, None, :], (2,) + positions.shape)
+def _ball_blocks(linear, shape):
+    """(Z, 2, 2) blocks of the block-diagonal linear map `linear` on (Z, 2) arrays (ball j's
+    residual depends on X_j alone): two JVPs with the same unit tangent on every ball give the two
+    columns of all 2×2 blocks at once."""
+    units = jnp.broadcast_to(jnp.eye(2)[:, None, :], (2,) + shape)
     return jnp.moveaxis(jax.vmap(linear)(units), 0, -1)
 
 
-def _speed_start(bearing, operating, centres, model):
+def _ball_equations(positions, args):
+    """(Z, 2) residual [N] of every ball's equilibrium at `positions` (free balls' placeholders),
+    the Hertz constants at the contact angles; args = (centres, bearing, operating, model, table, free)."""
+    centres, bearing, operating, model, table, free = args
+    return _masked_residual(positions, centres, bearing, operating, model, free, table=table)
+
+
+def _ball_step(positions, args):
+    """(Z, 2) per-ball Newton step −J⁻¹g [m], each ball's 2×2 Jacobian (`_ball_blocks`) with the
+    Hertz constants held at the current contact angles (their weak angle dependence left out)."""
+    centres, bearing, operating, model, table, free = args
+    constants = hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
+    residual, linear = jax.linearize(
+        lambda x: _masked_residual(x, centres, bearing, operating, model, free, constants), positions)
+    return -jnp.linalg.solve(_ball_blocks(linear, positions.shape), residual[..., None])[..., 0]
+
+
+def _ball_tangent_solve(linear, rhs):
+    """x (Z, 2) with linear(x) = rhs for the balls' linearised residual, block by block (`_ball_blocks`)."""
+    return jnp.linalg.solve(_ball_blocks(linear, rhs.shape), rhs[..., None])[..., 0]
+
+
+def _speed_start(bearing, operating, centres, model, table):
     """Start for the per-ball Newton: the static split, with a ball whose inner contact is open
     pressed onto the outer raceway by its centrifugal force along the line of groove centres."""
-    static = static_positions(bearing, centres, model)
+    static = static_positions(bearing, centres, model, table=table)
     if not model.centrifugal:
         return static
-    state = ball_state(bearing, operating, centres, static, model)
+    state = ball_state(bearing, operating, centres, static, model, table=table)
     pressed = (state["centrifugal_force"] / state["outer_constant"]) ** (2.0 / 3.0)
     _, outer_offset = _groove_offsets(bearing)
     approach = jnp.maximum(state["outer_approach"], pressed)
     direction = static / jnp.linalg.norm(static, axis=-1, keepdims=True)
     return direction * (outer_offset + approach)[:, None]
-
-
-def _ball_newton(start, displacement, bearing: BallBearing, operating: Operating, model: BallModel):
-    """(Z, 2) ball centres [m] in equilibrium with speed effects, by per-ball Newton from `start`.
-
-    Each step holds the Hertz constants at the current contact angles in the 2×2 Jacobians; stops
-    when the largest step is below `BALL_POSITION_TOLERANCE` D_w (at most `BALL_NEWTON_MAX_STEPS`;
-    the ring solver checks the ball residuals). Not differentiated: see `_equilibrium_balls`.
-    """
-    centres = inner_groove_centres(bearing, displacement)
-    free = _free_ball_equations(bearing, operating, centres, model)
-    tolerance = BALL_POSITION_TOLERANCE * bearing.ball_diameter
-
-    def newton_step(carry):
-        positions, _, count = carry
-        constants = hertz_constants(bearing, *_contact_angles(centres, positions), model)
-        residual = _masked_residual(positions, centres, bearing, operating, model, free, constants)
-        jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free, constants)
-        step = _limited_ball_step(bearing, jnp.linalg.solve(jacobian, residual[..., None])[..., 0])
-        return positions - step, jnp.max(jnp.abs(step)), count + 1
-
-    def not_converged(carry):
-        _, largest_step, count = carry
-        return (largest_step > tolerance) & (count < BALL_NEWTON_MAX_STEPS)
-
-    positions, _, _ = jax.lax.while_loop(not_converged, newton_step, (start, jnp.inf, 0))
-    return positions
-
-
-@functools.partial(jax.custom_jvp, nondiff_argnums=(4,))
-def _equilibrium_balls(positions, displacement, bearing: BallBearing, operating: Operating, model: BallModel):
-    """`positions` (Z, 2) [m], ball centres in equilibrium at Δ, with their derivative from the implicit
-    function theorem on each ball's 2×2 system (custom JVP; reverse mode by transposition)."""
-    return positions
-
-
-@_equilibrium_balls.defjvp
-def _equilibrium_balls_jvp(model, primals, tangents):
-    _, displacement, bearing, operating = primals
-    # through the function itself, so that a derivative of this rule (second order) sees dX again
-    positions = _equilibrium_balls(*primals, model)
-    centres = inner_groove_centres(bearing, displacement)
-    free = _free_ball_equations(bearing, operating, centres, model)
-
-    def residual_of_inputs(d, b, o):
-        # a free ball carries no force whatever its placeholder: hold the placeholder fixed
-        return _masked_residual(positions, inner_groove_centres(b, d), b, o, model, jax.lax.stop_gradient(free))
-
-    _, residual_dot = jax.jvp(residual_of_inputs, primals[1:], tangents[1:])
-    jacobian = _ball_jacobians(positions, centres, bearing, operating, model, free)
-    return positions, -jnp.linalg.solve(jacobian, residual_dot[..., None])[..., 0]
 
 
 def _without_gradient(tree):
@@ -393,34 +370,57 @@ def _limited_ball_step(bearing: BallBearing, step):
     return step * jnp.minimum(1.0, limit / jnp.maximum(length, 1e-300))
 
 
-def ball_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+def ball_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel, table=None):
     """(Z, 2) ball centres [m] in equilibrium with speed effects, for inner-ring displacement Δ.
 
-    Per-ball Newton from `_speed_start` (`_ball_newton`), with the implicit-function derivative
-    (`_equilibrium_balls`).
+    Per-ball Newton (`newton`, the 2×2 steps of `_ball_step`, each limited to a tenth of the ball
+    radius) from `_speed_start`; stops when the largest step is below `BALL_POSITION_TOLERANCE` D_w
+    (at most `BALL_NEWTON_MAX_STEPS`; the ring solver checks the ball residuals). Its derivative is
+    the implicit one, dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) d(Δ, p), ball by ball (`implicit_root`); a free
+    ball's placeholder equation is held fixed (it carries no force wherever it is). `table`: the
+    Hertz constants' Chebyshev table (`hertz_constants`).
     """
-    d, b, o = _without_gradient((displacement, bearing, operating))
-    positions = _ball_newton(_speed_start(b, o, inner_groove_centres(b, d), model), d, b, o, model)
-    return _equilibrium_balls(positions, displacement, bearing, operating, model)
+    centres = _without_gradient(inner_groove_centres(bearing, displacement))
+    start = _speed_start(*_without_gradient((bearing, operating)), centres, model, _without_gradient(table))
+    return _balls_in_equilibrium(start, displacement, bearing, operating, model, table, _ball_newton)
 
 
-def equilibrium_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+def _ball_newton(residual, start, args):
+    """Per-ball Newton for `ball_positions` (its docstring)."""
+    bearing = args[1]
+    return newton(residual, start, args, max_steps=BALL_NEWTON_MAX_STEPS, loop="while", linear_step=_ball_step,
+                  limit=lambda step: _limited_ball_step(bearing, step), line_search=False,
+                  step_tolerance=(BALL_POSITION_TOLERANCE * bearing.ball_diameter, 0.0))[0]
+
+
+def _balls_in_equilibrium(start, displacement, bearing, operating, model, table, solve):
+    """(Z, 2) ball centres [m] that `solve(residual, start, args)` finds for `_ball_equations`, with
+    their implicit derivative (`ball_positions`)."""
+    centres = inner_groove_centres(bearing, displacement)
+    free = jax.lax.stop_gradient(_free_ball_equations(bearing, operating, centres, model, table))
+    return implicit_root(_ball_equations, start, (centres, bearing, operating, model, table, free), solve,
+                         _ball_tangent_solve)
+
+
+def equilibrium_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel, table=None):
     """Ball centres (Z, 2) [m] for displacement Δ: static split, or per-ball solve with speed effects."""
     if model.speed_effects:
-        return ball_positions(displacement, bearing, operating, model)
-    return static_positions(bearing, inner_groove_centres(bearing, displacement), model)
+        return ball_positions(displacement, bearing, operating, model, table)
+    return static_positions(bearing, inner_groove_centres(bearing, displacement), model, table=table)
 
 
-def ring_force(displacement, bearing: BallBearing, operating: Operating, model: BallModel):
+def ring_force(displacement, bearing: BallBearing, operating: Operating, model: BallModel, table=None):
     """[Fx, Fy, Fz, Mx, My] [N, N·m] the balls exert against an inner-ring displacement Δ.
 
-    In equilibrium it equals the applied load; its Jacobian is the stiffness matrix.
+    In equilibrium it equals the applied load; its Jacobian is the stiffness matrix. `table`: the
+    Hertz constants' Chebyshev table (`hertz_constants`).
     """
     centres = inner_groove_centres(bearing, displacement)
     if model.speed_effects:
-        state = ball_state(bearing, operating, centres, ball_positions(displacement, bearing, operating, model), model)
+        positions = ball_positions(displacement, bearing, operating, model, table)
+        state = ball_state(bearing, operating, centres, positions, model, table=table)
     else:
-        state = _static_state(bearing, operating, centres, model)
+        state = _static_state(bearing, operating, centres, model, table=table)
     return _ring_force_of_state(bearing, state, model)
 
 
@@ -455,13 +455,13 @@ def _ring_force_of_state(bearing: BallBearing, state: dict, model: BallModel):
     return jnp.sum(_ring_force_contributions(bearing, state, model), axis=0)
 
 
-def _scales(bearing: BallBearing, operating: Operating, model: BallModel):
+def _scales(bearing: BallBearing, operating: Operating, model: BallModel, table):
     """Unknown scale s (Δ = s·y), residual weights w (moments to forces) and load scale [N]."""
     inverse_arm = 1.0 / inner_groove_radius_of_centres(bearing)
     weight = jnp.stack([1.0, 1.0, 1.0, inverse_arm, inverse_arm])
     applied = jnp.concatenate([operating.force, operating.moment])
     # a characteristic contact load (K_n × (10 µm)^{3/2}) keeps the scale positive at zero load
-    characteristic = free_contact_constant(bearing, model) * DISPLACEMENT_SCALE**1.5
+    characteristic = free_contact_constant(bearing, model, table) * DISPLACEMENT_SCALE**1.5
     return DISPLACEMENT_SCALE * weight, weight, safe_norm(applied * weight) + characteristic
 
 
@@ -497,21 +497,23 @@ def _static_energy(y, args):
 def _scaled_ring_residual(force, y, args):
     """(force − applied load) · w / load scale; a prescribed component's equation is replaced by its
     unknown (= 0)."""
-    _, operating, _, _, weight, load_scale = args
+    _, operating, _, _, _, weight, load_scale = args
     free, _ = _controls(operating)
     applied = jnp.concatenate([operating.force, operating.moment])
     return jnp.where(free > 0, (force - applied) * weight / load_scale, y)
 
 
 def _ring_residual(y, args):
-    """Scaled ring residual with the balls re-equilibrated (`ring_force`, exact Hertz constants)."""
-    bearing, operating, model, unknown, _, _ = args
-    return _scaled_ring_residual(ring_force(_displacement(y, unknown, operating), bearing, operating, model), y, args)
+    """Scaled ring residual with the balls re-equilibrated (`ring_force`, the Hertz constants at the
+    contact angles); args = (bearing, operating, model, table, unknown scale, weight, load scale)."""
+    bearing, operating, model, table, unknown, _, _ = args
+    force = ring_force(_displacement(y, unknown, operating), bearing, operating, model, table)
+    return _scaled_ring_residual(force, y, args)
 
 
 def _static_ring_residual(y, args, constants):
     """Scaled ring residual at the static split with the Hertz constants (K_i, K_o) held at `constants`."""
-    bearing, operating, model, unknown, _, _ = args
+    bearing, operating, model, _, unknown, _, _ = args
     centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
     state = _static_state(bearing, operating, centres, model, constants)
     return _scaled_ring_residual(_ring_force_of_state(bearing, state, model), y, args)
@@ -523,7 +525,7 @@ def _speed_residual(y, positions, args, constants, free: _FreeBalls):
     Returns each ball's scaled share of the ring residual (Z, 5) (zero for a prescribed component),
     the scaled ring residual (5) and the ball residuals (Z, 2) [N] (free balls: their placeholder).
     """
-    bearing, operating, model, unknown, weight, load_scale = args
+    bearing, operating, model, _, unknown, weight, load_scale = args
     centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
     state = ball_state(bearing, operating, centres, positions, model, constants)
     contributions = _ring_force_contributions(bearing, state, model)
@@ -540,79 +542,74 @@ def _ring_step(jacobian, residual):
     return jnp.linalg.solve(jacobian + guard * jnp.eye(jacobian.shape[0]), residual)
 
 
-def _static_newton(y, args):
-    """Ring Newton at the static split: (y, None, steps) (no ball unknowns).
+def _static_step(y, args):
+    """Ring Newton step at the static split, −J⁻¹r (`_ring_step`), with J by `jax.jacfwd` (5
+    tangents) and the Hertz constants evaluated once at the current contact angles and held in
+    it, which leaves out their weak angle dependence; the residual itself is exact."""
+    bearing, operating, model, table, unknown, _, _ = args
+    centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+    constants = _static_constants(bearing, centres, model, table)
+    jacobian, residual = jax.jacfwd(lambda v: (r := _static_ring_residual(v, args, constants), r), has_aux=True)(y)
+    return -_ring_step(jacobian, residual)
 
-    Each step evaluates the Hertz constants once at the current contact angles and holds them in the
-    Jacobian (`jax.jacfwd`, 5 tangents), which leaves out their weak angle dependence; the residual
-    itself is exact. Stops when no component of the step exceeds `RING_STEP_TOLERANCE` (1 + |y|).
+
+def _speed_step(unknowns, args):
+    """Newton step (−dy, −dX) of the ring and ball unknowns together (5 + 2Z), (y, ball centres
+    (Z, 2) [m]).
+
+    The Hertz constants are evaluated once at the current contact angles and held in the
+    Jacobian, which leaves out their weak angle dependence; the residuals are exact. The Jacobian
+    is block-arrow: 5 JVP tangents give the ring columns, and 2 tangents with the same unit on
+    every ball give all 2×2 ball blocks and the 5×2 couplings of each ball (ball j's residual and
+    its share of the ring residual depend on X_j alone). The step follows by block elimination
+    through the 5×5 Schur complement S = J_yy − Σ_j J_yXj J_XjXj⁻¹ J_Xjy (Golub & Van Loan, Matrix
+    Computations, §3.2).
     """
-    bearing, operating, model, unknown, _, _ = args
-
-    def step(carry):
-        y, _, count = carry
-        centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
-        constants = _static_constants(bearing, centres, model)
-        jacobian, residual = jax.jacfwd(lambda v: (r := _static_ring_residual(v, args, constants), r),
-                                        has_aux=True)(y)
-        dy = _ring_step(jacobian, residual)
-        return y - dy, jnp.max(jnp.abs(dy) / (1.0 + jnp.abs(y))), count + 1
-
-    y, _, steps = jax.lax.while_loop(_ring_not_converged, step, (y, jnp.inf, 0))
-    return y, None, steps
-
-
-def _speed_newton(y, args):
-    """Newton on the ring and ball unknowns together (5 + 2Z): (y, ball centres (Z, 2) [m], steps).
-
-    Starts from the static ring solution with the balls solved there (`ball_positions`). Each step evaluates the Hertz constants
-    once at the current contact angles and holds them in the Jacobian, which leaves out their weak
-    angle dependence; the residuals are exact. The Jacobian is block-arrow: 5 JVP tangents give the
-    ring columns, and 2 tangents with the same unit on every ball give all 2×2 ball blocks and the
-    5×2 couplings of each ball (ball j's residual and its share of the ring residual depend on X_j
-    alone). The step follows by block elimination through the 5×5 Schur complement
-    S = J_yy − Σ_j J_yXj J_XjXj⁻¹ J_Xjy (Golub & Van Loan, Matrix Computations, §3.2); each ball's
-    step is limited to a tenth of its radius.
-    Stops when the ring step is below `RING_STEP_TOLERANCE` (1 + |y|) and every ball step below
-    `BALL_POSITION_TOLERANCE` D_w.
-    """
-    bearing, operating, model, unknown, _, _ = args
+    y, positions = unknowns
+    bearing, operating, model, table, unknown, _, _ = args
     count = bearing.ball_count
-    ball_tolerance = BALL_POSITION_TOLERANCE * bearing.ball_diameter
     tangents = (jnp.concatenate([jnp.eye(5), jnp.zeros((2, 5))]),
                 jnp.concatenate([jnp.zeros((5, count, 2)), jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2))]))
-
-    def step(carry):
-        y, positions, _, steps = carry
-        centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
-        constants = hertz_constants(bearing, *_contact_angles(centres, positions), model)
-        free = _free_ball_equations(bearing, operating, centres, model)
-        (_, ring, balls), linear = jax.linearize(lambda v, x: _speed_residual(v, x, args, constants, free),
-                                                 y, positions)
-        d_shares, d_ring, d_balls = jax.vmap(linear)(*tangents)
-        ring_ring = d_ring[:5].T  # (5, 5)
-        balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
-        ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
-        balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
-        solved = jnp.linalg.solve(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1))
-        schur = ring_ring - jnp.einsum("jab,jbc->ac", ring_balls, solved[..., 1:])
-        dy = _ring_step(schur, ring - jnp.einsum("jab,jb->a", ring_balls, solved[..., 0]))
-        dx = _limited_ball_step(bearing, solved[..., 0] - solved[..., 1:] @ dy)
-        size = jnp.maximum(jnp.max(jnp.abs(dy) / (1.0 + jnp.abs(y))),
-                           jnp.max(jnp.abs(dx)) * (RING_STEP_TOLERANCE / ball_tolerance))
-        return y - dy, positions - dx, size, steps + 1
-
-    start = ball_positions(_displacement(y, unknown, operating), bearing, operating, model)
-    y, positions, _, steps = jax.lax.while_loop(_ring_not_converged, step, (y, start, jnp.inf, 0))
-    return y, positions, steps
+    centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+    constants = hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
+    free = _free_ball_equations(bearing, operating, centres, model, table)
+    (_, ring, balls), linear = jax.linearize(lambda v, x: _speed_residual(v, x, args, constants, free), y, positions)
+    d_shares, d_ring, d_balls = jax.vmap(linear)(*tangents)
+    ring_ring = d_ring[:5].T  # (5, 5)
+    balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
+    ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
+    balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
+    solved = jnp.linalg.solve(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1))
+    schur = ring_ring - jnp.einsum("jab,jbc->ac", ring_balls, solved[..., 1:])
+    dy = _ring_step(schur, ring - jnp.einsum("jab,jb->a", ring_balls, solved[..., 0]))
+    return -dy, -(solved[..., 0] - solved[..., 1:] @ dy)
 
 
-def _ring_not_converged(carry):
-    size, steps = carry[-2:]
-    return (size > RING_STEP_TOLERANCE) & (steps < RING_MAX_STEPS)
+def _ring_solve(residual, start, args):
+    """Ring Newton from the static solution `start`: (y, (ball centres (Z, 2) [m] or None, steps)).
+
+    Without speed effects on the ring unknowns at the static split (`_static_step`); with them on
+    the ring and ball unknowns together (`_speed_step`), the balls first solved at the static
+    ring position (`ball_positions`), each ball's step limited to a tenth of its radius. Full
+    Newton steps (`newton`); stops when every ring step component is below `RING_STEP_TOLERANCE`
+    (1 + |y|) and every ball step below `BALL_POSITION_TOLERANCE` D_w.
+    """
+    bearing, operating, model, table, unknown, _, _ = args
+    options = dict(max_steps=RING_MAX_STEPS, loop="while", line_search=False)
+    if not model.speed_effects:
+        y, steps = newton(residual, start, args, linear_step=_static_step,
+                          step_tolerance=(RING_STEP_TOLERANCE, RING_STEP_TOLERANCE), **options)
+        return y, (None, steps.astype(y.dtype))  # custom_root's JVP rule takes floating aux only
+    positions = ball_positions(_displacement(start, unknown, operating), bearing, operating, model, table)
+    (y, positions), steps = newton(
+        None, (start, positions), args, linear_step=_speed_step,
+        limit=lambda step: (step[0], _limited_ball_step(bearing, step[1])),
+        step_tolerance=((RING_STEP_TOLERANCE, BALL_POSITION_TOLERANCE * bearing.ball_diameter),
+                        (RING_STEP_TOLERANCE, 0.0)), **options)
+    return y, (positions, steps.astype(y.dtype))
 
 
-def _tangent_solve(linear, rhs):
+def _least_squares_tangent_solve(linear, rhs):
     """Solves the linearised exact ring residual for the implicit derivative: its 5×5 Jacobian
     (`jax.jacfwd` of the linear map) by least squares, finite at a singular stiffness (pseudo-inverse)."""
     return jnp.linalg.lstsq(jax.jacfwd(linear)(rhs), rhs)[0]
@@ -645,28 +642,25 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     not resist) the adjoint uses a least-squares pseudo-inverse: finite, not a true derivative.
     """
     require_float64()
-    bearing = with_constant_table(bearing, model)
-    unknown, weight, load_scale = _scales(bearing, operating, model)
-    static_y, _, static_steps = minimise_convex(
-        _static_energy, jnp.zeros(5), (bearing, operating, free_contact_constant(bearing, model), unknown, load_scale),
+    table = constant_table(bearing, model)
+    unknown, weight, load_scale = _scales(bearing, operating, model, table)
+    static_y, static_steps = minimise_convex(
+        _static_energy, jnp.zeros(5),
+        (bearing, operating, free_contact_constant(bearing, model, table), unknown, load_scale),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     static_y = jax.lax.stop_gradient(static_y)
-    args = (bearing, operating, model, unknown, weight, load_scale)
-
-    def solve(_, start):
-        y, positions, steps = (_speed_newton if model.speed_effects else _static_newton)(start, args)
-        return y, (positions, steps.astype(y.dtype))  # custom_root's JVP rule takes floating aux only
-
+    args = (bearing, operating, model, table, unknown, weight, load_scale)
     # the exact ring residual defines the implicit derivative
-    y, (positions, steps) = jax.lax.custom_root(functools.partial(_ring_residual, args=args), static_y, solve,
-                                                _tangent_solve, has_aux=True)
+    y, (positions, steps) = implicit_root(_ring_residual, static_y, args, _ring_solve, _least_squares_tangent_solve,
+                                  has_aux=True)
     displacement = _displacement(y, unknown, operating)
     centres = inner_groove_centres(bearing, displacement)
-    if model.speed_effects:
-        positions = _equilibrium_balls(positions, displacement, bearing, operating, model)
-        state = ball_state(bearing, operating, centres, positions, model)
+    if model.speed_effects:  # the balls of the joint solve, with their implicit derivative
+        positions = _balls_in_equilibrium(positions, displacement, bearing, operating, model, table,
+                                          lambda residual, start, args: start)
+        state = ball_state(bearing, operating, centres, positions, model, table=table)
     else:
-        state = _static_state(bearing, operating, centres, model)
+        state = _static_state(bearing, operating, centres, model, table=table)
     force = _ring_force_of_state(bearing, state, model)
     ring_residual = jnp.max(jnp.abs(_scaled_ring_residual(force, y, args)))
     residual = ring_residual
@@ -686,14 +680,15 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):
     """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated (exact, jacfwd)."""
-    return jax.jacfwd(ring_force)(displacement, with_constant_table(bearing, model), operating, model)
+    return jax.jacfwd(ring_force)(displacement, bearing, operating, model, constant_table(bearing, model))
 
 
 class BallResults(eqx.Module):
-    """Per-ball results at a ring displacement (SI): azimuth ψ [rad]; per raceway the contact load
-    Q [N], contact angle α [rad], peak Hertz pressure p₀ [Pa] and semi-axes a, b [m]; orbital and
-    spin speeds [rad/s]; centrifugal force [N] and gyroscopic moment [N·m] (None where the model
-    leaves that effect out)."""
+    """Per-ball results at a displacement Δ, each (Z,) in SI: azimuth ψ [rad]; per contact (inner,
+    outer) the normal load Q [N], contact angle α [rad], Hertz peak pressure [Pa] and semi-axes a, b
+    [m] (a across rolling); orbital speed ω_m and spin speed ω_R [rad/s] (`kinematics.ball_speeds`);
+    centrifugal force F_c [N] and gyroscopic moment M_g [N·m], None where the model leaves that
+    effect out."""
 
     azimuth: jax.Array
     inner_load: jax.Array
@@ -712,19 +707,21 @@ class BallResults(eqx.Module):
     gyroscopic_moment: jax.Array | None
 
 
-def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> BallResults:
+def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()
+                 ) -> BallResults:
     """Per-ball loads, contact angles, Hertz contact sizes and pressures, kinematics at Δ (SI)."""
-    bearing = with_constant_table(bearing, model)
+    table = constant_table(bearing, model)
     centres = inner_groove_centres(bearing, displacement)
-    positions = equilibrium_positions(displacement, bearing, operating, model)
-    s = ball_state(bearing, operating, centres, positions, model)
+    positions = equilibrium_positions(displacement, bearing, operating, model, table)
+    state = ball_state(bearing, operating, centres, positions, model, table=table)
     modulus = ball_raceway_modulus(bearing)
-    sides = {}
-    for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)):
-        load, angle = s[f"{side}_load"], s[f"{side}_angle"]
-        contact = hertz.point_contact(load, *curvature(bearing, angle), modulus, model.hertz_method)
-        sides |= {f"{side}_load": load, f"{side}_contact_angle": angle, f"{side}_max_pressure": contact.max_pressure,
-                  f"{side}_semi_major_axis": contact.semi_major_axis, f"{side}_semi_minor_axis": contact.semi_minor_axis}
-    return BallResults(azimuth=ball_azimuths(bearing), orbital_speed=s["orbital_speed"], spin_speed=s["spin_speed"],
-                       centrifugal_force=s["centrifugal_force"] if model.centrifugal else None,
-                       gyroscopic_moment=s["gyroscopic_moment"] if model.gyroscopic else None, **sides)
+    inner, outer = (hertz.point_contact(state[f"{side}_load"], *curvature(bearing, state[f"{side}_angle"]), modulus,
+                                        model.hertz_method)
+                    for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)))
+    return BallResults(
+        ball_azimuths(bearing),
+        state["inner_load"], state["inner_angle"], inner.max_pressure, inner.semi_major_axis, inner.semi_minor_axis,
+        state["outer_load"], state["outer_angle"], outer.max_pressure, outer.semi_major_axis, outer.semi_minor_axis,
+        state["orbital_speed"], state["spin_speed"],
+        state["centrifugal_force"] if model.centrifugal else None,
+        state["gyroscopic_moment"] if model.gyroscopic else None)

@@ -30,9 +30,9 @@ the upper bound no full film forms (the crowned ends, where the gap exceeds the 
 Solver: Newton with a dense Jacobian, assembled as J = ∂F/∂u|_H + (∂F/∂H)·K from colored
 forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
-was 3× slower on 65 × 65); Armijo backtracking and a Levenberg–Marquardt fallback where the
-piecewise smooth equations stall it, the meniscus moving at most a cell per step; from the 1-D
-line solution (starved alike) extruded along the flat. Where that Newton fails (seed 003
+was 3× slower on 65 × 65); `newton` with Armijo backtracking and a Levenberg–Marquardt fallback
+where the piecewise smooth equations stall it, the meniscus moving at most a cell per step; from
+the 1-D line solution (starved alike) extruded along the flat. Where that Newton fails (seed 003
 starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with h < 0 at the end
 constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton again at 65, 80,
 90 and 100 % of the load (`LOAD_PATH`), the first stage from the 1-D start at its load, each next
@@ -40,7 +40,7 @@ from the previous solution. Starved, each stage first solves for the pressure an
 menisci held (Newton without the fallback, `HELD_MENISCUS_STEPS`), then releases them: from a
 start's pressure the flux through the columns is off, and menisci that move with it can end
 where Newton stalls (1.8 µm converged only with the held menisci). The dimensionless grid stays
-the full load's. Inside `lax.custom_root`, so the derivatives are implicit (checked against
+the full load's. Inside `newton.implicit_root`, so the derivatives are implicit (checked against
 central differences on 17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
 1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
@@ -60,12 +60,15 @@ from .hertz import line_contact
 from .influence import love_rectangle
 from .line_ehl import (INLET, OUTLET, FluidParameters, fischer_burmeister, line_film,
                        reynolds_coefficients)
+from .newton import implicit_root, newton
 from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
 HELD_MENISCUS_STEPS = 30  # starved load stages: Newton steps on pressure and H₀ with the menisci held
 NEWTON_STEPS = 60  # per load stage; seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
+SHORTEST_STEP = 1e-4  # the shortest step length the backtracking tries
+NEWTON_FLOOR = 1e-13  # ‖F‖₂ [-] below which Newton takes no step (round-off)
 LOAD_PATH = (0.65, 0.8, 0.9, 1.0)  # the load continuation's stages, fractions of the load
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
 
@@ -136,61 +139,6 @@ def half_domain_grid(grid) -> tuple[int, int]:
                          f"by symmetry): the finite-line EHL (dense Newton) needs nx ≥ 17, ny ≥ 15 and "
                          f"(nx − 2)·⌈ny/2⌉ ≤ {MAX_UNKNOWNS}, got {[nx, ny]} ((nx − 2)·⌈ny/2⌉ = {(nx - 2) * half}); "
                          f"e.g. [65, 129]") from None
-
-
-def _newton_with_fallback(function, jacobian_of, unknowns, steps: int, largest_change, fallback: bool = True):
-    """Damped Newton (Armijo backtracking on ½‖F‖², dense Jacobian) for a piecewise smooth F: where
-    the Newton direction gives no decrease (a kink of the complementarity or of the meniscus
-    switching nodes), Levenberg–Marquardt steps (JᵀJ + μ diag JᵀJ) d = −JᵀF with μ raised ×10
-    from 1e-6 until the merit falls (unless `fallback` is False); a step that lowers nothing is
-    not taken, and the iteration stops there. Every step is shortened so that no unknown
-    changes by more than `largest_change` (per unknown: the
-    meniscus positions move at most a cell per step, so that they do not jump into the
-    pressurized zone)."""
-
-    def limited(direction):
-        return direction * jnp.minimum(1.0, jnp.min(largest_change / (jnp.abs(direction) + 1e-300)))
-
-    def merit(point):
-        return 0.5 * jnp.sum(function(point) ** 2)
-
-    def improve(current, residual, start):
-        jacobian = jacobian_of(current)
-
-        def too_long(length):
-            return (~(merit(current + length * newton_direction) <= (1.0 - 1e-4 * length) * start)) & (length > 1e-4)
-
-        newton_direction = limited(jnp.linalg.solve(jacobian, -residual))
-        length = jax.lax.while_loop(too_long, lambda length: 0.5 * length, 1.0)
-        newton_point = current + length * newton_direction
-
-        def levenberg_marquardt(_):
-            normal = jacobian.T @ jacobian
-            gradient = jacobian.T @ residual
-            scale = jnp.diag(normal) + 1e-12
-
-            def trial(damping):
-                return current - limited(jnp.linalg.solve(normal + damping * jnp.diag(scale), gradient))
-
-            def no_decrease(damping):
-                return (~(merit(trial(damping)) < start)) & (damping < 1e6)
-
-            damping = jax.lax.while_loop(no_decrease, lambda damping: 10.0 * damping, 1e-6)
-            return trial(damping)
-
-        candidate = (jax.lax.cond(merit(newton_point) < start, lambda _: newton_point, levenberg_marquardt, None)
-                     if fallback else newton_point)
-        return jnp.where(merit(candidate) < start, candidate, current)
-
-    def step(state, _):  # no work once the residual is at round-off or a step has lowered nothing
-        current, moving = state
-        residual = function(current)
-        start = 0.5 * jnp.sum(residual**2)
-        busy = moving & (jnp.max(jnp.abs(residual)) > 1e-13)
-        following = jax.lax.cond(busy, improve, lambda current, *_: current, current, residual, start)
-        return (following, moving & ~(busy & jnp.all(following == current))), None
-
-    return jax.lax.scan(step, (unknowns, jnp.asarray(True)), None, length=steps)[0][0]
 
 
 def _box_complementarity(position, lower, upper, excess):
@@ -468,6 +416,9 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     # the meniscus positions move at most a cell per Newton step
     largest_change = jnp.concatenate([jnp.full((nx - 2) * ny + 1, jnp.inf), jnp.full(ny if starved else 0, spacing)])
 
+    def limited(step):
+        return step * jnp.minimum(1.0, jnp.min(largest_change / (jnp.abs(step) + 1e-300)))
+
     def error_and_solved(unknowns):
         """(largest residual [-], whether it is below the tolerance with a positive film)."""
         pressure, offset, _ = unpack(unknowns)
@@ -481,17 +432,17 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             return unknowns
         menisci = unknowns[interior + 1:]
 
-        def held(point):
+        def held(point, _):
             return residual(jnp.concatenate([point, menisci]), fraction)[:interior + 1]
 
-        def held_jacobian(point):
+        def held_jacobian(point, _):
             return jacobian(jnp.concatenate([point, menisci]))[:interior + 1, :interior + 1]
 
-        settled = _newton_with_fallback(held, held_jacobian, unknowns[:interior + 1], HELD_MENISCUS_STEPS,
-                                        jnp.full(interior + 1, jnp.inf), fallback=False)
+        settled, _ = newton(held, unknowns[:interior + 1], max_steps=HELD_MENISCUS_STEPS, jacobian=held_jacobian,
+                            shortest=SHORTEST_STEP, floor=NEWTON_FLOOR)
         return jnp.concatenate([settled, menisci])
 
-    def newton_then_continuation(_, guess):
+    def newton_then_continuation(_, guess, __):
         """Newton at the load from `guess`; where that fails, Newton again through the load stages
         `load_path`, each from the previous one's solution, the first from its own start (the
         1-D solve for it runs only then); starved, each load stage with the menisci held first."""
@@ -503,8 +454,9 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             if starved:
                 unknowns = jax.lax.cond(index > 0, lambda: with_menisci_held(unknowns, stage_loads[index]),
                                         lambda: unknowns)
-            return index + 1, _newton_with_fallback(lambda point: residual(point, stage_loads[index]), jacobian,
-                                                    unknowns, NEWTON_STEPS, largest_change)
+            return index + 1, newton(residual, unknowns, stage_loads[index], max_steps=NEWTON_STEPS,
+                                     jacobian=lambda point, _: jacobian(point), limit=limited, fallback=True,
+                                     shortest=SHORTEST_STEP, floor=NEWTON_FLOOR)[0]
 
         def more(state):
             index, unknowns = state
@@ -512,11 +464,10 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
 
         return jax.lax.while_loop(more, stage, (0, guess))[1]
 
-    solution = jax.lax.custom_root(
+    solution = implicit_root(
         residual, start_at(1.0) if start is None else unknowns_from(start.pressure / hertz_pressure, start.central,
-                                                                     start.meniscus / half_width),
-        solve=newton_then_continuation,
-        tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
+                                                                     start.meniscus / half_width), 1.0,
+        solve=newton_then_continuation)
     error, converged = error_and_solved(fixed(solution))
     pressure, offset, meniscus = unpack(solution)
     thickness = film(pressure, offset) * half_width**2 / radius

@@ -17,10 +17,12 @@ Discretization on N nodes over X ∈ [−4.5, 1.5]: second-order central Poiseui
 term upwind (second order, first order next to the inlet), P piecewise constant per node for the
 deflection (closed-form log integrals). Cavitation is the complementarity P ≥ 0, −L(P) ≥ 0,
 P·L = 0 (L the Reynolds residual), written as the Fischer–Burmeister equation
-P + s(−L) − √(P² + s²L²) = 0. Unknowns P₁ … P_{N−2} and H₀; Newton on all of them with a dense
-Jacobian (jacfwd) from a Hertz pressure and the Pan–Hamrock film; the last solve sits in
-`jax.lax.custom_root`, so the derivative of the converged film with respect to load, speed,
-viscosity and α costs one linear solve with the same Jacobian.
+P + s(−L) − √(P² + s²L²) = 0. Unknowns P₁ … P_{N−2} and H₀; damped Newton (`newton`, Armijo
+backtracking on ½‖F‖²; a step that lowers nothing, or gives NaN, is not taken, so the iterate
+stays finite) on all of them with a dense Jacobian (jacfwd) from a Hertz pressure and the
+Pan–Hamrock film; the last solve sits in `newton.implicit_root`, so the derivative of the
+converged film with respect to load, speed, viscosity and α costs one linear solve with the same
+Jacobian.
 """
 
 import equinox as eqx
@@ -29,6 +31,7 @@ import jax.numpy as jnp
 
 from .film_formulas import pan_hamrock_line
 from .hertz import line_contact
+from .newton import implicit_root, newton
 from .numerics import require_float64, safe_sqrt
 
 ROELANDS_PRESSURE = 1.96e8  # p_R [Pa]
@@ -146,28 +149,6 @@ def moes_load_parameter(load_per_length, radius, speed, viscosity, effective_mod
     return load_per_length / (effective_modulus * radius) / jnp.sqrt(2.0 * viscosity * speed / (effective_modulus * radius))
 
 
-def _damped_newton(function, unknowns, steps: int):
-    """Newton with Armijo backtracking on ½‖F‖² (dense Jacobian), a fixed number of steps; a
-    step that does not lower the merit (or gives NaN) is not taken, so the iterate stays finite."""
-
-    def merit(point):
-        return 0.5 * jnp.sum(function(point) ** 2)
-
-    def step(current, _):
-        residual = function(current)
-        direction = jnp.linalg.solve(jax.jacfwd(function)(current), -residual)
-        start = 0.5 * jnp.sum(residual**2)
-
-        def too_long(length):
-            return (~(merit(current + length * direction) <= (1.0 - 1e-4 * length) * start)) & (length > 1e-6)
-
-        length = jax.lax.while_loop(too_long, lambda length: 0.5 * length, 1.0)
-        trial = current + length * direction
-        return jnp.where((start > 1e-28) & (merit(trial) < start), trial, current), None
-
-    return jax.lax.scan(step, unknowns, None, length=steps)[0]
-
-
 def _problem(nodes: int, inlet, fluid: FluidParameters) -> _Problem:
     return _Problem(jnp.linspace(inlet, OUTLET, nodes), log_kernel(nodes), fluid)
 
@@ -181,6 +162,7 @@ COARSE_NODES = 129
 START_LOAD_PARAMETER = 10.0
 CONTINUATION_STAGES = 8
 FINAL_STEPS = 20
+NEWTON_FLOOR = 2**0.5 * 1e-14  # ‖F‖₂ [-] below which Newton takes no step (½‖F‖² ≤ 1e-28: round-off)
 # Starvation: the meniscus is searched for between the inlet and MENISCUS_LIMIT (Hertz
 # half-widths) in MENISCUS_STEPS Illinois steps on the coarse grid.
 MENISCUS_LIMIT = -0.5
@@ -237,7 +219,7 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     damped Newton from a Hertz pressure at M = 10, continued in 8 geometric steps of the Moes
     load parameter M to the case's (through the speed parameter λ ∝ M⁻²), on 65 nodes for
     M < 10 and on 129 nodes above; nested iteration, each finer grid started from the
-    interpolated coarser solution; last, Newton inside `lax.custom_root`, whose implicit
+    interpolated coarser solution; last, Newton inside `implicit_root`, whose implicit
     derivative is exact.
 
     Starvation (physics.md §7, "the inlet meniscus position as the unknown"): the pressure
@@ -277,7 +259,7 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         def stage(index, current):
             stage_problem = at_load_parameter(
                 problem, START_LOAD_PARAMETER * (load_parameter / START_LOAD_PARAMETER) ** (index / CONTINUATION_STAGES))
-            return _damped_newton(lambda y: _residual(y, stage_problem), current, 20)
+            return newton(_residual, current, stage_problem, max_steps=20, floor=NEWTON_FLOOR)[0]
 
         return jax.lax.fori_loop(1, CONTINUATION_STAGES + 1, stage, unknowns)
 
@@ -287,7 +269,7 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         def light_load():  # M < 10: the continuation on 65 nodes, then onto the coarse grid
             start = _problem(START_NODES, inlet, start_fluid)
             unknowns = _interpolate(continuation(start, hertz_start(start)), COARSE_NODES, inlet)
-            return _damped_newton(lambda y: _residual(y, coarse), unknowns, 12)
+            return newton(_residual, unknowns, coarse, max_steps=12, floor=NEWTON_FLOOR)[0]
 
         def heavy_load():  # M ≥ 10: the continuation on the coarse grid, where the contact is resolved
             return continuation(coarse, hertz_start(coarse))
@@ -332,11 +314,12 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
     while count < nodes:
         count = 2 * count - 1
         finer = _problem(count, meniscus, start_fluid)
-        unknowns = _damped_newton(lambda y: _residual(y, finer), _interpolate(unknowns, count, meniscus), 12)
+        unknowns = newton(_residual, _interpolate(unknowns, count, meniscus), finer, max_steps=12,
+                          floor=NEWTON_FLOOR)[0]
 
     fine = _problem(nodes, inlet, fluid)
 
-    def equations(state):  # discrete Reynolds and load balance; the flux balance fixes X_m
+    def equations(state, _):  # discrete Reynolds and load balance; the flux balance fixes X_m
         problem = eqx.tree_at(lambda p: p.nodes, fine, jnp.linspace(state[-1], OUTLET, nodes))
         if oil_layer is None:
             flux_balance = state[-1] - inlet
@@ -344,13 +327,13 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
             flux_balance = jnp.where(starved, _discrete_flux(state[:-1], problem) - supply, state[-1] - inlet)
         return jnp.append(_residual(state[:-1], problem), flux_balance)
 
-    # Final Newton on the fine grid inside lax.custom_root: its derivative is the implicit one,
+    # Final Newton on the fine grid inside `implicit_root`: its derivative is the implicit one,
     # −J⁻¹ ∂F/∂θ with the converged Jacobian (forward and reverse mode).
-    solution = jax.lax.custom_root(
-        equations, jax.lax.stop_gradient(jnp.append(unknowns, meniscus)),
-        solve=lambda function, guess: _damped_newton(function, guess, FINAL_STEPS),
-        tangent_solve=lambda linear, rhs: jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs))
-    residual = jnp.max(jnp.abs(equations(jax.lax.stop_gradient(solution))))
+    solution = implicit_root(
+        equations, jax.lax.stop_gradient(jnp.append(unknowns, meniscus)), None,
+        solve=lambda function, guess, args: newton(function, guess, args, max_steps=FINAL_STEPS,
+                                                   floor=NEWTON_FLOOR)[0])
+    residual = jnp.max(jnp.abs(equations(jax.lax.stop_gradient(solution), None)))
     problem = eqx.tree_at(lambda p: p.nodes, fine, jnp.linspace(solution[-1], OUTLET, nodes))
     pressure = jnp.pad(solution[:-2], 1)
     film = _film(pressure, solution[-2], problem) * half_width**2 / radius

@@ -144,9 +144,6 @@ class BallBearing(eqx.Module):
     bore: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
     outer_diameter: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
     dynamic_load_rating: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
-    # Internal: Chebyshev table of the Hertz constants over the contact angle, set by the solvers
-    # (ball_equilibrium.with_constant_table) from the fields above; None outside a solve.
-    contact_constant_table: object = None
 
     def __check_init__(self):
         if self.kind not in BALL_BEARING_KINDS:

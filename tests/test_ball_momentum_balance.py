@@ -19,10 +19,9 @@ import jax
 import numpy as np
 import pytest
 
-from diffbearing.ball_equilibrium import (BallModel, ball_azimuths, ball_state, contact_forces,
+from diffbearing.ball_equilibrium import (BallModel, ball_azimuths, ball_state, constant_table, contact_forces,
                                           equilibrium_positions, inner_groove_centres,
-                                          inner_groove_radius_of_centres, solve_equilibrium,
-                                          with_constant_table)
+                                          inner_groove_radius_of_centres, solve_equilibrium)
 from diffbearing.params import Operating, ball_bearing
 from diffbearing import build_model, load_scene
 
@@ -64,11 +63,11 @@ def solved_state():
 
         def run(bearing, operating):
             solution = solve_equilibrium(bearing, operating, model)
-            tabled = with_constant_table(bearing, model)
-            centres = inner_groove_centres(tabled, solution.displacement)
-            positions = equilibrium_positions(solution.displacement, tabled, operating, model)
-            state = ball_state(tabled, operating, centres, positions, model)
-            return solution, centres, positions, state, contact_forces(tabled, state, model)
+            table = constant_table(bearing, model)
+            centres = inner_groove_centres(bearing, solution.displacement)
+            positions = equilibrium_positions(solution.displacement, bearing, operating, model, table)
+            state = ball_state(bearing, operating, centres, positions, model, table=table)
+            return solution, centres, positions, state, contact_forces(bearing, state, model)
 
         return jax.jit(run)
 
@@ -192,10 +191,10 @@ def test_gyroscopic_moment_spreads_the_contact_angles_of_a_thrust_bearing(solved
 
     def angles(b, o):
         solution = solve_equilibrium(b, o, centrifugal_only)
-        tabled = with_constant_table(b, centrifugal_only)
-        centres = inner_groove_centres(tabled, solution.displacement)
-        positions = equilibrium_positions(solution.displacement, tabled, o, centrifugal_only)
-        return ball_state(tabled, o, centres, positions, centrifugal_only)
+        table = constant_table(b, centrifugal_only)
+        centres = inner_groove_centres(b, solution.displacement)
+        positions = equilibrium_positions(solution.displacement, b, o, centrifugal_only, table)
+        return ball_state(b, o, centres, positions, centrifugal_only, table=table)
 
     without = jax.jit(angles)(bearing, operating)
     assert float(with_gyro["inner_angle"][0]) > float(without["inner_angle"][0])

@@ -1,0 +1,199 @@
+"""One damped Newton for the models' nonlinear systems, and the implicit derivative of its root.
+
+`newton` solves F(y, args) = 0. Each step is the Newton step d = −J⁻¹F, from a dense Jacobian
+(`jacobian(y, args)`, by default `jax.jacfwd` of F; LU) or from the caller's
+`linear_step(y, args) → d` where J has a structure to exploit (the ball bearing's
+block-arrow Jacobian through its Schur complement, its balls' 2×2 blocks); `limit(d)` may shorten
+it (a largest change per unknown). Then, with `line_search`, globalised on the merit m = ½‖F‖²
+(Nocedal & Wright, Numerical Optimization, 2nd ed. 2006, §3.1 and §11.5): the length t is halved
+from 1 while m(y + td) > m(y) + c t s, with c = `ARMIJO` and s = −m(y), down to `shortest`, and
+the point is taken where it lowers the merit; with `fallback`, where the Newton point lowers
+nothing (a kink of a piecewise smooth F), Levenberg–Marquardt steps (JᵀJ + μ diag JᵀJ) d = −JᵀF
+(Moré, The Levenberg–Marquardt algorithm, 1978) with μ raised ×10 from 1e-6 until the merit
+falls. A step that lowers nothing is not taken, and the iteration stops there. Without
+`line_search`, full (limited) Newton steps.
+
+Minimising a smooth f is the same routine: its minimum is the root of F = ∇f, J is the Hessian,
+and with `objective` = f the merit is f itself, so the Armijo test above holds with the slope
+s = ∇f·d, and only a step that passes it is taken (Nocedal & Wright §3.1); where the predicted
+decrease −s is below what f's rounding resolves, 1e-12 (1 + |f|), the full step is taken.
+`minimise_convex` is that with the regularised Hessian of Ueda & Yamashita (2010).
+
+Stopping: `loop="scan"` runs `max_steps` steps (`lax.scan`; the steps after the iteration has
+stopped do no work), `loop="while"` stops early (`lax.while_loop`); both stop where ‖F‖₂ ≤ `floor`
+(line search) or, without line search, after a step with |d| ≤ a + r|y| in every component,
+(a, r) = `step_tolerance`.
+
+`implicit_root` differentiates a root by the implicit function theorem (`jax.lax.custom_root`).
+"""
+
+import jax
+import jax.numpy as jnp
+
+ARMIJO = 1e-4  # c of the sufficient-decrease test
+RESOLUTION = 1e-12  # relative rounding of an objective: a smaller predicted decrease is not tested
+REGULARIZATION = 1e-3  # c of μ = c‖∇f‖ in `minimise_convex`
+
+
+def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacobian=None, linear_step=None,
+           limit=None, line_search: bool = True, shortest: float = 1e-6, fallback: bool = False, objective=None,
+           floor=None, step_tolerance=None):
+    """Root of `function(y, args)` from `y0` by damped Newton (module docstring); returns (y, steps).
+
+    Args:
+        function: F(y, args), an array of y's size (with `objective`: ∇f); None with a
+            `linear_step` and no line search, which evaluate no residual of their own.
+        y0: the start; an array, or a pytree of arrays with `linear_step` and no line search.
+        max_steps: the most Newton steps (`loop="scan"`: exactly this many scan iterations).
+        loop: "scan" (fixed count) or "while" (stops early).
+        jacobian: J(y, args), dense; default `jax.jacfwd(function)`.
+        linear_step: (y, args) → d = −J⁻¹F, instead of the dense solve.
+        limit: d → d shortened (e.g. a largest change per unknown); applied to every step.
+        line_search: backtrack on the merit; False: full (limited) steps.
+        shortest: the shortest step length the backtracking tries.
+        fallback: Levenberg–Marquardt steps where the Newton point lowers nothing (dense J).
+        objective: f(y, args) when minimising f (the merit, its Armijo test with s = ∇f·d).
+        floor: line search: no step once ‖F‖₂ ≤ floor (None: none).
+        step_tolerance: without line search, (a, r) scalars or pytrees like y: stop after a step
+            with |d| ≤ a + r|y| in every component.
+
+    `steps` counts the steps taken or tried (an int array).
+    """
+    if loop not in ("scan", "while"):
+        raise ValueError(f"loop: 'scan' or 'while', got {loop!r}")
+    if jacobian is None and linear_step is None:
+        jacobian = jax.jacfwd(function)
+    if fallback and jacobian is None:
+        raise ValueError("fallback: Levenberg–Marquardt steps need the dense jacobian")
+    limited = (lambda d: d) if limit is None else limit
+
+    def newton_step(y, residual):  # (d, J): the limited Newton step, and the dense J it came from
+        if linear_step is not None:
+            return limited(linear_step(y, args)), None
+        matrix = jacobian(y, args)
+        return limited(jnp.linalg.solve(matrix, -residual)), matrix
+
+    if not line_search:
+        absolute, relative = (0.0, 0.0) if step_tolerance is None else step_tolerance
+
+        def like(value, y):  # a tolerance per leaf of y
+            return value if jax.tree.structure(value) == jax.tree.structure(y) else jax.tree.map(lambda _: value, y)
+
+        def full_step(state):
+            y, _, count = state
+            step, _ = newton_step(y, None if linear_step is not None else function(y, args))
+            small = jax.tree.map(lambda d, y, a, r: jnp.all(jnp.abs(d) <= a + r * jnp.abs(y)), step, y,
+                                 like(absolute, y), like(relative, y))
+            return jax.tree.map(jnp.add, y, step), jnp.all(jnp.stack(jax.tree.leaves(small))), count + 1
+
+        def busy(state):
+            return ~state[1]
+
+        return _iterate(full_step, busy, (y0, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
+
+    def evaluate(y):  # (merit, F)
+        residual = function(y, args)
+        return (0.5 * jnp.sum(residual**2) if objective is None else objective(y, args)), residual
+
+    def levenberg_marquardt(y, residual, start, matrix):
+        normal = matrix.T @ matrix
+        gradient = matrix.T @ residual
+        scale = jnp.diag(normal) + 1e-12
+
+        def trial(damping):
+            return y - limited(jnp.linalg.solve(normal + damping * jnp.diag(scale), gradient))
+
+        def no_decrease(search):
+            damping, merit, _ = search
+            return (~(merit < start)) & (damping < 1e6)
+
+        def raise_damping(search):
+            damping = 10.0 * search[0]
+            return (damping, *evaluate(trial(damping)))
+
+        damping, merit, following = jax.lax.while_loop(no_decrease, raise_damping, (1e-6, *evaluate(trial(1e-6))))
+        return trial(damping), merit, following
+
+    def damped_step(state):
+        y, residual, start, _, count = state
+        step, matrix = newton_step(y, residual)
+        if objective is None:
+            slope, resolved = -start, jnp.asarray(False)
+        else:
+            slope = jnp.dot(residual, step)
+            resolved = -slope <= RESOLUTION * (1.0 + jnp.abs(start))
+
+        def sufficient(length, merit):
+            return (merit <= start + ARMIJO * length * slope) | resolved
+
+        def keep_halving(search):
+            length, merit, _ = search
+            return ~sufficient(length, merit) & (length > shortest)
+
+        def halve(search):
+            length = 0.5 * search[0]
+            return (length, *evaluate(y + length * step))
+
+        length, merit, following = jax.lax.while_loop(keep_halving, halve, (1.0, *evaluate(y + step)))
+        point = y + length * step
+        if fallback:
+            point, merit, following = jax.lax.cond(merit < start, lambda: (point, merit, following),
+                                                   lambda: levenberg_marquardt(y, residual, start, matrix))
+        accepted = merit < start if objective is None else sufficient(length, merit)
+        return (jnp.where(accepted, point, y), jnp.where(accepted, following, residual),
+                jnp.where(accepted, merit, start), ~accepted, count + 1)
+
+    def busy(state):
+        _, residual, _, stopped, _ = state
+        return ~stopped if floor is None else ~stopped & (jnp.linalg.norm(residual) > floor)
+
+    start, residual = evaluate(y0)
+    return _iterate(damped_step, busy, (y0, residual, start, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
+
+
+def _iterate(step, busy, state, max_steps: int, loop: str):
+    """(y, steps) after `step` applied while `busy`, at most `max_steps` times."""
+    if loop == "while":
+        state = jax.lax.while_loop(lambda state: busy(state) & (state[-1] < max_steps), step, state)
+    else:
+        state = jax.lax.scan(lambda state, _: (jax.lax.cond(busy(state), step, lambda state: state, state), None),
+                             state, None, length=max_steps)[0]
+    return state[0], state[-1]
+
+
+def minimise_convex(function, y0, args, *, gradient_tolerance=1e-12, max_steps=200, shortest=0.5**40):
+    """Minimum of a smooth convex `function(y, args)` from `y0` (a small 1-D array in well-scaled
+    units, so that a unit step is a sensible trial); returns (y, steps).
+
+    Newton on ∇f with Armijo backtracking on f (module docstring), the Hessian regularised as
+    (H + μI) d = −∇f with μ = c‖∇f‖, c = `REGULARIZATION` (Ueda & Yamashita, Convergence properties
+    of the regularized Newton method for the unconstrained nonconvex optimization, 2010): globally
+    convergent for convex functions, quadratic near a non-degenerate minimum, and it needs no good
+    start: where the Hessian vanishes (a zero-clearance bearing at zero load) the step is steepest
+    descent. Stops at ‖∇f‖ ≤ `gradient_tolerance`, where no step along d lowers f enough, or
+    after `max_steps`.
+    """
+    gradient = jax.grad(function)
+
+    def regularised_hessian(y, args):  # H and ∇f from one forward pass over the gradient
+        hessian, slope = jax.jacfwd(lambda y: (g := gradient(y, args), g), has_aux=True)(y)
+        return hessian + REGULARIZATION * jnp.linalg.norm(slope) * jnp.eye(y.shape[0])
+
+    return newton(gradient, y0, args, max_steps=max_steps, loop="while", jacobian=regularised_hessian,
+                  objective=function, shortest=shortest, floor=gradient_tolerance)
+
+
+def dense_tangent_solve(linear, rhs):
+    """x with linear(x) = rhs, by LU of the dense matrix of the linear map (`jax.jacfwd`)."""
+    return jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs)
+
+
+def implicit_root(residual, guess, args, solve, tangent_solve=dense_tangent_solve, has_aux=False):
+    """The root y* of residual(y, args) = 0 that `solve(residual, guess, args)` finds, with its
+    implicit derivative dy* = −(∂F/∂y)⁻¹ (∂F/∂args) d args (implicit function theorem; forward and
+    reverse mode, and again for higher orders, by `jax.lax.custom_root`). The solve itself is
+    not differentiated, nor is the guess. `tangent_solve(linear, b)` solves the linearised
+    residual, linear(x) = b, at the root; by default dense (`dense_tangent_solve`).
+    With `has_aux`, `solve` returns (y*, aux) and aux carries no derivative."""
+    return jax.lax.custom_root(lambda y: residual(y, args), guess, lambda _, start: solve(residual, start, args),
+                               tangent_solve, has_aux=has_aux)
