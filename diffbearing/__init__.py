@@ -1,10 +1,16 @@
 """diffbearing: a differentiable rolling-bearing model in JAX (float64, SI units inside).
 
 Enable float64 before use: ``jax.config.update("jax_enable_x64", True)``.
+
+The physics blocks (pure functions of parameter pytrees) and the scene API (`load_scene`,
+`build_model`, `run_model`, `run_sweep`, `examples`) are re-exported here.
 """
+
+from importlib.metadata import version as _version
 
 from .ball_equilibrium import (
     BallModel as BallModel,
+    BallResults as BallResults,
     ball_results as ball_results,
     ring_force as ring_force,
     solve_equilibrium as solve_equilibrium,
@@ -14,6 +20,16 @@ from .cage_dynamics import CageOrbit as CageOrbit, DynamicsSettings as DynamicsS
 from .cage_forces import CageForces as CageForces, cage_forces as cage_forces, epicyclic_cage_speed as epicyclic_cage_speed
 from .cage_stability import CageStability as CageStability, cage_stability as cage_stability
 from .elliptic import complete_elliptic_integrals as complete_elliptic_integrals
+from .film_formulas import (
+    dowson_higginson_line_minimum as dowson_higginson_line_minimum,
+    film_parameter as film_parameter,
+    hamrock_dowson_point as hamrock_dowson_point,
+    moes_line_central as moes_line_central,
+    pan_hamrock_line as pan_hamrock_line,
+    starved_film as starved_film,
+)
+from .finite_line_ehl import FiniteLineFilm as FiniteLineFilm, finite_line_film as finite_line_film
+from .groove_chamfer import chamfer_height as chamfer_height, limit_point_angle as limit_point_angle
 from .hertz import (
     LineContact as LineContact,
     PointContact as PointContact,
@@ -32,11 +48,19 @@ from .life import (
     equivalent_dynamic_load as equivalent_dynamic_load,
     reference_rating_life as reference_rating_life,
 )
+from .line_ehl import (
+    LineFilm as LineFilm,
+    density_ratio as density_ratio,
+    line_film as line_film,
+    moes_load_parameter as moes_load_parameter,
+    viscosity_ratio as viscosity_ratio,
+)
 from .load_distribution import (
     load_zone_parameter as load_zone_parameter,
     sjovall_integrals as sjovall_integrals,
     stribeck_max_ball_load as stribeck_max_ball_load,
 )
+from .newton import implicit_root as implicit_root, minimise_convex as minimise_convex, newton as newton
 from .params import (
     BEARING_STEEL as BEARING_STEEL,
     SILICON_NITRIDE as SILICON_NITRIDE,
@@ -66,3 +90,5 @@ from .roller_profile import RollerProfile as RollerProfile, crown_drop as crown_
 from .app.model import build_model as build_model, run_model as run_model
 from .app.scene import examples as examples, load_scene as load_scene
 from .app.sweep import run_sweep as run_sweep
+
+__version__ = _version("diffbearing")
