@@ -1,6 +1,6 @@
 """Quasi-static 5-DOF ball bearing: load distribution, contact angles and stiffness at speed.
 
-Model (physics.md §2, seed 001; Jones 1960, Harris & Kotzalas vol. 2 ch. 3). The outer ring is
+Model (docs/theory.md §Ball equilibrium, the stiffness paper; Jones 1960, Harris & Kotzalas vol. 2 ch. 3). The outer ring is
 fixed; the inner ring moves by Δ = [δx, δy, δz, θx, θy] from the position where the rings are
 concentric and every ball just touches both raceways at the free contact angle α₀. In the plane of
 ball j (azimuth ψ_j from +x), with the outer groove curvature centre as origin, axial coordinate
@@ -51,7 +51,7 @@ moves the groove centre at azimuth ψ axially by R_i θx sin ψ. A deep-groove b
 other way takes a negative contact angle on the opposite shoulder; angular-contact bearings are
 modelled with the same full groove (their low shoulder is not a separate limit).
 
-Solution (physics.md §7): the ring problem starts from the static solution, found by minimising
+Solution (docs/theory.md §Numerical notes): the ring problem starts from the static solution, found by minimising
 the convex elastic energy Σ (2/5) K_n max(|A| − B D_w, 0)^{5/2} − F·Δ (no initial guess needed,
 zero stiffness at the start is fine; `newton.minimise_convex`). Newton (`newton.newton`, full
 steps) then adds the contact-angle dependence of the Hertz constants and the speed terms: without

@@ -1,7 +1,8 @@
 """Numerical EHL of a finite line contact (roller on raceway, 2-D), flooded or starved, by Newton.
 
-Seed 003 (physics.md §4): the gap h = h₀ + x²/2R + g(y) + v(x, y) with g the roller's axial
-profile drop and v the elastic deflection of both half-spaces; isothermal Newtonian Reynolds
+The starved-EHL paper (Bai & Liu, 2013; docs/theory.md §Finite line EHL): the gap
+h = h₀ + x²/2R + g(y) + v(x, y) with g the roller's axial profile drop and v the elastic
+deflection of both half-spaces; isothermal Newtonian Reynolds
 
     ∂X(ε ∂X P) + ∂Y(ε ∂Y P) − ∂X(ρ̄H) = 0,   ε = ρ̄H³/(η̄λ),
 
@@ -19,8 +20,8 @@ starved Newton near the flooded limit fails on it). Symmetry (no flux) at Y = 0,
 roller end.
 Cavitation: the Fischer–Burmeister complementarity of `line_ehl`, node by node.
 
-Starvation (physics.md §4 and §7): the mass-conserving θ-model written with its free boundary
-explicit. Each y cell has an inlet meniscus X_m,j (an unknown); upstream the oil layer rides on
+Starvation (docs/theory.md §Starvation and §Numerical notes): the mass-conserving θ-model
+written with its free boundary explicit. Each y cell has an inlet meniscus X_m,j (an unknown); upstream the oil layer rides on
 the surfaces (θh = h_oil, p = 0), downstream the film is full, and across the meniscus the mass
 flux is continuous: ρ̄h − (ρh³/12ηu) ∂p/∂x = h_oil. The meniscus cuts the grid between nodes; the
 discrete equations are made continuous in its position (`reynolds_from_meniscus`), and it is
@@ -32,17 +33,18 @@ forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
 was 3× slower on 65 × 65); `newton` with Armijo backtracking and a Levenberg–Marquardt fallback
 where the piecewise smooth equations stall it, the meniscus moving at most a cell per step; from
-the 1-D line solution (starved alike) extruded along the flat. Where that Newton fails (seed 003
-starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with h < 0 at the end
-constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton again at 65, 80,
+the 1-D line solution (starved alike) extruded along the flat. Where that Newton fails (the
+starved-EHL paper's roller starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it
+stalls with h < 0 at the end constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton again at 65, 80,
 90 and 100 % of the load (`LOAD_PATH`), the first stage from the 1-D start at its load, each next
 from the previous solution. Starved, each stage first solves for the pressure and H₀ with the
 menisci held (Newton without the fallback, `HELD_MENISCUS_STEPS`), then releases them: from a
 start's pressure the flux through the columns is off, and menisci that move with it can end
 where Newton stalls (1.8 µm converged only with the held menisci). The dimensionless grid stays
 the full load's. Inside `newton.implicit_root`, so the derivatives are implicit (checked against
-central differences on 17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS = 4200 on the half domain (65 × 65: one LU about
-1 s on 2 cores); measured times and films in `benchmarks/finite_line_ehl.py`. A scene's
+central differences on 17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS
+= 4200 on the half domain (65 × 65: one LU about 1 s on 2 cores); measured times and films in
+`benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
 are solved (`half_domain_grid`). The discrete problem is not always unique at the roller end:
 1607 N on 65 × 65 converges to a minimum film of 0.273 µm through `LOAD_PATH` and, in a scratch
@@ -66,7 +68,7 @@ from .roller_profile import RollerProfile, crown_drop
 
 MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
 HELD_MENISCUS_STEPS = 30  # starved load stages: Newton steps on pressure and H₀ with the menisci held
-NEWTON_STEPS = 60  # per load stage; seed 003 at 1607 N starved needs 31–60 (the Levenberg–Marquardt steps are short)
+NEWTON_STEPS = 60  # per load stage; the starved-EHL paper's roller at 1607 N starved needs 31–60 (short L–M steps)
 SHORTEST_STEP = 1e-4  # the shortest step length the backtracking tries
 NEWTON_FLOOR = 1e-13  # ‖F‖₂ [-] below which Newton takes no step (round-off)
 LOAD_PATH = (0.65, 0.8, 0.9, 1.0)  # the load continuation's stages, fractions of the load
@@ -101,9 +103,9 @@ def axial_cells(count: int, flat_end, roller_end, clustering: float | None = Non
     y = f (`flat_end`), where the profile's curvature jumps and the end constriction of the film
     sits: uniform η ∈ [0, 1] mapped by y = f[1 + sinh(β(η − B))/sinh(βB)], with
     B = ln[(1 + (e^β − 1) f/e)/(1 + (e^−β − 1) f/e)]/(2β) so that y(1) = e (`roller_end`)
-    (Farrashkhalvat & Miles, Basic Structured Grid Generation, 2003, eqs. 4.90–4.91). Seed 003
-    (f = 6.35, e = 7.35 mm) with β = 8 on 64 cells: 0.012 mm at the flat's end, 0.75 mm at
-    mid-length, neighbours within 13 %. Measured against the default in
+    (Farrashkhalvat & Miles, Basic Structured Grid Generation, 2003, eqs. 4.90–4.91). The
+    starved-EHL paper's roller (f = 6.35, e = 7.35 mm) with β = 8 on 64 cells: 0.012 mm at the
+    flat's end, 0.75 mm at mid-length, neighbours within 13 %. Measured against the default in
     `benchmarks/finite_line_grid.py`."""
     if clustering is None:
         coarse = max(count // 4, 1)
@@ -241,16 +243,16 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             each stage with the menisci held first).
         start: a solution on the same grid (a flooded one has its menisci at the inlet) to start Newton from
             instead of the 1-D line solution: a continuation in any argument, taken in steps
-            small enough that each converges (seed 003 from 2.0 to 1.8 µm, 1028 N, 33 × 48: steps
-            of 0.02 µm, about 2 s each).
+            small enough that each converges (the starved-EHL paper's roller from 2.0 to 1.8 µm,
+            1028 N, 33 × 48: steps of 0.02 µm, about 2 s each).
         axial_clustering: None for the default cells along the roller, or β > 0 for cells clustered
-            at the flat's end by a smooth map (`axial_cells`; not yet the default: seed 003 near
-            the flooded limit, h_oil = 1.8 and 2.0 µm on 33 × 48, does not converge on it).
+            at the flat's end by a smooth map (`axial_cells`; not yet the default: the
+            starved-EHL paper's roller near the flooded limit, h_oil = 1.8 and 2.0 µm on 33 × 48, does not converge on it).
         side_inflow: the fraction in [0, 1] of the side inflow that each column's meniscus
             balance counts (below): 0, the default, is one meniscus per column fed by the oil
             layer alone; 1 conserves mass across the meniscus, side flow included. Not yet
             robust: at 1 the Newton from the 1-D start converges on 25 × 16 but fails on 33 × 48
-            clustered (seed 003 at 1028 and 1607 N, residual 0.75), which is reached by
+            clustered (the starved-EHL paper's roller at 1028 and 1607 N, residual 0.75), which is reached by
             continuation in this fraction with `start`, filling by hand each dry end column the
             side inflow must fill (`benchmarks/finite_line_side_flow.py`).
 
@@ -272,7 +274,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     faces F_x is taken on (weights w = clip(3 − s, 0, 1) in the cells s past the meniscus, so
     that the sum is continuous as it crosses a node): with γ = 1 the x-flux through the
     column's full film is the supply plus every side inflow upstream of where it is measured,
-    the discrete ∂X F_x = ∂Y(ε ∂Y P) of the Reynolds equation. On seed 003 (33 × 48 clustered,
+    the discrete ∂X F_x = ∂Y(ε ∂Y P) of the Reynolds equation. On the starved-EHL paper's roller (33 × 48 clustered,
     0.8 µm) γ = 1 leaves the central film and raises the end minimum by 9.6 % at 1028 N and 8.4 %
     at 1607 N: the side inflow fills end columns that had no full film.
     """

@@ -11,7 +11,7 @@ the Hertz half-width b = √(8wR/(πE')) and pressure p_h = E'b/(4R):
 
 with u the mean entrainment speed. Viscosity: Roelands η = η₀ exp{(ln η₀ + 9.67)[(1 + p/p_R)^z − 1]},
 p_R = 1.96e8 Pa, z = α p_R/(ln η₀ + 9.67), or Barus η = η₀ e^{αp}; density: Dowson–Higginson
-ρ/ρ₀ = 1 + 0.6e-9 p/(1 + 1.7e-9 p) or incompressible (physics.md §4).
+ρ/ρ₀ = 1 + 0.6e-9 p/(1 + 1.7e-9 p) or incompressible (docs/theory.md §Line EHL).
 
 Discretization on N nodes over X ∈ [−4.5, 1.5]: second-order central Poiseuille term, the wedge
 term upwind (second order, first order next to the inlet), P piecewise constant per node for the
@@ -35,7 +35,7 @@ from .newton import implicit_root, newton
 from .numerics import require_float64, safe_sqrt
 
 ROELANDS_PRESSURE = 1.96e8  # p_R [Pa]
-INLET, OUTLET = -4.5, 1.5  # default domain in Hertz half-widths (seed 003's)
+INLET, OUTLET = -4.5, 1.5  # default domain in Hertz half-widths (the starved-EHL paper's)
 
 
 class LineFilm(eqx.Module):
@@ -212,17 +212,17 @@ def line_film(load_per_length, radius, speed, viscosity, pressure_viscosity, eff
         oil_layer: inlet oil supply layer h_oil [m] (both surfaces together, at ambient density),
             or None for fully flooded.
         inlet: where the domain (and a flooded inlet) starts [Hertz half-widths] < −1; the
-            outlet is at 1.5. Seed 003's −4.5 is the default; at Moes M ≈ 2 it is short enough
+            outlet is at 1.5. The starved-EHL paper's −4.5 is the default; at Moes M ≈ 2 it is short enough
             to starve the film by about 6 % (`benchmarks/line_ehl.py` shows the inlet study).
 
-    Start (physics.md §7: a plain Newton from a Hertz start diverges at low and high loads):
+    Start (docs/theory.md §Numerical notes: a plain Newton from a Hertz start diverges at low and high loads):
     damped Newton from a Hertz pressure at M = 10, continued in 8 geometric steps of the Moes
     load parameter M to the case's (through the speed parameter λ ∝ M⁻²), on 65 nodes for
     M < 10 and on 129 nodes above; nested iteration, each finer grid started from the
     interpolated coarser solution; last, Newton inside `implicit_root`, whose implicit
     derivative is exact.
 
-    Starvation (physics.md §7, "the inlet meniscus position as the unknown"): the pressure
+    Starvation (docs/theory.md §Numerical notes, "the inlet meniscus position as the unknown"): the pressure
     builds up from a meniscus X_m, where the oil layer fills the gap; by mass conservation in
     steady pure rolling the flux through the contact ρ̄h − (ρh³/12ηu) dp/dx equals the supplied
     u·h_oil. X_m is found on the 129-node grid by the Illinois method in [`inlet`, MENISCUS_LIMIT];

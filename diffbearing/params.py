@@ -74,7 +74,7 @@ class Material(eqx.Module):
 
 
 # AISI 52100 / GCr15 through-hardened bearing steel: E = 208 GPa, ν = 0.3 (handbook values lie at
-# 205–210 GPa; 208 GPa reproduces seed 002's a = 9.234 mm within 0.3 %), ρ = 7830 kg/m³.
+# 205–210 GPa; 208 GPa reproduces the 6411E chamfer paper's a = 9.234 mm within 0.3 %), ρ = 7830 kg/m³.
 BEARING_STEEL = Material(208e9, 0.3, 7830.0, name="bearing_steel")
 # Hot-isostatically pressed silicon nitride for hybrid bearings (typical catalogue values).
 SILICON_NITRIDE = Material(310e9, 0.26, 3200.0, name="silicon_nitride")
@@ -176,7 +176,8 @@ def groove_curvature_centre_distance(bearing: BallBearing):
 
 
 def radial_clearance(bearing: BallBearing):
-    """Diametral radial clearance G_r = 2 B D_w (1 − cos α₀) [m] (Harris & Kotzalas vol. 1, ch. 2; physics.md §3)."""
+    """Diametral radial clearance G_r = 2 B D_w (1 − cos α₀) [m] (Harris & Kotzalas vol. 1, ch. 2;
+    docs/theory.md §Groove geometry and clearance)."""
     return 2.0 * groove_curvature_centre_distance(bearing) * (1.0 - jnp.cos(bearing.free_contact_angle))
 
 
@@ -202,7 +203,7 @@ def ball_bearing(
 
     Give each groove as a ratio f = r/D_w or a radius r [m], and either the free contact angle
     α₀ [rad] or the diametral radial clearance G_r [m]; then cos α₀ = 1 − G_r/(2(f_i + f_o − 1)D_w)
-    (Harris & Kotzalas vol. 1, ch. 2; seed 002). Raises ValueError naming the offending parameter.
+    (Harris & Kotzalas vol. 1, ch. 2; the 6411E chamfer paper). Raises ValueError naming the offending parameter.
     """
     check_range("bearing.ball_diameter", ball_diameter, low=0.0, unit=" m")
     for side, ratio, radius in (("inner", inner_groove_ratio, inner_groove_radius),
@@ -259,7 +260,7 @@ class Operating(eqx.Module):
 
 CAGE_POCKETS = ("outer_lock", "cylindrical")
 
-# Short-carbon-fibre PEEK (PEEK-CF30, seed 000's cage): representative moduli of machined parts;
+# Short-carbon-fibre PEEK (PEEK-CF30, the cage paper's cage): representative moduli of machined parts;
 # the cage material only sets the ball–pocket Hertz stiffness, which hardly moves quasi-static forces.
 PEEK_CF30 = Material(13e9, 0.4, 1410.0, name="peek_cf30")
 

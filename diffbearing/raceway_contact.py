@@ -1,6 +1,6 @@
 """Ball–raceway contact geometry: curvature sums and Hertz constants of the two contacts.
 
-physics.md §1 (Harris & Kotzalas vol. 1, ch. 2), with γ = D_w cos α / d_m:
+docs/theory.md §Groove geometry and clearance (Harris & Kotzalas vol. 1, ch. 2), with γ = D_w cos α / d_m:
 
     inner: Σρ_i = (1/D_w)(4 − 1/f_i + 2γ/(1−γ)),  F_i = (1/f_i + 2γ/(1−γ)) / (4 − 1/f_i + 2γ/(1−γ))
     outer: Σρ_o = (1/D_w)(4 − 1/f_o − 2γ/(1+γ)),  F_o = (1/f_o − 2γ/(1+γ)) / (4 − 1/f_o − 2γ/(1+γ))

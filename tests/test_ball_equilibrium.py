@@ -1,4 +1,4 @@
-"""Quasi-static ball bearing: hard cases converge, stiffness is exact, seed numbers reproduced."""
+"""Quasi-static ball bearing: hard cases converge, stiffness is exact, the papers' numbers reproduced."""
 
 import jax
 import jax.numpy as jnp
@@ -15,7 +15,8 @@ SPEED = BallModel(centrifugal=True, gyroscopic=True)
 
 
 def deep_groove_6411E(radial_clearance=28e-6):
-    """Seed 002's 6411E (physics.md §3): re = 14.17 mm, ri = 13.9 mm, Dw = 26.9875 mm, Z = 7."""
+    """The 6411E chamfer paper's bearing (docs/papers.md §The 6411E chamfer paper):
+    re = 14.17 mm, ri = 13.9 mm, Dw = 26.9875 mm, Z = 7."""
     return ball_bearing(ball_diameter=26.9875e-3, pitch_diameter=97.5e-3, balls=7, kind="deep_groove_ball",
                         inner_groove_radius=13.9e-3, outer_groove_radius=14.17e-3, radial_clearance=radial_clearance)
 
@@ -91,8 +92,8 @@ def test_hard_cases_converge_with_finite_values_and_gradients(solve, gradient, n
         assert np.all(np.asarray(results.inner_contact_angle) < 0)
 
 
-def test_seed002_contact_angle_and_axial_shift(solve):
-    """6411E under Fa = 10 kN (physics.md §3): α′ = 18.10°, δa = 0.17 mm.
+def test_chamfer_paper_contact_angle_and_axial_shift(solve):
+    """6411E under Fa = 10 kN (docs/papers.md §The 6411E chamfer paper): α′ = 18.10°, δa = 0.17 mm.
 
     The paper iterated with tabulated Hertz coefficients ("within a few percent of α′"): 1 % on α′;
     δa is printed to two digits: ±0.01 mm. δa is the inner ring's axial shift from the
@@ -120,25 +121,25 @@ def test_radial_load_zero_clearance_matches_sjovall(solve):
 
 
 @pytest.fixture(scope="module")
-def seed001():
+def aero_bearing():
     return build_model(load_scene()).inputs
 
 
 @pytest.fixture(scope="module")
-def seed001_force():
+def aero_force():
     return jax.jit(lambda d, b, o: ring_force(d, b, o, SPEED))
 
 
 @pytest.mark.parametrize("speed_rpm", [0.0, 1500.0, 12000.0])
-def test_stiffness_matches_central_difference(solve, seed001, seed001_force, speed_rpm):
+def test_stiffness_matches_central_difference(solve, aero_bearing, aero_force, speed_rpm):
     """K = dF/dΔ from jacfwd through the implicit ball solve against a central difference of the
     solved model: relative 1e-5 on entries above 1e-3 of the largest in their block.
 
     Steps: 1e-8 m and 1e-8 m / R_i rad; the per-ball solve converges to 1e-13 D_w, whose noise
     (≈ 3e-15 m × 1e9 N/m) stays below 1e-6 of K at this step, and truncation is O(h²) ≈ 1e-8.
     """
-    bearing, operating = seed001["bearing"], Operating(speed_rpm * RPM, 0.0, seed001["operating"].force,
-                                                    seed001["operating"].moment)
+    bearing, operating = aero_bearing["bearing"], Operating(speed_rpm * RPM, 0.0, aero_bearing["operating"].force,
+                                                    aero_bearing["operating"].moment)
     solution, _, stiffness = solve(bearing, operating)
     assert bool(solution.converged)
     arm = 0.5 * float(bearing.pitch_diameter)
@@ -147,8 +148,8 @@ def test_stiffness_matches_central_difference(solve, seed001, seed001_force, spe
     for j in range(5):
         e = np.zeros(5)
         e[j] = steps[j]
-        plus = seed001_force(solution.displacement + e, bearing, operating)
-        minus = seed001_force(solution.displacement - e, bearing, operating)
+        plus = aero_force(solution.displacement + e, bearing, operating)
+        minus = aero_force(solution.displacement - e, bearing, operating)
         columns.append((np.asarray(plus) - np.asarray(minus)) / (2 * steps[j]))
     reference = np.stack(columns, axis=1)
     stiffness = np.asarray(stiffness)
@@ -168,14 +169,14 @@ def _block_asymmetry(k):
                np.abs(k[3:5, 3:5] - k[3:5, 3:5].T).max() / np.abs(k[3:5, 3:5]).max())
 
 
-def test_stiffness_symmetric_at_standstill_and_positive_definite(solve, seed001):
+def test_stiffness_symmetric_at_standstill_and_positive_definite(solve, aero_bearing):
     """At zero speed the force field is elastic, so K is symmetric. The Jones model evaluates the
     Hertz constant at the current contact angle, and K(α) δ^1.5 along the line of centres is not
     exactly a gradient: measured asymmetry 1.3e-5 of the block scale (bound 5e-5). With the
     constants frozen at α0 the field is the gradient of Σ (2/5) K δ^{5/2} and K is symmetric to
-    rounding. All 28 balls are loaded in seed 001, so K (its symmetric part) is positive definite."""
-    operating = Operating(0.0, 0.0, seed001["operating"].force, seed001["operating"].moment)
-    solution, results, stiffness = solve(seed001["bearing"], operating)
+    rounding. All 28 balls are loaded in the aero-engine bearing, so K (its symmetric part) is positive definite."""
+    operating = Operating(0.0, 0.0, aero_bearing["operating"].force, aero_bearing["operating"].moment)
+    solution, results, stiffness = solve(aero_bearing["bearing"], operating)
     assert np.all(np.asarray(results.inner_load) > 0)
     assert _block_asymmetry(stiffness) < 5e-5
     arm = np.diag([1, 1, 1, 1 / 0.126, 1 / 0.126])
@@ -183,22 +184,22 @@ def test_stiffness_symmetric_at_standstill_and_positive_definite(solve, seed001)
     assert np.all(np.linalg.eigvalsh(0.5 * (scaled + scaled.T)) > 0)
 
     fixed = BallModel(hertz_constants="free_contact_angle")
-    frozen = solve_equilibrium(seed001["bearing"], operating, fixed)
-    assert _block_asymmetry(stiffness_matrix(frozen.displacement, seed001["bearing"], operating, fixed)) < 1e-13
+    frozen = solve_equilibrium(aero_bearing["bearing"], operating, fixed)
+    assert _block_asymmetry(stiffness_matrix(frozen.displacement, aero_bearing["bearing"], operating, fixed)) < 1e-13
 
 
-def test_static_model_agrees_with_speed_model_at_standstill(seed001):
+def test_static_model_agrees_with_speed_model_at_standstill(aero_bearing):
     """With speed effects off, the closed-form static ball positions give the same solution."""
-    operating = Operating(0.0, 0.0, seed001["operating"].force, seed001["operating"].moment)
-    static = jax.jit(lambda b, o: solve_equilibrium(b, o, BallModel()))(seed001["bearing"], operating)
-    speed = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))(seed001["bearing"], operating)
+    operating = Operating(0.0, 0.0, aero_bearing["operating"].force, aero_bearing["operating"].moment)
+    static = jax.jit(lambda b, o: solve_equilibrium(b, o, BallModel()))(aero_bearing["bearing"], operating)
+    speed = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))(aero_bearing["bearing"], operating)
     np.testing.assert_allclose(static.displacement, speed.displacement, rtol=1e-9, atol=1e-15)
 
 
 @pytest.mark.parametrize("make", [deep_groove_6411E, lambda: build_model(load_scene()).inputs["bearing"]])
 def test_constant_table_reproduces_exact_hertz_constants(make):
     """The Chebyshev table of K_i(α), K_o(α) matches the exact solve to 1e-13 over −90°…90°
-    (D_w/d_m = 0.28 for the 6411E, 0.11 for seed 001), and so does its derivative (1e-9)."""
+    (D_w/d_m = 0.28 for the 6411E, 0.11 for the aero-engine bearing), and so does its derivative (1e-9)."""
     from diffbearing.raceway_contact import contact_constant_table, contact_constants, table_constants
 
     bearing = make()
@@ -269,23 +270,23 @@ def test_solution_gradient_matches_central_difference(solve, gradient):
 
 
 @pytest.mark.slow
-def test_stiffness_derivative_matches_central_difference(seed001):
+def test_stiffness_derivative_matches_central_difference(aero_bearing):
     """d K_zz/d f_i and d K_zz/d F_z at 12 000 r/min (second order: forward mode through the ring
     solve's implicit derivative and the stiffness' own implicit ball solve, as the stiffness-design
     notebook differentiates) against central differences of the solved model; relative steps 1e-6,
     tolerance 1e-5."""
     import equinox as eqx
 
-    operating = Operating(12000 * RPM, 0.0, seed001["operating"].force, seed001["operating"].moment)
+    operating = Operating(12000 * RPM, 0.0, aero_bearing["operating"].force, aero_bearing["operating"].moment)
 
     def axial_stiffness(parameters):
         inner_ratio, axial_force = parameters
-        bearing = eqx.tree_at(lambda b: b.inner_groove_ratio, seed001["bearing"], inner_ratio)
+        bearing = eqx.tree_at(lambda b: b.inner_groove_ratio, aero_bearing["bearing"], inner_ratio)
         loaded = eqx.tree_at(lambda o: o.force, operating, jnp.asarray(operating.force).at[2].set(axial_force))
         solution = solve_equilibrium(bearing, loaded, SPEED)
         return stiffness_matrix(solution.displacement, bearing, loaded, SPEED)[2, 2]
 
-    point = jnp.array([float(seed001["bearing"].inner_groove_ratio), float(operating.force[2])])
+    point = jnp.array([float(aero_bearing["bearing"].inner_groove_ratio), float(operating.force[2])])
     derivative = jax.jit(jax.jacfwd(axial_stiffness))(point)
     value = jax.jit(axial_stiffness)
     for k in range(2):

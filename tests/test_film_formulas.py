@@ -1,4 +1,4 @@
-"""Closed-form EHL film thickness (issue 5, fidelity "formula") and the ball-bearing film effect."""
+"""Closed-form EHL film thickness (fidelity "formula") and the ball-bearing film effect."""
 
 import json
 from pathlib import Path
@@ -13,28 +13,28 @@ from diffbearing.film_formulas import dowson_higginson_line_minimum, hamrock_dow
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 
-# Seed 003 (physics.md §4): roller radius 12.7 mm on an outer raceway of radius 66 mm, straight
-# length 12.7 mm, W = 1028 N, E' = 2.26e11 Pa, η0 = 0.08 Pa·s, α = 2.2e-8 1/Pa, inner ring at
+# The starved-EHL paper (docs/papers.md §The starved-EHL paper): roller radius 12.7 mm on an outer
+# raceway of radius 66 mm, straight length 12.7 mm, W = 1028 N, E' = 2.26e11 Pa, η0 = 0.08 Pa·s, α = 2.2e-8 1/Pa, inner ring at
 # 1000 r/min with the outer ring fixed: pitch diameter 106.6 mm, roller diameter 25.4 mm.
-SEED003 = dict(radius=1 / (1 / 12.7e-3 - 1 / 66e-3), viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
-SEED003_LOAD_PER_LENGTH = 1028.0 / 12.7e-3
+STARVED_EHL = dict(radius=1 / (1 / 12.7e-3 - 1 / 66e-3), viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
+STARVED_EHL_LOAD_PER_LENGTH = 1028.0 / 12.7e-3
 
 
-def seed003_entrainment_speed():
+def starved_ehl_entrainment_speed():
     """Pure rolling, outer ring fixed: u = (d_m/4)(1 − γ²) ω_i, γ = D/d_m (Harris & Kotzalas ch. 8)."""
     pitch, diameter, speed = 106.6e-3, 25.4e-3, 1000 * np.pi / 30
     return pitch / 4 * (1 - (diameter / pitch) ** 2) * speed
 
 
-def test_pan_hamrock_central_film_is_consistent_with_seed003():
-    """physics.md §4: the seed 003 paper's fully flooded central film is 1.207 µm (numerical), and
+def test_pan_hamrock_central_film_is_consistent_with_starved_ehl_paper():
+    """docs/papers.md §The starved-EHL paper: the starved-EHL paper's fully flooded central film is 1.207 µm (numerical), and
     the closed-form line formulas give about 1.2 µm; Pan–Hamrock within 5 %."""
-    central, minimum = pan_hamrock_line(SEED003_LOAD_PER_LENGTH, speed=seed003_entrainment_speed(), **SEED003)
+    central, minimum = pan_hamrock_line(STARVED_EHL_LOAD_PER_LENGTH, speed=starved_ehl_entrainment_speed(), **STARVED_EHL)
     assert float(central) == pytest.approx(1.207e-6, rel=0.05)
     assert float(minimum) < float(central)
     # Dowson–Higginson's minimum film agrees with Pan–Hamrock's within 20 % in this regime
-    assert float(dowson_higginson_line_minimum(SEED003_LOAD_PER_LENGTH, speed=seed003_entrainment_speed(),
-                                               **SEED003)) == pytest.approx(float(minimum), rel=0.2)
+    assert float(dowson_higginson_line_minimum(STARVED_EHL_LOAD_PER_LENGTH, speed=starved_ehl_entrainment_speed(),
+                                               **STARVED_EHL)) == pytest.approx(float(minimum), rel=0.2)
 
 
 def test_hamrock_dowson_exponents_and_ellipticity_factor():
@@ -58,7 +58,7 @@ def test_film_derivatives_match_central_differences(formula):
         if formula == "hamrock_dowson":
             out = hamrock_dowson_point(x[0] * 1e3, 6e-3, 5.0, x[1], x[2], 2e-8, 2.3e11)
         else:
-            out = pan_hamrock_line(x[0] * 1e3 / 12.7e-3, SEED003["radius"], x[1], x[2], 2.2e-8, 2.26e11)
+            out = pan_hamrock_line(x[0] * 1e3 / 12.7e-3, STARVED_EHL["radius"], x[1], x[2], 2.2e-8, 2.26e11)
         return jnp.stack(out) * 1e6
 
     point = jnp.array([1.028, 2.63, 0.08])
@@ -67,7 +67,7 @@ def test_film_derivatives_match_central_differences(formula):
 
 
 def test_ball_film_effect_reports_null_for_unloaded_balls(capsys, tmp_path):
-    """Seed 002's 6411E under a radial load leaves balls unloaded: their films are null in JSON;
+    """The 6411E chamfer paper's bearing under a radial load leaves balls unloaded: their films are null in JSON;
     loaded balls have h_min < h_c, and Λ = h_min/σ."""
     path = tmp_path / "film.json"
     code = cli.main(["run", example_scene("deep_groove_6411"), "--json", str(path),
@@ -110,36 +110,36 @@ def test_ball_film_grows_with_speed_and_needs_a_lubricant(capsys):
 
 from diffbearing.line_ehl import line_film, moes_load_parameter  # noqa: E402
 
-SEED003_LINE = dict(radius=SEED003["radius"], viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
+STARVED_EHL_LINE = dict(radius=STARVED_EHL["radius"], viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
 
 
 @pytest.fixture(scope="module")
-def seed003_line_films():
-    """Seed 003's flooded contact as a line contact (Roelands, Dowson–Higginson) at 129 … 513 nodes."""
-    speed = seed003_entrainment_speed()
-    return {nodes: jax.jit(lambda w: line_film(w, speed=speed, nodes=nodes, **SEED003_LINE))(SEED003_LOAD_PER_LENGTH)
+def starved_ehl_line_films():
+    """The starved-EHL paper's flooded contact as a line contact (Roelands, Dowson–Higginson) at 129 … 513 nodes."""
+    speed = starved_ehl_entrainment_speed()
+    return {nodes: jax.jit(lambda w: line_film(w, speed=speed, nodes=nodes, **STARVED_EHL_LINE))(STARVED_EHL_LOAD_PER_LENGTH)
             for nodes in (129, 257, 513)}
 
 
-def test_line_ehl_reproduces_seed003_flooded_central_film(seed003_line_films):
-    """physics.md §4: fully flooded central film 1.207 µm (seed 003, 2-D numerical); the 1-D line
-    contact at mid-length within 5 %, grid-converged to 0.5 % from 129 to 513 nodes, h_min < h_c;
-    the cavitated zone's pressure is zero to rounding (the Fischer–Burmeister equation)."""
-    finest = seed003_line_films[513]
+def test_line_ehl_reproduces_starved_ehl_paper_flooded_central_film(starved_ehl_line_films):
+    """docs/papers.md §The starved-EHL paper: fully flooded central film 1.207 µm (the starved-EHL
+    paper, 2-D numerical); the 1-D line contact at mid-length within 5 %, grid-converged to 0.5 %
+    from 129 to 513 nodes, h_min < h_c; the cavitated zone's pressure is zero to rounding (the Fischer–Burmeister equation)."""
+    finest = starved_ehl_line_films[513]
     assert bool(finest.converged)
     assert float(finest.central) == pytest.approx(1.207e-6, rel=0.05)
-    assert float(seed003_line_films[129].central) == pytest.approx(float(finest.central), rel=5e-3)
+    assert float(starved_ehl_line_films[129].central) == pytest.approx(float(finest.central), rel=5e-3)
     assert 0 < float(finest.minimum) < float(finest.central)
     pressure = np.asarray(finest.pressure)
     assert np.all(pressure >= -1e-12 * pressure.max()) and pressure.sum() * float(finest.x[1] - finest.x[0]) == pytest.approx(
-        SEED003_LOAD_PER_LENGTH, rel=1e-10)  # load balance is one of the equations
+        STARVED_EHL_LOAD_PER_LENGTH, rel=1e-10)  # load balance is one of the equations
 
 
 def test_line_ehl_derivatives_match_central_differences():
     """Implicit derivative (lax.custom_root) of central and minimum film with respect to load,
     speed, viscosity and α, forward and reverse, against central differences."""
     def films(x):  # (w [1e5 N/m], u [m/s], η0 [Pa·s], α [1e-8 1/Pa]) → (h_c, h_min) [µm]
-        result = line_film(x[0] * 1e5, SEED003["radius"], x[1], x[2], x[3] * 1e-8, 2.26e11, nodes=129)
+        result = line_film(x[0] * 1e5, STARVED_EHL["radius"], x[1], x[2], x[3] * 1e-8, 2.26e11, nodes=129)
         return jnp.stack([result.central, result.minimum]) * 1e6
 
     point = jnp.array([0.80945, 2.63, 0.08, 2.2])
@@ -154,11 +154,11 @@ def test_line_ehl_hard_cases_converge_or_say_so(load_factor, speed, nodes, conve
     """High load (Moes M ≈ 200) and very low speed (M ≈ 100), continued in M from 10: values and
     gradients are finite. At such M the 129-node grid is too coarse — its discrete solution has a
     negative film, and the result says it did not converge; 257 nodes give a positive film."""
-    load = SEED003_LOAD_PER_LENGTH * load_factor
-    assert float(moes_load_parameter(load, SEED003["radius"], speed, 0.08, 2.26e11)) > 100
+    load = STARVED_EHL_LOAD_PER_LENGTH * load_factor
+    assert float(moes_load_parameter(load, STARVED_EHL["radius"], speed, 0.08, 2.26e11)) > 100
 
     def central(w):
-        result = line_film(w, speed=speed, nodes=nodes, **SEED003_LINE)
+        result = line_film(w, speed=speed, nodes=nodes, **STARVED_EHL_LINE)
         return result.central, result
 
     (value, result), gradient = jax.jit(jax.value_and_grad(central, has_aux=True))(load)
@@ -168,8 +168,8 @@ def test_line_ehl_hard_cases_converge_or_say_so(load_factor, speed, nodes, conve
 
 
 @pytest.mark.parametrize("level, expected, tolerance", [("formula", 1.2389e-6, 1e-3), ("line", 1.207e-6, 0.05)])
-def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, level, expected, tolerance):
-    """`diffbearing run seed003 --set effects.film=...`: Pan–Hamrock (1.2389 µm, this formula's
+def test_starved_ehl_paper_flooded_and_starved_film_through_the_cli(capsys, tmp_path, level, expected, tolerance):
+    """`diffbearing run starved_roller --set effects.film=...`: Pan–Hamrock (1.2389 µm, this formula's
     value) and the numerical line contact against the paper's flooded 1.207 µm within 5 %. The
     scene's starvation (h_oil = 0.8 µm) gives a film below the supply over the density ratio
     (mass conservation: ρ̄h_c ≈ h_oil, ρ̄ = 1.10–1.15 in the Hertz zone) and Er > 1 %."""
@@ -181,7 +181,7 @@ def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, leve
     values = json.loads(path.read_text())
     film, starvation = values["film"], values["starvation"]
     assert film["central"] == pytest.approx(expected, rel=tolerance)
-    assert film["entrainment_speed"] == pytest.approx(seed003_entrainment_speed(), rel=1e-12)
+    assert film["entrainment_speed"] == pytest.approx(starved_ehl_entrainment_speed(), rel=1e-12)
     assert starvation["oil_layer"] == pytest.approx(0.8e-6, rel=1e-12)
     assert 0.8e-6 / 1.16 < starvation["central"] < 0.8e-6 / 1.10
     assert starvation["relative_error"] == pytest.approx(1 - starvation["central"] / film["central"], rel=1e-12)
@@ -191,8 +191,9 @@ def test_seed003_flooded_and_starved_film_through_the_cli(capsys, tmp_path, leve
 
 
 @pytest.mark.slow  # 56 s with a cold compilation cache (2 cores)
-def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path):
-    """Seed 003 at the finite line level on a 33 × 96 grid (48 cells on the half domain; physics.md §4, 1028 N,
+def test_starved_ehl_paper_finite_line_film_through_the_cli(capsys, tmp_path):
+    """The starved-EHL paper's roller at the finite line level on a 33 × 96 grid (48 cells on the half
+    domain; docs/papers.md §The starved-EHL paper, 1028 N,
     1000 r/min): the flooded central film within 5 % of the paper's 1.207 µm; the minimum at the
     end constriction, just past the flat's end (6.35 mm), for both films ("minimum sits at the
     roller ends"); starved by h_oil = 0.8 µm, the minimum film within 15 % of the paper's
@@ -219,10 +220,10 @@ def test_seed003_finite_line_film_through_the_cli(capsys, tmp_path):
     assert np.all(meniscus[y < 6.0e-3] < -1.2 * half_width) and np.all(meniscus[y > 6.6e-3] > 0)
 
 
-def seed003_default_grid_films(tmp_path, setting):
-    """(film, starvation) JSON tables of seed 003 through the CLI on the 33 × 96 grid with one more
+def starved_ehl_default_grid_films(tmp_path, setting):
+    """(film, starvation) JSON tables of the starved-EHL paper's roller through the CLI on the 33 × 96 grid with one more
     `--set`, after checking that the run exits 0 and both Newton solves converge."""
-    path = tmp_path / "seed003.json"
+    path = tmp_path / "starved_roller.json"
     assert cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[33, 96]",
                      "--set", setting, "--json", str(path)]) == 0
     values = json.loads(path.read_text())
@@ -233,30 +234,30 @@ def seed003_default_grid_films(tmp_path, setting):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("load, paper_minimum", [(1607.0, 0.215e-6), (2471.0, 0.159e-6)])
-def test_seed003_heavier_loads_through_the_cli(tmp_path, load, paper_minimum):
-    """Seed 003 starved by h_oil = 0.8 µm at the paper's two heavier loads on a 33 × 96 grid: both
+def test_starved_ehl_paper_heavier_loads_through_the_cli(tmp_path, load, paper_minimum):
+    """The starved-EHL paper's roller starved by h_oil = 0.8 µm at the paper's two heavier loads on a 33 × 96 grid: both
     Newton solves converge (at 2471 N through the load continuation), the starved minimum film is
-    within 15 % of the paper's (physics.md §4: 0.215 µm at 1607 N, 0.159 µm at 2471 N) and sits at
+    within 15 % of the paper's (docs/papers.md §The starved-EHL paper: 0.215 µm at 1607 N, 0.159 µm at 2471 N) and sits at
     the roller end, past the flat's end (6.35 mm). This agreement holds on this grid only: at
     1607 N the resolved end minimum is 0.281 µm, +31 % (`benchmarks/finite_line_grid.py`, cells
     clustered at the flat's end), and it agrees at the supply that the paper's own starvation
     criterion implies, 0.68 to 0.76 of the stated layer (`benchmarks/finite_line_supply.py`;
-    README, issue 5)."""
-    film, starvation = seed003_default_grid_films(tmp_path, f'contact.load="{load:.0f} N"')
+    docs/validation/lubricant_film.md §The supply the paper's numbers imply)."""
+    film, starvation = starved_ehl_default_grid_films(tmp_path, f'contact.load="{load:.0f} N"')
     assert starvation["minimum"] == pytest.approx(paper_minimum, rel=0.15)
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("oil_layer", [1.8, 2.0])
-def test_seed003_starvation_criterion_through_the_cli(tmp_path, oil_layer):
-    """Seed 003's starvation criterion on a 33 × 96 grid at 1028 N: at h_oil = 2.0 and 1.8 µm both
+def test_starved_ehl_paper_starvation_criterion_through_the_cli(tmp_path, oil_layer):
+    """The starved-EHL paper's starvation criterion on a 33 × 96 grid at 1028 N: at h_oil = 2.0 and 1.8 µm both
     solves converge, and Er < 1 %. The paper has Er < 1 % at 2.0 µm and > 1 % at 1.8 µm; by mass
     conservation the middle of the roller cannot starve while the supply exceeds the ρ̄h that its
     flooded film carries (1.33 µm here), so its columns stay flooded (their menisci on the domain
     inlet) and h_c is the flooded one. The crowned ends, where the film is thinnest, do starve:
     the starved minimum film lies below the flooded one."""
-    film, starvation = seed003_default_grid_films(tmp_path, f'operating.oil_layer="{oil_layer} um"')
+    film, starvation = starved_ehl_default_grid_films(tmp_path, f'operating.oil_layer="{oil_layer} um"')
     assert 0.0 <= starvation["relative_error"] < 0.01
     middle = np.array(starvation["y"]) < 3.0e-3
     assert np.all(np.array(starvation["meniscus"])[middle] == starvation["x"][0])
@@ -272,10 +273,10 @@ def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys):
 
 
 @pytest.mark.slow
-def test_seed003_as_published_through_the_cli(tmp_path):
+def test_starved_ehl_paper_as_published_through_the_cli(tmp_path):
     """The public scene as written (grid [65, 129]: 65 × 65 on the half domain, 1028 N,
     h_oil = 0.8 µm): both Newton solves converge; the flooded central film within 5 % of the
-    paper's 1.207 µm and the starved minimum within 15 % of its 0.319 µm (physics.md §4), at the
+    paper's 1.207 µm and the starved minimum within 15 % of its 0.319 µm (docs/papers.md §The starved-EHL paper), at the
     roller end; Er > 1 % (starved at 0.8 µm)."""
     path = tmp_path / "published.json"
     assert cli.main(["run", example_scene("starved_roller"), "--json", str(path)]) == 0

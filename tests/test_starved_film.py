@@ -1,4 +1,4 @@
-"""Starved line-contact EHL from an inlet oil layer (issue 5) and the starvation and Moes formulas."""
+"""Starved line-contact EHL from an inlet oil layer and the starvation and Moes formulas."""
 
 import jax
 import jax.numpy as jnp
@@ -9,28 +9,28 @@ from diffbearing.film_formulas import moes_line_central, starved_film
 from diffbearing.line_ehl import density_ratio, line_film, moes_load_parameter
 
 from .helpers import assert_jvp_matches_central_difference
-from .test_film_formulas import SEED003_LINE, SEED003_LOAD_PER_LENGTH, seed003_entrainment_speed
+from .test_film_formulas import STARVED_EHL_LINE, STARVED_EHL_LOAD_PER_LENGTH, starved_ehl_entrainment_speed
 
 NODES = 129  # one compiled starved solver serves every test of this module
 
 
 @pytest.fixture(scope="module")
 def starved():
-    """Seed 003's contact at 129 nodes as a function of (oil layer [µm], speed factor)."""
-    speed = seed003_entrainment_speed()
+    """The starved-EHL paper's contact at 129 nodes as a function of (oil layer [µm], speed factor)."""
+    speed = starved_ehl_entrainment_speed()
 
     @jax.jit
     def solve(oil_layer, speed_factor):
-        return line_film(SEED003_LOAD_PER_LENGTH, speed=speed * speed_factor, nodes=NODES,
-                         oil_layer=oil_layer * 1e-6, **SEED003_LINE)
+        return line_film(STARVED_EHL_LOAD_PER_LENGTH, speed=speed * speed_factor, nodes=NODES,
+                         oil_layer=oil_layer * 1e-6, **STARVED_EHL_LINE)
 
     return solve
 
 
 @pytest.fixture(scope="module")
 def flooded():
-    return jax.jit(lambda: line_film(SEED003_LOAD_PER_LENGTH, speed=seed003_entrainment_speed(), nodes=NODES,
-                                     **SEED003_LINE))()
+    return jax.jit(lambda: line_film(STARVED_EHL_LOAD_PER_LENGTH, speed=starved_ehl_entrainment_speed(), nodes=NODES,
+                                     **STARVED_EHL_LINE))()
 
 
 def test_supply_above_the_flooded_flux_leaves_the_film_flooded(starved, flooded):
@@ -47,8 +47,8 @@ def test_supply_above_the_flooded_flux_leaves_the_film_flooded(starved, flooded)
 
 
 def test_starved_film_follows_the_supply_and_never_exceeds_it(starved, flooded):
-    """Seed 003's trends (physics.md §4): less oil → thinner film and a pressure build-up that
-    starts closer to the Hertz zone; more speed under starvation → the film approaches but never
+    """The starved-EHL paper's trends (docs/papers.md §The starved-EHL paper): less oil → thinner
+    film and a pressure build-up that starts closer to the Hertz zone; more speed under starvation → the film approaches but never
     exceeds the supply layer. Here h_oil = 0.8 µm, speeds ×1 and ×4."""
     films = [starved(layer, 1.0) for layer in (1.2, 0.8, 0.4)]
     assert all(bool(film.converged) for film in films)
@@ -75,7 +75,7 @@ def test_starved_film_derivatives_match_central_differences():
     """Implicit derivative (the meniscus joins the unknowns with the flux equation) of central and
     minimum film with respect to load, speed, viscosity and oil layer, forward and reverse."""
     def films(x):  # (w [1e5 N/m], u [m/s], η0 [Pa·s], h_oil [µm]) → (h_c, h_min) [µm]
-        result = line_film(x[0] * 1e5, SEED003_LINE["radius"], x[1], x[2], 2.2e-8, 2.26e11, nodes=NODES,
+        result = line_film(x[0] * 1e5, STARVED_EHL_LINE["radius"], x[1], x[2], 2.2e-8, 2.26e11, nodes=NODES,
                            oil_layer=x[3] * 1e-6)
         return jnp.stack([result.central, result.minimum]) * 1e6
 
@@ -99,7 +99,7 @@ def test_moes_formula_depends_on_m_and_l_only():
     """Moes' formula is H(M, L) with H = (h/R)(2U)^−½: scaling speed, viscosity, load, α and R so
     that M and L stay fixed scales h by R(2U)^½ exactly; the rigid–isoviscous limit (M ≪ 1,
     L → 0) tends to H = 3/M (Martin)."""
-    radius, speed, viscosity, alpha, modulus, load = SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, 8.1e4
+    radius, speed, viscosity, alpha, modulus, load = STARVED_EHL_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, 8.1e4
     film = moes_line_central(load, radius, speed, viscosity, alpha, modulus)
     # U ×4 (speed ×4): keep M = W'(2U)^−½ with load ×2 and L = G(2U)^¼ with α/√2
     scaled = moes_line_central(2 * load, radius, 4 * speed, viscosity, alpha / np.sqrt(2), modulus)
@@ -113,7 +113,7 @@ def test_formula_derivatives_match_central_differences():
     """Moes' central film (w, u, η₀, α) and Chevalier's starved film (h_ff, h_oil, ρ̄), forward and
     reverse, against central differences."""
     def films(x):  # (w [1e5 N/m], u [m/s], η₀ [Pa·s], α [1e-8 1/Pa], h_oil [µm]) → films [µm]
-        central = moes_line_central(x[0] * 1e5, SEED003_LINE["radius"], x[1], x[2], x[3] * 1e-8, 2.26e11)
+        central = moes_line_central(x[0] * 1e5, STARVED_EHL_LINE["radius"], x[1], x[2], x[3] * 1e-8, 2.26e11)
         return jnp.stack([central, starved_film(central, x[4] * 1e-6, 1.15, sharpness=20.0)]) * 1e6
 
     point = jnp.array([0.80945, 2.63, 0.08, 2.2, 1.3])
@@ -131,7 +131,7 @@ def test_finite_line_derivatives_match_central_differences():
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
     def films(x):  # (W [kN], u [m/s], η₀ [Pa·s]) → (h_c, h_min) [µm]
-        result = finite_line_film(x[0] * 1e3, SEED003_LINE["radius"], x[1], x[2], 2.2e-8, 2.26e11, profile, 14.7e-3,
+        result = finite_line_film(x[0] * 1e3, STARVED_EHL_LINE["radius"], x[1], x[2], 2.2e-8, 2.26e11, profile, 14.7e-3,
                                   12.7e-3, grid=(17, 16))
         return jnp.stack([result.central, result.minimum]) * 1e6
 
@@ -143,7 +143,7 @@ def test_finite_line_derivatives_match_central_differences():
 
 @pytest.fixture(scope="module")
 def starved_finite_line():
-    """Seed 003's starved 2-D film on a 25 × 16 grid: (W [kN], h_oil [µm], speed factor) →
+    """The starved-EHL paper's starved 2-D film on a 25 × 16 grid: (W [kN], h_oil [µm], speed factor) →
     (h_c [µm], h_min [µm], converged)."""
     from diffbearing.finite_line_ehl import finite_line_film
     from diffbearing.roller_profile import roller_profile
@@ -151,7 +151,7 @@ def starved_finite_line():
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
     def films(x):
-        result = finite_line_film(x[0] * 1e3, SEED003_LINE["radius"], seed003_entrainment_speed() * x[2], 0.08, 2.2e-8,
+        result = finite_line_film(x[0] * 1e3, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed() * x[2], 0.08, 2.2e-8,
                                   2.26e11, profile, 14.7e-3, 12.7e-3, grid=(25, 16), oil_layer=x[1] * 1e-6)
         return jnp.stack([result.central * 1e6, result.minimum * 1e6, result.converged.astype(float)])
 
@@ -177,8 +177,8 @@ def test_starved_finite_line_hard_cases_say_so_and_stay_finite(starved_finite_li
     0.12 µm (a tenth of the flooded film), and that load at 1/2000 of the speed (Moes M ≈ 225
     on the flat's length). Where Newton does not converge the result says so (converged = 0), and
     values and derivatives (load, oil layer, speed) are still finite numbers."""
-    load_per_length = SEED003_LOAD_PER_LENGTH * load / 1.028
-    moes_m = moes_load_parameter(load_per_length, SEED003_LINE["radius"], seed003_entrainment_speed() * speed_factor,
+    load_per_length = STARVED_EHL_LOAD_PER_LENGTH * load / 1.028
+    moes_m = moes_load_parameter(load_per_length, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed() * speed_factor,
                                  0.08, 2.26e11)
     assert float(moes_m) > (200 if speed_factor < 1 else 0)
     point = jnp.array([load, oil_layer, speed_factor])
@@ -210,7 +210,7 @@ def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_laye
 
     monkeypatch.setattr(finite_line_ehl, "newton", compare_then_solve)
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
-    jax.block_until_ready(finite_line_ehl.finite_line_film(1028.0, SEED003_LINE["radius"], seed003_entrainment_speed(),
+    jax.block_until_ready(finite_line_ehl.finite_line_film(1028.0, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(),
                                                            0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                                                            grid=(17, 9), oil_layer=oil_layer,
                                                            side_inflow=side_inflow))
@@ -226,7 +226,7 @@ def test_finite_line_load_path_outside_its_range_raises(load_path):
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     with pytest.raises(ValueError, match="load_path"):
-        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+        finite_line_film(1028.0, STARVED_EHL_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                          grid=(17, 16), load_path=load_path)
 
 
@@ -241,7 +241,7 @@ def test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivat
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
     def solve(oil_layer, start=None):  # oil layer [µm]
-        return finite_line_film(1028.0, SEED003_LINE["radius"], seed003_entrainment_speed(), 0.08, 2.2e-8, 2.26e11,
+        return finite_line_film(1028.0, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8, 2.26e11,
                                 profile, 14.7e-3, 12.7e-3, grid=(17, 16), oil_layer=oil_layer * 1e-6, start=start)
 
     cold = jax.jit(solve)(0.8)
@@ -256,13 +256,13 @@ def test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivat
     slope_warm = jax.grad(lambda h: solve(h, neighbour).minimum * 1e6)(0.8)
     assert float(slope_warm) == pytest.approx(float(slope_cold), rel=1e-8)
     with pytest.raises(ValueError, match="start"):
-        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+        finite_line_film(1028.0, STARVED_EHL_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                          grid=(17, 17), oil_layer=0.8e-6, start=cold)
 
 
 def test_clustered_axial_cells_span_the_half_roller_and_halve_on_refinement():
     """`axial_cells` with a clustering β (the sinh map of Farrashkhalvat & Miles 2003, eqs. 4.90–4.91)
-    on seed 003's half roller (flat end 6.35 mm, roller end 7.35 mm): the edges run from 0 to the
+    on the starved-EHL paper's half roller (flat end 6.35 mm, roller end 7.35 mm): the edges run from 0 to the
     roller end and increase; the smallest cell touches the flat's end; and one map serves every
     count, so every other edge of 2n cells is an edge of n cells (refining halves every cell)."""
     from diffbearing.finite_line_ehl import axial_cells
@@ -285,7 +285,7 @@ def test_finite_line_axial_clustering_outside_its_range_raises(clustering):
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     with pytest.raises(ValueError, match="axial_clustering"):
-        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+        finite_line_film(1028.0, STARVED_EHL_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                          grid=(17, 16), axial_clustering=clustering)
 
 
@@ -298,14 +298,14 @@ def test_finite_line_side_inflow_outside_its_range_raises(side_inflow):
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     with pytest.raises(ValueError, match="side_inflow"):
-        finite_line_film(1028.0, SEED003_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
+        finite_line_film(1028.0, STARVED_EHL_LINE["radius"], 2.63, 0.08, 2.2e-8, 2.26e11, profile, 14.7e-3, 12.7e-3,
                          grid=(17, 16), oil_layer=0.8e-6, side_inflow=side_inflow)
 
 
 @pytest.mark.slow
 def test_mass_conserving_meniscus_balance_keeps_mid_length_and_its_derivatives_are_implicit():
     """With the side inflow counted in full (side_inflow = 1, mass conserving across the meniscus),
-    seed 003 starved at 0.8 µm on 25 × 16 converges from the 1-D start; the central film at
+    the starved-EHL paper's roller starved at 0.8 µm on 25 × 16 converges from the 1-D start; the central film at
     mid-length, where side flow is nil on a 14.7 mm roller with b = 0.12 mm, equals the column
     model's to 0.01 %; the derivatives of central and minimum film with respect to load and oil
     layer match central differences, forward and reverse."""
@@ -315,7 +315,7 @@ def test_mass_conserving_meniscus_balance_keeps_mid_length_and_its_derivatives_a
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
     def films(x, side_inflow=1.0):  # load [kN], oil layer [µm] → central, minimum [µm], converged
-        result = finite_line_film(x[0] * 1e3, SEED003_LINE["radius"], seed003_entrainment_speed(), 0.08, 2.2e-8,
+        result = finite_line_film(x[0] * 1e3, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8,
                                   2.26e11, profile, 14.7e-3, 12.7e-3, grid=(25, 16), oil_layer=x[1] * 1e-6,
                                   side_inflow=side_inflow)
         return jnp.stack([result.central * 1e6, result.minimum * 1e6, result.converged.astype(float)])
