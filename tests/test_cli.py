@@ -9,7 +9,7 @@ import sys
 import numpy as np
 import pytest
 
-from diffbearing.app import cli, registry
+from diffbearing.app import cli, registry, stored_models
 from diffbearing import build_model, load_scene, run_model
 
 from .helpers import BEARING_6411E, example_scene
@@ -119,6 +119,7 @@ def test_effects_not_named_are_never_traced(monkeypatch):
     blocks = tuple(dataclasses.replace(b, compute=spy) if b is real else b for b in ball.blocks)
     monkeypatch.setitem(registry.ADAPTERS, "ball", dataclasses.replace(ball, blocks=blocks))
     monkeypatch.setattr(registry, "_COMPILED", {})  # no compiled model from an earlier test
+    monkeypatch.setattr(stored_models, "_folder", lambda: None)  # nor one stored on disk
     off = run_model(build_model(load_scene(overrides=["effects.stiffness=false"])))
     assert calls == [] and "stiffness" not in off.values
     on = run_model(build_model(load_scene(overrides=["effects.stiffness=true"])))
@@ -280,3 +281,13 @@ def test_persistent_compilation_cache_folder(monkeypatch, tmp_path):
     assert cli.compilation_cache_folder() is None
     monkeypatch.delenv("DIFFBEARING_CACHE")
     assert cli.compilation_cache_folder().endswith(".cache/diffbearing/jax")
+
+
+def test_a_setting_of_another_level_is_a_warning(capsys, tmp_path):
+    """The starved-roller example's grid belongs to the finite line level: switched to the film
+    formula by --set, the run goes on and the report says the grid is not used."""
+    path = tmp_path / "formula.json"
+    code, out, err = run_cli(capsys, "run", "starved_roller", "--set", 'effects.film="formula"', "--json", str(path))
+    assert code == 0, err
+    warning = "fidelity.grid is not used by this scene's effects"
+    assert warning in out and any(warning in line for line in json.loads(path.read_text())["warnings"])

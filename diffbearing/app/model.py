@@ -2,7 +2,9 @@
 
 `build_model(scene)` → `Model`; `run_model(model)` compiles and runs it, timing both (a scene
 with a [sweep] table runs as one batch, see sweep.py). Every scene key must be read by what the
-scene runs: a key no block reads is refused (ValueError naming it), never silently ignored.
+scene runs: a key no block reads is refused (ValueError naming it), never silently ignored; a
+fidelity setting that only another level of the same effect reads (a grid kept while the film
+level is switched by --set) is reported as a warning.
 """
 
 import dataclasses
@@ -67,6 +69,7 @@ class Model:
     settings: dict
     not_implemented: list
     sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a [sweep] table
+    idle_settings: list = dataclasses.field(default_factory=list)  # fidelity keys only another level reads
 
     @property
     def outputs(self) -> dict:
@@ -81,20 +84,23 @@ class Model:
         return build_inputs(self.scene.bearing_type, self.blocks, values)
 
 
-def _unread(scene: Scene, blocks, asked: set, axes: dict) -> list[str]:
-    """Scene keys (and swept keys) that nothing the scene runs reads."""
+def _unread(scene: Scene, blocks, asked: set, axes: dict) -> tuple[list[str], list[str]]:
+    """(scene and swept keys that nothing the scene runs reads, fidelity keys that only a block of
+    another effect level of this bearing type reads: a setting kept for when the level changes)."""
     keys = registry.all_keys()
     running = {block.name for block in blocks}
-    unread = []
-    for key in list(scene.values) + list(axes):
+    of_type = {block.name for adapter in registry.adapters_for(scene.bearing_type) for block in adapter.blocks}
+    unread, idle = [], []
+    for key in dict.fromkeys(list(scene.values) + list(axes)):
         if key in _SETTINGS or key.startswith("effects."):
             continue
         if key.startswith("fidelity."):
-            if not running & set(keys[key].read_by):
-                unread.append(key)
+            readers = set(keys[key].read_by)
+            if not running & readers:
+                (idle if of_type & readers else unread).append(key)
         elif key not in asked:
             unread.append(key)
-    return list(dict.fromkeys(unread))
+    return unread, idle
 
 
 def build_model(scene: Scene) -> Model:
@@ -108,7 +114,7 @@ def build_model(scene: Scene) -> Model:
     for block in blocks:
         if block.validate is not None:
             block.validate(settings, inputs)  # bad grid or tolerance fails here, before compiling
-    unread = _unread(scene, blocks, values.asked, axes)
+    unread, idle = _unread(scene, blocks, values.asked, axes)
     if unread:
         effects = ", ".join(f"{k} = {v!r}" for k, v in settings["effects"].items()) or "none"
         raise ValueError(f"scene key{'s' if len(unread) > 1 else ''} {', '.join(repr(k) for k in unread)} "
@@ -116,7 +122,7 @@ def build_model(scene: Scene) -> Model:
                          f"{'them' if len(unread) > 1 else 'it'} or switch on the effect that reads "
                          f"{'them' if len(unread) > 1 else 'it'}")
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,
-                 sweep_axes=axes)
+                 sweep_axes=axes, idle_settings=idle)
 
 
 def run_model(model: Model, progress: bool = True) -> RunResult:

@@ -20,4 +20,7 @@ class RunResult:
     def problems(self) -> tuple[list[str], list[str]]:
         """(errors, warnings) of the blocks' checks, one line each (a sweep's name their point)."""
         shape = tuple(len(values) for values in self.sweep_axes.values())
-        return problems(self.model.blocks, self.values, shape)
+        errors, warnings = problems(self.model.blocks, self.values, shape)
+        idle = [f"{key} is not used by this scene's effects (another level of the effect reads it)"
+                for key in self.model.idle_settings]
+        return errors, idle + warnings
