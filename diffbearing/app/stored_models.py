@@ -6,7 +6,9 @@ model is stored with `jax.export` beside that cache, under a key of the blocks, 
 inputs' structure, shapes and dtypes, the JAX version and a digest of diffbearing's source (so an
 edit of the code invalidates it); the next process deserializes it and gets the executable from
 the persistent cache. Without a compilation cache folder (`jax_compilation_cache_dir` unset, as in
-a notebook that does not set it) nothing is stored.
+a notebook that does not set it) nothing is stored, nor is a model whose lowering holds host
+callbacks (`jax.export` cannot serialize them: the cage dynamics' diffrax integration), which is
+traced anew in each process.
 """
 
 import functools
@@ -50,7 +52,10 @@ def compile_stored(function, inputs, key: str):
     if path.is_file():
         exported = export.deserialize(bytearray(path.read_bytes()))
     else:
-        exported = export.export(jax.jit(flat))(*leaves)
+        try:
+            exported = export.export(jax.jit(flat))(*leaves)
+        except NotImplementedError:  # host callbacks (diffrax's cage dynamics) cannot be serialized
+            return jax.jit(function).lower(inputs).compile()
         folder.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=folder, suffix=".partial", delete=False) as temporary:
             temporary.write(exported.serialize())
