@@ -315,7 +315,7 @@ def test_ball_film_derivatives_match_central_differences():
     assert loaded.any() and not loaded.all()
 
     def films(x):  # (inner speed [1000 rad/s], viscosity [Pa·s]) → loaded balls' films [µm]
-        inputs = eqx.tree_at(lambda i: (i.operating.inner_speed, i.lubricant.viscosity), model.inputs,
+        inputs = eqx.tree_at(lambda i: (i["operating"].inner_speed, i["lubricant"].viscosity), model.inputs,
                              (x[0] * 1e3, x[1]))
         out = run(inputs)
         return jnp.concatenate([out[f"film.{side}.{kind}"][loaded] for side in ("inner", "outer")
@@ -327,7 +327,7 @@ def test_ball_film_derivatives_match_central_differences():
         assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-5)
 
     def all_films(x):
-        inputs = eqx.tree_at(lambda i: i.operating.inner_speed, model.inputs, x)
+        inputs = eqx.tree_at(lambda i: i["operating"].inner_speed, model.inputs, x)
         return jnp.nansum(run(inputs)["film.inner.minimum"])
 
     assert np.isfinite(float(jax.jit(jax.grad(all_films))(model.inputs["operating"].inner_speed)))
