@@ -291,3 +291,12 @@ def test_a_setting_of_another_level_is_a_warning(capsys, tmp_path):
     assert code == 0, err
     warning = "fidelity.grid is not used by this scene's effects"
     assert warning in out and any(warning in line for line in json.loads(path.read_text())["warnings"])
+
+
+def test_a_solver_that_does_not_converge_exits_3(capsys):
+    """A tolerance no conjugate-gradient run reaches (1e-300): the contact solve stops at its
+    iteration limit, the report says so, and the run ends with one line and exit code 3."""
+    code, out, err = run_cli(capsys, "run", "tapered_roller", "--set", "fidelity.tolerance=1e-300")
+    assert code == 3 and "DID NOT CONVERGE" in out
+    assert err.strip() == ("diffbearing: error: the roller contact solution (influence; or its loaded zone reached "
+                           "the grid's edge) did not converge (its outputs are the last iterate)")

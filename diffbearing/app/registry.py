@@ -208,6 +208,17 @@ def input_builders(bearing_type: str, names) -> list[InputBuilder]:
     return ordered
 
 
+def convergence_checks(*flags: tuple[str, str]):
+    """A block's `checks` from (output key of a converged flag, the solve it belongs to) pairs: an
+    error for each flag that is false."""
+
+    def checks(values: dict) -> tuple[list[str], list[str]]:
+        return [f"{solve} did not converge (its outputs are the last iterate)" for key, solve in flags
+                if not bool(values[key])], []
+
+    return checks
+
+
 def problems(blocks, values: dict, grid_shape: tuple[int, ...] = ()) -> tuple[list[str], list[str]]:
     """(errors, warnings) of the blocks' checks over every point of a run (`grid_shape` () for one point)."""
     errors, warnings = [], []

@@ -17,7 +17,7 @@ from ...cage_dynamics import simulate_cage
 from ...cage_forces import cage_forces, cage_offset, epicyclic_cage_speed, loaded_ball_count
 from ...cage_stability import cage_stability
 from ...params import BALL_BEARING_KINDS, CAGE_POCKETS, _as_float, _is_concrete, ball_cage, check_range
-from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_checks, quantity, register
 
 ORBIT_SAMPLES = 1024
 OFFSET_ANGLES = 72  # directions of the f_inv curve, every 5°
@@ -261,6 +261,8 @@ DYNAMICS = Block(
     ),
     compute=_cage_dynamics,
     plot=_orbit_plot,
+    checks=convergence_checks(("cage.orbit.converged", "the cage's time integration"),
+                              ("cage.stability.converged", "the cage's quasi-static equilibrium Newton")),
 )
 
 

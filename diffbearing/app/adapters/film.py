@@ -20,7 +20,7 @@ from ...params import BALL_BEARING_KINDS, _as_float, check_range
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
 from ...roller_geometry import ROLLER_KINDS, equivalent_radius, film_length, roller_modulus
 from ..formatting import column, state_column
-from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_checks, quantity, register
 
 DEFAULT_LINE_NODES = 513
 # The finite line level (film = "finite_line"): the 2-D EHL of the whole roller length, half
@@ -320,11 +320,13 @@ ADAPTER = register(Adapter(
                   Output("film.pressure", "Pa", "GPa", "film pressure p(x)", in_report=False),
                   Output("film.thickness", "m", "um", "film thickness h(x)", in_report=False),
               ),
-              compute=_film_line, validate=film_settings, plot=_line_film_plot),
+              compute=_film_line, validate=film_settings, plot=_line_film_plot,
+              checks=convergence_checks(("film.converged", "the line EHL Newton (fully flooded film)"))),
         Block(name="film_finite_line", sequential_sweep=True, bearing_types=ROLLER_KINDS,
               enabled_by=("film", "finite_line"), requires=("roller_geometry",), inputs=ROLLER_INPUTS,
               outputs=(*_ROLLER_FILM_COMMON, *_finite_line_outputs("film", "flooded")),
-              compute=_film_finite_line, validate=film_settings, plot=_finite_line_film_plot),
+              compute=_film_finite_line, validate=film_settings, plot=_finite_line_film_plot,
+              checks=convergence_checks(("film.converged", "the finite line EHL Newton (fully flooded film)"))),
         Block(name="starvation_formula", bearing_types=ROLLER_KINDS, enabled_by=("starvation", True),
               only_with=("film", ("formula",)), requires=("film_formula",), inputs=ROLLER_INPUTS + ("oil_layer",),
               outputs=_STARVATION_COMMON, compute=_starvation_formula),
@@ -339,7 +341,8 @@ ADAPTER = register(Adapter(
                   Output("starvation.pressure", "Pa", "GPa", "starved film pressure p(x)", in_report=False),
                   Output("starvation.thickness", "m", "um", "starved film thickness h(x)", in_report=False),
               ),
-              compute=_starvation_line, plot=_line_film_plot),
+              compute=_starvation_line, plot=_line_film_plot,
+              checks=convergence_checks(("starvation.converged", "the line EHL Newton (starved film)"))),
         Block(name="starvation_finite_line", sequential_sweep=True, bearing_types=ROLLER_KINDS,
               enabled_by=("starvation", True), only_with=("film", ("finite_line",)), requires=("film_finite_line",),
               inputs=ROLLER_INPUTS + ("oil_layer",),
@@ -349,7 +352,8 @@ ADAPTER = register(Adapter(
                          in_report=False),
                   *_finite_line_outputs("starvation", "starved"),
               ),
-              compute=_starvation_finite_line, plot=_finite_line_film_plot),
+              compute=_starvation_finite_line, plot=_finite_line_film_plot,
+              checks=convergence_checks(("starvation.converged", "the finite line EHL Newton (starved film)"))),
     ),
     report=_report,
     sweep_columns=_sweep_columns,

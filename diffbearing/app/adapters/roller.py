@@ -13,7 +13,7 @@ from ...roller_geometry import (ROLLER_KINDS, RollerLoading, equivalent_radius, 
                                 raceway_curvature, raceway_radius_of_pitch, roller_bearing, roller_modulus)
 from ...roller_profile import PROFILE_KINDS, profile_parameters, roller_profile, with_raceway_edge
 from ..formatting import column, state_column
-from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_checks, quantity, register
 from .materials import material
 
 DEFAULT_CONTACT_GRID = (32, 256)
@@ -186,6 +186,8 @@ def _contact_block(method: str) -> Block:
         compute=_contact(method),
         validate=lambda settings, inputs: contact_settings(settings),
         plot=_contact_plot,
+        checks=convergence_checks(("contact.converged", f"the roller contact solution ({method}; or its loaded "
+                                                        "zone reached the grid's edge)")),
     )
 
 
