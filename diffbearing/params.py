@@ -104,6 +104,7 @@ def wooster_pressure_viscosity(viscosity):
     Wooster's correlation α = (0.6 + 0.965 log₁₀ η₀[cP]) × 1e-8 Pa⁻¹ (Stachowiak & Batchelor,
     *Engineering Tribology*, ch. 2). A rough estimate: replace it with supplier data.
     """
+    check_range("lubricant.viscosity", viscosity, low=0.0, unit=" Pa*s")
     return (0.6 + 0.965 * math.log10(viscosity * 1e3)) * 1e-8
 
 
@@ -259,6 +260,7 @@ class Operating(eqx.Module):
 
 
 CAGE_POCKETS = ("outer_lock", "cylindrical")
+CAGE_GUIDANCES = ("outer_ring",)  # the guidance the cage model has: lands on the outer ring
 
 # Short-carbon-fibre PEEK (PEEK-CF30, the cage paper's cage): representative moduli of machined parts;
 # the cage material only sets the ball–pocket Hertz stiffness, which hardly moves quasi-static forces.
@@ -285,6 +287,7 @@ class Cage(eqx.Module):
     resisting_balls: np.ndarray = eqx.field(converter=_as_float)  # n, balls that the cage drives (a count)
     material: Material = PEEK_CF30
     pocket: str = eqx.field(static=True, default="outer_lock")
+    guidance: str = eqx.field(static=True, default="outer_ring")
 
     @property
     def outer_radius(self):
@@ -294,6 +297,8 @@ class Cage(eqx.Module):
     def __check_init__(self):
         if self.pocket not in CAGE_POCKETS:
             raise ValueError(f"cage.pocket must be one of {CAGE_POCKETS}, got {self.pocket!r}")
+        if self.guidance not in CAGE_GUIDANCES:
+            raise ValueError(f"cage.guidance must be one of {CAGE_GUIDANCES}, got {self.guidance!r}")
         for name in ("pocket_clearance", "guide_clearance", "land_width", "land_diameter", "land_spacing"):
             check_range(f"cage.{name}", getattr(self, name), low=0.0, unit=" m")
         check_range("cage.friction", self.friction, low=0.0, low_open=False)
@@ -306,7 +311,7 @@ class Cage(eqx.Module):
 
 def ball_cage(bearing: BallBearing, *, pocket: str = "outer_lock", pocket_clearance, guide_clearance, land_width,
               friction=0.1, land_diameter=None, land_spacing=None, film_threshold=1e-6, contact_stiffness=3e7,
-              pushing_balls, resisting_balls, material: Material = PEEK_CF30) -> Cage:
+              pushing_balls, resisting_balls, material: Material = PEEK_CF30, guidance: str = "outer_ring") -> Cage:
     """A `Cage` for `bearing` (SI units), with the geometry a drawing may leave out filled in:
     land bore d_land = d_m + 0.8 D_w (a B7005-class outer-ring shoulder) and land spacing
     s = D_w + L (the lands just outside the pockets). Checks that an outer-lock pocket's mouth,
@@ -335,4 +340,4 @@ def ball_cage(bearing: BallBearing, *, pocket: str = "outer_lock", pocket_cleara
     return Cage(pocket_clearance=pocket_clearance, guide_clearance=guide_clearance, land_width=land_width,
                 land_diameter=land_diameter, land_spacing=land_spacing, friction=friction,
                 film_threshold=film_threshold, contact_stiffness=contact_stiffness, pushing_balls=pushing_balls,
-                resisting_balls=resisting_balls, material=material, pocket=pocket)
+                resisting_balls=resisting_balls, material=material, pocket=pocket, guidance=guidance)

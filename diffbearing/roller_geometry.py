@@ -76,6 +76,9 @@ def roller_bearing(*, kind="cylindrical_roller", length, diameter=None, small_di
         check_range("bearing.cone_half_angle", cone_half_angle, low=0.0, low_open=False, high=np.pi / 6,
                     unit=" rad", why="up to 30°")
     check_range("bearing.roller_length", length, low=0.0, unit=" m")
+    if roller_count is not None and (isinstance(roller_count, bool) or not isinstance(roller_count, int)
+                                     or roller_count < 1):
+        raise ValueError(f"bearing.rollers must be an integer ≥ 1, got {roller_count!r}")
     return RollerBearing(small_diameter, large_diameter, length, cone_half_angle,
                          profile if profile is not None else RollerProfile(), material, kind=kind,
                          roller_count=roller_count)

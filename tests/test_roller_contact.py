@@ -320,3 +320,26 @@ def test_roller_sweep_over_load_and_tilt(tmp_path):
     assert np.all(result.values["contact.converged"])
     np.testing.assert_allclose(np.asarray(result.values["contact.load"]).reshape(3, 2),
                                [[500.0] * 2, [1000.0] * 2, [1500.0] * 2], rtol=1e-12)
+
+
+def test_raceway_edge_adds_its_curvature_to_the_crown():
+    """`with_raceway_edge`: the gap beyond the flat is the circle of radius 1/(1/R_c + 1/R_e)
+    (against the closed form at four points), and the drop's derivative with respect to R_e
+    matches a central difference (the starved-roller example's
+    10 mm crown, 12.7 mm flat, 100 mm edge)."""
+    from diffbearing.roller_profile import crown_drop, with_raceway_edge
+
+    crown = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+    y = jnp.array([0.0, 6.0e-3, 6.6e-3, 7.3e-3])
+    combined = 1.0 / (1.0 / 10e-3 + 1.0 / 100e-3)
+    expected = combined - np.sqrt(combined**2 - np.maximum(np.abs(y) - 6.35e-3, 0.0) ** 2)
+    drop = crown_drop(with_raceway_edge(crown, 100e-3), y, 14.7e-3, 2.26e11, 10e-3)
+    np.testing.assert_allclose(drop, expected, rtol=1e-12, atol=1e-18)
+
+    def drop_of_edge(edge):  # edge radius [0.1 m] → drop [µm]
+        return crown_drop(with_raceway_edge(crown, 0.1 * edge), y, 14.7e-3, 2.26e11, 10e-3) * 1e6
+
+    assert_jvp_matches_central_difference(drop_of_edge, jnp.asarray(1.0), jnp.asarray(1.0), step=1e-5, rtol=1e-6,
+                                          atol=1e-12)
+    with pytest.raises(ValueError, match="contact.raceway_edge_radius needs profile.kind"):
+        with_raceway_edge(roller_profile("straight", length=14.7e-3), 100e-3)

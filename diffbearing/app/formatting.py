@@ -2,9 +2,9 @@
 
 import numpy as np
 
-from .units import registry
+from .units import SI_UNITS, registry
 
-# display units of swept keys, by schema dimension (their SI units: units.SI_UNITS)
+# display units of swept keys, by schema dimension
 SWEEP_DISPLAY = {"length": "mm", "angular_speed": "rpm", "force": "kN", "moment": "N*m", "angle": "deg",
                  "pressure": "GPa"}
 
@@ -14,6 +14,12 @@ def to_display(value, unit: str, display: str):
     if unit == display or not display:
         return np.asarray(value)
     return np.asarray(registry().Quantity(np.asarray(value, dtype=float), unit).to(display).magnitude)
+
+
+def swept_display(values, dimension: str) -> tuple[np.ndarray, str]:
+    """(swept SI values in the display unit of their dimension, that unit; "" where there is none)."""
+    display = SWEEP_DISPLAY.get(dimension, "")
+    return (to_display(values, SI_UNITS[dimension], display) if display else np.asarray(values)), display
 
 
 def format_number(value) -> str:

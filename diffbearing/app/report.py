@@ -8,10 +8,9 @@ import json
 
 import numpy as np
 
-from .formatting import SWEEP_DISPLAY, format_number, format_value, to_display, unit_label
+from .formatting import format_number, format_value, swept_display, to_display, unit_label
 from .registry import adapters_for
 from .schema import lookup
-from .units import SI_UNITS
 
 
 def active_adapters(model) -> list:
@@ -28,12 +27,10 @@ def _header(result) -> list[str]:
 
 
 def _swept_cells(key, values) -> tuple[str, list[str]]:
-    dimension = lookup(key).dimension
-    display = SWEEP_DISPLAY.get(dimension)
-    shown = to_display(values, SI_UNITS[dimension], display) if display else np.asarray(values)
+    shown, display = swept_display(values, lookup(key).dimension)
     cells = [("[" + ", ".join(format_number(x) for x in np.ravel(v)) + "]") if np.ndim(v) else format_number(v)
              for v in shown]
-    return f"{key} [{unit_label(display or '')}]", cells
+    return f"{key} [{unit_label(display)}]", cells
 
 
 def _problem_lines(result, most=None) -> list[str]:

@@ -76,11 +76,11 @@ def convert(dotted: str, value):
 def validate(document: dict) -> dict[str, object]:
     """Validate a parsed TOML scene; return {dotted key: SI value} (the [sweep] table kept raw)."""
     flat: dict[str, object] = {}
+    tables = {dotted.partition(".")[0] for dotted in schema() if "." in dotted}
     for table, content in document.items():
         if table == "sweep":
             continue
         if isinstance(content, dict):
-            tables = {dotted.partition(".")[0] for dotted in schema() if "." in dotted}
             if table not in tables:
                 close = difflib.get_close_matches(table, sorted(tables), n=1)
                 hint = f" (did you mean '[{close[0]}]'?)" if close else ""

@@ -8,9 +8,8 @@ from ... import ball_equilibrium, ball_validity, hertz
 from ...kinematics import RACE_CONTROLS
 from ...params import BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
-from ..formatting import SWEEP_DISPLAY, format_number, state_column, to_display, unit_label
+from ..formatting import format_number, state_column, swept_display, to_display, unit_label
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
-from ..units import SI_UNITS
 from .materials import material
 
 # ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
@@ -251,10 +250,9 @@ def _stiffness(inputs: dict, settings: dict, results: dict) -> dict:
 def _stiffness_against_sweep(result, figure):
     """Diagonal stiffness against the first swept quantity (scalar sweeps) or the point index."""
     key, values = next(iter(result.sweep_axes.items()))
-    dimension = all_keys()[key].dimension
-    if np.ndim(values) == 1 and dimension in SWEEP_DISPLAY:
-        x = to_display(values, SI_UNITS[dimension], SWEEP_DISPLAY[dimension])
-        label = f"{key} [{SWEEP_DISPLAY[dimension]}]"
+    shown, display = swept_display(values, all_keys()[key].dimension)
+    if np.ndim(values) == 1 and display:
+        x, label = shown, f"{key} [{display}]"
     else:
         x, label = np.arange(len(values)), f"{key} (point)"
     stiffness = np.asarray(result.values["stiffness"]).reshape((len(values), -1, 5, 5))[:, 0]

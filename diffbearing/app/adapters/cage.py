@@ -16,7 +16,7 @@ import numpy as np
 from ...cage_dynamics import simulate_cage
 from ...cage_forces import cage_forces, cage_offset, epicyclic_cage_speed, loaded_ball_count
 from ...cage_stability import cage_stability
-from ...params import BALL_BEARING_KINDS, CAGE_POCKETS, _as_float, _is_concrete, ball_cage, check_range
+from ...params import BALL_BEARING_KINDS, CAGE_GUIDANCES, CAGE_POCKETS, _as_float, _is_concrete, ball_cage, check_range
 from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_checks, quantity, register
 
 ORBIT_SAMPLES = 1024
@@ -35,7 +35,6 @@ def _cage(v, built) -> dict:
     for key in ("pocket_clearance", "guide_clearance", "land_width"):
         if f"cage.{key}" not in v:
             raise ValueError(f"effects.cage needs cage.{key}")
-    v.get("cage.guidance")  # outer-ring land guidance is the one the model has (its only choice)
     loaded = loaded_ball_count(bearing, operating.force)
     count = bearing.ball_count
     pushing = v.get("cage.pushing_balls", loaded)
@@ -50,7 +49,8 @@ def _cage(v, built) -> dict:
                                                       "contact_stiffness") if f"cage.{name}" in v}
     cage = ball_cage(bearing, pocket=v.get("cage.pocket", "outer_lock"), pocket_clearance=v["cage.pocket_clearance"],
                      guide_clearance=v["cage.guide_clearance"], land_width=v["cage.land_width"],
-                     friction=v.get("cage.friction", 0.1), pushing_balls=pushing, resisting_balls=resisting, **optional)
+                     friction=v.get("cage.friction", 0.1), pushing_balls=pushing, resisting_balls=resisting,
+                     guidance=v.get("cage.guidance", "outer_ring"), **optional)
     eccentricity = v.get("cage.eccentricity", 0.0)
     check_range("cage.eccentricity", eccentricity, low=0.0, high=MAX_ECCENTRICITY, low_open=False, high_open=False,
                 why="the cage offset over the radial guide clearance; at 1 the cage touches the land, beyond it "
@@ -271,7 +271,7 @@ ADAPTER = register(Adapter(
     bearing_types=BALL_BEARING_KINDS,
     keys={
         "effects.cage": Key("choice", choices=(False, True, "dynamics")),
-        "cage.guidance": Key("choice", choices=("outer_ring",), doc="the model covers outer-ring land guidance"),
+        "cage.guidance": Key("choice", choices=CAGE_GUIDANCES, doc="the model covers outer-ring land guidance"),
         "cage.pocket": Key("choice", choices=CAGE_POCKETS),
         "cage.pocket_clearance": quantity("length", "diametral"),
         "cage.guide_clearance": quantity("length", "diametral"),

@@ -81,17 +81,24 @@ def _ball_film_outputs(side):
 
 # --- rollers: fully flooded -------------------------------------------------------------------
 
-def film_settings(settings: dict, inputs: dict) -> None:
-    """ValueError for a bad grid (of the line or the finite line level) or a roller scene without
-    entrainment speed."""
+def _entrainment(settings: dict, inputs: dict) -> None:
+    """ValueError for a roller scene without entrainment speed."""
     speed = inputs["operating"].entrainment_speed
     if not isinstance(speed, jax.core.Tracer) and float(speed) <= 0:
         raise ValueError("effects.film needs an entrainment speed: give operating.inner_speed (or outer_speed) "
                          "and bearing.pitch_diameter (cylindrical roller)")
-    if settings["effects"].get("film") == "line":
-        check_nodes(_line_nodes(settings))
-    if settings["effects"].get("film") == "finite_line":
-        finite_line_settings(settings)
+
+
+def _line_settings(settings: dict, inputs: dict) -> None:
+    """ValueError for a roller scene without entrainment speed or a bad line EHL grid."""
+    _entrainment(settings, inputs)
+    check_nodes(_line_nodes(settings))
+
+
+def _finite_line_settings(settings: dict, inputs: dict) -> None:
+    """ValueError for a roller scene without entrainment speed or a bad finite line grid."""
+    _entrainment(settings, inputs)
+    finite_line_settings(settings)
 
 
 def _line_nodes(settings: dict) -> int:
@@ -310,7 +317,7 @@ ADAPTER = register(Adapter(
               outputs=(*_ball_film_outputs("inner"), *_ball_film_outputs("outer")), compute=_film_hamrock_dowson),
         Block(name="film_formula", bearing_types=ROLLER_KINDS, enabled_by=("film", "formula"),
               requires=("roller_geometry",), inputs=ROLLER_INPUTS, outputs=_ROLLER_FILM_COMMON,
-              compute=_film_formula, validate=film_settings),
+              compute=_film_formula, validate=_entrainment),
         Block(name="film_line", sequential_sweep=True, bearing_types=ROLLER_KINDS, enabled_by=("film", "line"),
               requires=("roller_geometry",), inputs=ROLLER_INPUTS,
               outputs=(
@@ -320,12 +327,12 @@ ADAPTER = register(Adapter(
                   Output("film.pressure", "Pa", "GPa", "film pressure p(x)", in_report=False),
                   Output("film.thickness", "m", "um", "film thickness h(x)", in_report=False),
               ),
-              compute=_film_line, validate=film_settings, plot=_line_film_plot,
+              compute=_film_line, validate=_line_settings, plot=_line_film_plot,
               checks=convergence_checks(("film.converged", "the line EHL Newton (fully flooded film)"))),
         Block(name="film_finite_line", sequential_sweep=True, bearing_types=ROLLER_KINDS,
               enabled_by=("film", "finite_line"), requires=("roller_geometry",), inputs=ROLLER_INPUTS,
               outputs=(*_ROLLER_FILM_COMMON, *_finite_line_outputs("film", "flooded")),
-              compute=_film_finite_line, validate=film_settings, plot=_finite_line_film_plot,
+              compute=_film_finite_line, validate=_finite_line_settings, plot=_finite_line_film_plot,
               checks=convergence_checks(("film.converged", "the finite line EHL Newton (fully flooded film)"))),
         Block(name="starvation_formula", bearing_types=ROLLER_KINDS, enabled_by=("starvation", True),
               only_with=("film", ("formula",)), requires=("film_formula",), inputs=ROLLER_INPUTS + ("oil_layer",),

@@ -1,7 +1,7 @@
 """The lubricant ([lubricant] table: preset or explicit viscosity) and the surfaces' roughness."""
 
-from ...params import BALL_BEARING_KINDS, LUBRICANTS, MINERAL_OIL_DENSITY, Lubricant, _as_float, check_range, \
-    wooster_pressure_viscosity
+from ...params import (BALL_BEARING_KINDS, LUBRICANTS, MINERAL_OIL_DENSITY, Lubricant, _as_float, check_range,
+                       wooster_pressure_viscosity)
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, InputBuilder, Key, quantity, register
 
@@ -12,7 +12,6 @@ def _lubricant(values, built) -> dict:
     if viscosity is None:
         raise ValueError("missing required key: one of 'lubricant.preset', 'lubricant.viscosity' "
                          "(this scene's effects need a lubricant)")
-    check_range("lubricant.viscosity", viscosity, low=0.0, unit=" Pa*s")
     alpha = values.get("lubricant.pressure_viscosity",
                        base.pressure_viscosity if base else wooster_pressure_viscosity(viscosity))
     density = values.get("lubricant.density", base.density if base else MINERAL_OIL_DENSITY)

@@ -29,19 +29,11 @@ def _bearing(v, built) -> dict:
     profile = roller_profile(kind, length=length, **parameters)
     if "contact.raceway_edge_radius" in v:
         profile = with_raceway_edge(profile, v["contact.raceway_edge_radius"])
-    if "bearing.rollers" in v:
-        _check_roller_count(v)
     return {"bearing": roller_bearing(kind=v["bearing.type"], length=length, diameter=v.get("bearing.roller_diameter"),
                                       small_diameter=v.get("bearing.roller_small_diameter"),
                                       large_diameter=v.get("bearing.roller_large_diameter"),
                                       cone_half_angle=v.get("bearing.cone_half_angle", 0.0), profile=profile,
                                       material=material(v), roller_count=v.get("bearing.rollers"))}
-
-
-def _check_roller_count(v) -> None:
-    count = v["bearing.rollers"]
-    if count < 1:
-        raise ValueError(f"bearing.rollers must be an integer ≥ 1, got {count}")
 
 
 def _roller_count_text(scene, bearing) -> str:
