@@ -129,3 +129,18 @@ def test_distributed_sweep_writes_the_single_process_json(scene_file, tmp_path):
     assert set(written) == set(expected)
     written.pop("timing"), expected.pop("timing")
     assert written == expected
+
+
+def test_a_sweep_leaves_out_the_plot_data_of_a_single_run():
+    """The cage's f_inv-against-direction curves (144 cage-force evaluations, the figure's data) are
+    computed in a single run but not at every point of a sweep; the swept restoring force equals
+    the single run's at the same eccentricity."""
+    from diffbearing import run_sweep
+
+    single = run_model(build_model(load_scene("cage_b7005")))
+    assert single.values["cage.offset_angle.restoring_force"].shape == (2, 72)
+    model = build_model(load_scene("cage_b7005"))
+    swept = run_sweep(model, {"cage.eccentricity": np.array([0.4, 0.8])}, progress=False)
+    assert not any(key.startswith("cage.offset_angle") for key in swept.values)
+    np.testing.assert_allclose(swept.values["cage.restoring_force"][1], single.values["cage.restoring_force"],
+                               rtol=1e-12)

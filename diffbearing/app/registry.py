@@ -75,6 +75,8 @@ class Block:
     # swept point by point (`jax.lax.map`), not under `jax.vmap`: the numerical EHL solvers, whose
     # vmapped compiled batch of 1-D line solves ran past 150 s where one solve takes 0.03 s
     sequential_sweep: bool = False
+    # data for the figure of a single run only (nothing requires it): a sweep leaves it out
+    single_run: bool = False
     # values of one point (NumPy, SI) → (errors, warnings): one line each, with units; an error
     # means the result is outside the model (the CLI exits 3), a warning that a limit is passed
     checks: Callable[[dict], tuple[list[str], list[str]]] | None = None

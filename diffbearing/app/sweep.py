@@ -89,7 +89,8 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     devices = jax.local_devices()
     chunk = max(len(devices), min(chunk, share))
     chunk = -(-chunk // len(devices)) * len(devices)  # a multiple of the device count
-    evaluate = evaluate_blocks(model.blocks, model.settings)
+    blocks = [block for block in model.blocks if not block.single_run]  # a single run's plot data
+    evaluate = evaluate_blocks(blocks, model.settings)
     base = dict(model.scene.values)
 
     def point(swept):
@@ -97,7 +98,7 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
         values.update(swept)
         return evaluate(inputs_from_values(values))
 
-    if any(block.sequential_sweep for block in model.blocks):  # iterative EHL solvers: one point after another
+    if any(block.sequential_sweep for block in blocks):  # iterative EHL solvers: one point after another
         batched = jax.jit(lambda swept: jax.lax.map(point, swept))
     else:
         batched = jax.jit(jax.vmap(point))

@@ -90,14 +90,17 @@ def _restoring_against_offset_angle(inputs: dict):
 def _cage_quasi_static(inputs: dict, settings: dict, results: dict) -> dict:
     solved = cage_forces(inputs["cage"], inputs["bearing"], inputs["operating"], inputs["lubricant"],
                          inputs["cage_offset"])
-    angles, curves = _restoring_against_offset_angle(inputs)
     return {"cage.restoring_force": solved.restoring_force, "cage.force": solved.force, "cage.moment": solved.moment,
             "cage.land_force": solved.land_force, "cage.land_eccentricity": solved.land_eccentricity,
             "cage.land_contact": solved.land_contact, "cage.pocket_forces": solved.pocket_forces,
             "cage.pushing": solved.pushing, "cage.resisting": solved.resisting, "cage.drag": solved.drag,
             "cage.push": solved.push, "cage.load_zone": solved.load_zone, "cage.speed": solved.cage_speed,
-            "cage.offset": inputs["cage_offset"], "cage.offset_angle.angle": angles,
-            "cage.offset_angle.restoring_force": curves}
+            "cage.offset": inputs["cage_offset"]}
+
+
+def _offset_angle_curves(inputs: dict, settings: dict, results: dict) -> dict:
+    angles, curves = _restoring_against_offset_angle(inputs)
+    return {"cage.offset_angle.angle": angles, "cage.offset_angle.restoring_force": curves}
 
 
 def _forces_plot(result, figure):
@@ -169,13 +172,26 @@ QUASI_STATIC = Block(
         Output("cage.load_zone", "rad", "deg", "load zone 2ψ_l (Sjövall)"),
         Output("cage.speed", "rad/s", "rpm", "cage speed ω_c"),
         Output("cage.offset", "m", "um", "cage centre offset (x, y)"),
+    ),
+    compute=_cage_quasi_static,
+)
+
+# f_inv against the offset's direction for both pocket kinds: the figure's data, left out of sweeps
+OFFSET_ANGLE_CURVES = Block(
+    name="cage_offset_angle",
+    bearing_types=BALL_BEARING_KINDS,
+    enabled_by=("cage", True),
+    requires=("cage",),
+    inputs=CAGE_INPUTS,
+    outputs=(
         Output("cage.offset_angle.angle", "rad", "deg", "offset directions from the radial load, every 5°",
                in_report=False),
         Output("cage.offset_angle.restoring_force", "N", "N",
                "f_inv at the scene's offset distance per direction [outer-lock, cylindrical pocket]", in_report=False),
     ),
-    compute=_cage_quasi_static,
+    compute=_offset_angle_curves,
     plot=_forces_plot,
+    single_run=True,
 )
 
 
@@ -289,5 +305,5 @@ ADAPTER = register(Adapter(
     },
     inputs=(InputBuilder(("cage", "cage_offset"), BALL_BEARING_KINDS, _cage, after=("bearing", "operating")),
             InputBuilder(("cage_duration",), BALL_BEARING_KINDS, _duration)),
-    blocks=(QUASI_STATIC, DYNAMICS),
+    blocks=(QUASI_STATIC, OFFSET_ANGLE_CURVES, DYNAMICS),
 ))
