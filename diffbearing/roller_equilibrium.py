@@ -33,7 +33,7 @@ lamina k are
 
 with the gap g_k = P_d/4 + z(y_k) (a quarter of the diametral clearance P_d on each contact, and
 the crown drop z of `roller_profile.crown_drop`). Each lamina carries q = c max(δ, 0)^{10/9}
-(`roller_life.lamina_load`, ISO/TS 16281). Roller j's balance across its axis and of moments about
+(`roller_life.lamina_load`, ISO/TS 16281; scaled by E'/E'_steel). Roller j's balance across its axis and of moments about
 its centre, and the rib force along its axis (F_c the roller's centrifugal force, radially out):
 
     R_u = cos θ (Σ q_i − Σ q_o) + F_c cos α_m = 0
@@ -71,10 +71,11 @@ import numpy as np
 
 from .hertz import line_contact
 from .newton import implicit_root, minimise_convex, newton
-from .numerics import positive_power, require_float64, safe_norm
+from .numerics import require_float64, safe_norm
 from .params import _as_float, _is_concrete, check_range
 from .roller_contact import PALMGREN_STEEL_MODULUS
 from .roller_geometry import RollerBearing, RollerLoading, roller_diameter, roller_modulus
+from .roller_life import lamina_load
 from .roller_profile import crown_drop
 
 DISPLACEMENT_SCALE = 1e-5  # m: unit of the scaled ring unknowns (10 µm, 10 µm / (d_m/2) rad)
@@ -83,11 +84,6 @@ RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled ring and roller residuals
 ROLLER_NEWTON_STEPS = 40
 RING_MAX_STEPS = 60
 STATIC_GRADIENT_TOLERANCE = 1e-12
-# ISO/TS 16281:2008 lamina law for steel: Q = c_L l^{8/9} δ^{10/9} [N, mm] for a roller of effective
-# length l whose approach to both raceways together is δ (each contact δ/2).
-ISO_LAMINA_CONSTANT = 35948.0
-# One contact of a lamina of width w: q = c (E'/E'_steel) l^{-1/9} w δ^{10/9} [SI], c = 2^{10/9} c_L · 1e6.
-CONTACT_LAMINA_CONSTANT = 2.0 ** (10.0 / 9.0) * ISO_LAMINA_CONSTANT * 1e6
 # A roller that touches neither raceway (no centrifugal force, or no speed) has no equation for
 # its position: a centring spring this weak (relative to one roller at 1 µm) keeps it midway
 # without changing a loaded roller's balance by more than 1e-12 of its load.
@@ -222,17 +218,10 @@ def lamina_setup(bearing: RollerBearing, raceways: RollerRaceways, model: Roller
     return LaminaSetup(y, width, lamina_gaps(bearing, raceways, y), directions(bearing, raceways))
 
 
-def lamina_load(approach, width, length, modulus):
-    """Force [N] of a lamina of width w [m] of one roller–raceway contact at approach δ [m]:
-    q = c (E'/E'_steel) l^{-1/9} w max(δ, 0)^{10/9} (`CONTACT_LAMINA_CONSTANT`, ISO/TS 16281
-    scaled to one contact and to the modulus E' [Pa]; l the effective length [m])."""
-    stiffness = CONTACT_LAMINA_CONSTANT * modulus / PALMGREN_STEEL_MODULUS * length ** (-1.0 / 9.0)
-    return stiffness * width * positive_power(approach, 10.0 / 9.0)
-
-
 def _lamina_force(approach, bearing: RollerBearing, setup: LaminaSetup):
-    """Force of each lamina [N] of one roller–raceway contact at approach δ [m] (`lamina_load`)."""
-    return lamina_load(approach, setup.width, bearing.length, roller_modulus(bearing))
+    """Force of each lamina [N] of one roller–raceway contact at approach δ [m]: ISO/TS 16281's law for
+    steel (`roller_life.lamina_load`) scaled by E'/E'_steel for other materials."""
+    return lamina_load(approach, setup.width, bearing.length) * roller_modulus(bearing) / PALMGREN_STEEL_MODULUS
 
 
 def static_approach(displacement, bearing: RollerBearing, raceways: RollerRaceways, setup: LaminaSetup):
