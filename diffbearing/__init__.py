@@ -80,11 +80,27 @@ from .raceway_contact import (
     outer_curvature as outer_curvature,
 )
 from .roller_contact import RollerContact as RollerContact, roller_contact as roller_contact
+from .roller_equilibrium import (
+    RollerEquilibrium as RollerEquilibrium,
+    RollerModel as RollerModel,
+    RollerOperating as RollerOperating,
+    RollerRaceways as RollerRaceways,
+    RollerResults as RollerResults,
+    roller_contact_loadings as roller_contact_loadings,
+    roller_raceways as roller_raceways,
+    roller_results as roller_results,
+    roller_stiffness_matrix as roller_stiffness_matrix,
+    solve_roller_equilibrium as solve_roller_equilibrium,
+)
 from .roller_geometry import (
     RollerBearing as RollerBearing,
     RollerLoading as RollerLoading,
     initial_gap as initial_gap,
     roller_bearing as roller_bearing,
+)
+from .roller_life import (
+    roller_dynamic_load_rating as roller_dynamic_load_rating,
+    roller_reference_rating_life as roller_reference_rating_life,
 )
 from .roller_profile import RollerProfile as RollerProfile, crown_drop as crown_drop, roller_profile as roller_profile
 from .app.model import build_model as build_model, run_model as run_model
