@@ -126,7 +126,8 @@ def roller_raceways(bearing: RollerBearing, *, pitch_diameter, diametral_clearan
         if _is_concrete(cup_angle) and float(cup_angle) != 0.0:
             raise ValueError("bearing.contact_angle: a cylindrical roller bearing has contact angle 0")
     else:
-        check_range("bearing.contact_angle", cup_angle, low=float(bearing.cone_half_angle) * 2.0, high=np.pi / 3,
+        cone = float(bearing.cone_half_angle) if _is_concrete(bearing.cone_half_angle) else 0.0
+        check_range("bearing.contact_angle", cup_angle, low=2.0 * cone, high=np.pi / 3,
                     unit=" rad", why="the cup angle exceeds twice the roller's cone half angle (cone angle > 0) "
                                      "and is below 60°")
     return RollerRaceways(pitch_diameter, diametral_clearance, cup_angle)
