@@ -455,8 +455,9 @@ def _report(result) -> list[str]:
                      f"My = {_fixed(moment[1], 3)} N·m")
     if "stiffness" in values:
         lines += stiffness_lines(values["stiffness"], "rollers")
-    lines += element_table_lines(result, "Rollers (ψ from +x towards +y; Q per raceway contact, Qrib on the cone's rib, "
-                                         "φ tilt in the axial plane; lamina loads in --json)")
+    rib = "Qrib on the cone's rib, " if "rollers.rib.load" in values else ""
+    lines += element_table_lines(result, f"Rollers (ψ from +x towards +y; Q per raceway contact, {rib}φ tilt in the axial "
+                                         "plane; lamina loads in --json)")
     inner = np.asarray(values["rollers.inner.load"])
     most = int(np.argmax(inner))
     lines.append(f"  {int(np.sum(inner > 0))} of {len(inner)} rollers loaded; the most loaded, #{most} at "
