@@ -263,3 +263,26 @@ def test_a_force_sweep_matches_the_single_run(tmp_path, cylindrical):
                                    atol=1e-10 * np.abs(np.array(single[key])).max())
     largest = np.array(document["rollers"]["inner"]["load"]).max(axis=1)
     assert np.all(np.diff(largest) > 0)
+
+
+def test_a_geometry_sweep_runs_and_a_bad_corner_exits_2(tmp_path):
+    """The raceways of a swept geometry are built from traced values (validated at the grid's corners
+    before compiling): a sweep of the cone half angle and pitch diameter runs; a pitch circle too small
+    for the rollers at a corner is bad input (exit 2, one line)."""
+    path = tmp_path / "geometry.toml"
+    path.write_text(open(example_scene("tapered_roller_bearing")).read() + '\n[sweep]\n"bearing.cone_half_angle" = '
+                    '["2.0 deg", "2.4 deg"]\n"bearing.pitch_diameter" = ["50.686 mm", "52 mm"]\n')
+    code, out, err, document = _run(tmp_path, str(path))
+    assert code == 0, err
+    assert np.array(document["converged"]).shape == (2, 2) and np.all(document["converged"])
+    # the laminae's approaches depend on the cup angle, not on d_m or θ, except through the sizing of the
+    # logarithmic crown at the cone's curvature: the displacement barely moves
+    displacement = np.array(document["displacement"])
+    np.testing.assert_allclose(displacement, np.broadcast_to(displacement[1, 0], displacement.shape), rtol=1e-4,
+                               atol=1e-12)
+    bad = tmp_path / "bad.toml"
+    bad.write_text(open(example_scene("cylindrical_roller_bearing")).read() + '\n[sweep]\n"bearing.pitch_diameter" = '
+                   '["106.6 mm", "90 mm"]\n')
+    code, out, err = _cli("run", str(bad))
+    assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
+    assert "bearing.rollers: 12 rollers of 25.4 mm do not fit on the 90 mm pitch circle" in err

@@ -17,7 +17,7 @@ import numpy as np
 from . import registry
 from .result import RunResult
 from .scene import Scene
-from .sweep import run_sweep, sweep_axes
+from .sweep import check_corners, run_sweep, sweep_axes
 
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
 # selects the adapters, and the effects and fidelity tables (checked by `resolve` and `read_by`)
@@ -111,6 +111,8 @@ def build_model(scene: Scene) -> Model:
     values = Reads(scene.values)
     inputs = build_inputs(scene.bearing_type, blocks, values)
     axes = sweep_axes(scene.sweep) if scene.sweep else {}  # bad entries fail here, before compiling
+    if axes:  # and parameters out of range at a corner of the grid
+        check_corners(scene.values, axes, lambda point: build_inputs(scene.bearing_type, blocks, point))
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
     for block in blocks:
         if block.validate is not None:

@@ -67,7 +67,7 @@ def grid_points(axes: dict) -> tuple[tuple[int, ...], dict[str, np.ndarray]]:
     return shape, {key: values[index[:, k]] for k, (key, values) in enumerate(axes.items())}
 
 
-def _check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
+def check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
     """Validate the parameters at every corner of the grid (ValueError names the parameter)."""
     for corner in itertools.product(*[(values[0], values[-1]) for values in axes.values()]):
         values = dict(scene_values)
@@ -79,7 +79,7 @@ def _check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
 def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     """Evaluate `model` (a model.Model) over the grid `axes`; returns a RunResult with batched values."""
     inputs_from_values = model.inputs_from_values
-    _check_corners(model.scene.values, axes, inputs_from_values)
+    check_corners(model.scene.values, axes, inputs_from_values)
     shape, points = grid_points(axes)
     count = int(np.prod(shape))
     # process p evaluates points [p·share, (p + 1)·share): gathered in process order the blocks are

@@ -17,7 +17,7 @@ import numpy as np
 
 from ...params import check_range
 from ...roller_contact import roller_contact
-from ...roller_equilibrium import (RESIDUAL_TOLERANCE, RollerModel, RollerOperating, roller_contact_loadings,
+from ...roller_equilibrium import (RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways, roller_contact_loadings,
                                    roller_raceways, roller_results, roller_stiffness_matrix, solve_roller_equilibrium)
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import (element_table_lines, format_number, state_column, stiffness_lines, swept_display,
@@ -60,9 +60,14 @@ def _raceways(v, built) -> dict:
         raise ValueError("missing required key 'bearing.pitch_diameter' (the pitch diameter d_m of a roller bearing)")
     if bearing.kind == "tapered_roller" and "bearing.contact_angle" not in v:
         raise ValueError("missing required key 'bearing.contact_angle' (the cup angle α_o of a tapered roller bearing)")
-    pitch = v["bearing.pitch_diameter"]
-    raceways = roller_raceways(bearing, pitch_diameter=pitch, diametral_clearance=v.get("bearing.radial_clearance", 0.0),
-                               cup_angle=v.get("bearing.contact_angle", 0.0))
+    pitch, clearance, cup = (v["bearing.pitch_diameter"], v.get("bearing.radial_clearance", 0.0),
+                             v.get("bearing.contact_angle", 0.0))
+    if any(_traced(x) for x in (pitch, clearance, cup, bearing.cone_half_angle, bearing.large_diameter)):
+        # a sweep's point: its corners were validated with concrete values (sweep.check_corners),
+        # and `roller_raceways` writes bounds made of these values into its messages with float()
+        raceways = RollerRaceways(pitch, clearance, cup)
+    else:
+        raceways = roller_raceways(bearing, pitch_diameter=pitch, diametral_clearance=clearance, cup_angle=cup)
     mean = 0.5 * (bearing.small_diameter + bearing.large_diameter)
     if not any(_traced(x) for x in (pitch, mean)):
         room = float(pitch) * math.sin(math.pi / bearing.roller_count)
