@@ -286,3 +286,15 @@ def test_a_geometry_sweep_runs_and_a_bad_corner_exits_2(tmp_path):
     code, out, err = _cli("run", str(bad))
     assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
     assert "bearing.rollers: 12 rollers of 25.4 mm do not fit on the 90 mm pitch circle" in err
+
+
+def test_peak_pressure_above_iso76_is_a_warning(tmp_path, cylindrical):
+    """250 kN on the cylindrical example: converged (exit 0) with p_max ≈ 4.7 GPa, above the ISO 76
+    limit of roller bearings (4.0 GPa): one warning, in the report and in the JSON."""
+    code, out, err, document = _run(tmp_path, example_scene("cylindrical_roller_bearing"), "--set",
+                                    'operating.force=["250 kN", "0 N", "0 N"]')
+    assert code == 0, err
+    assert document["converged"] is True and document["errors"] == []
+    (warning,) = document["warnings"]
+    assert warning.startswith("peak contact pressure 4.") and "(inner raceway, roller 0)" in warning
+    assert "ISO 76 static limit 4 GPa of roller bearings" in warning and warning in out

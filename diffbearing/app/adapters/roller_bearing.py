@@ -400,8 +400,9 @@ def _header(result) -> list[str]:
         tilt = np.asarray(operating.misalignment) * 1e3
         load += (f"; inner-ring misalignment imposed, [θx, θy] = [{', '.join(f'{t:.4g}' for t in tilt)}] mrad "
                  "(the moments are outputs)")
-    centrifugal = (f"on, F_c = {float(values['rollers.centrifugal_force']):.4g} N per roller"
-                   if "rollers.centrifugal_force" in values else "off")
+    centrifugal = "on" if model.centrifugal else "off"
+    if model.centrifugal and not result.sweep_axes:
+        centrifugal += f", F_c = {float(values['rollers.centrifugal_force']):.4g} N per roller"
     width = float(bearing.length) / model.laminae * 1e6
     return [
         scene.title,
