@@ -298,3 +298,18 @@ def test_peak_pressure_above_iso76_is_a_warning(tmp_path, cylindrical):
     (warning,) = document["warnings"]
     assert warning.startswith("peak contact pressure 4.") and "(inner raceway, roller 0)" in warning
     assert "ISO 76 static limit 4 GPa of roller bearings" in warning and warning in out
+
+
+def test_a_sweep_with_influence_maps_its_points(tmp_path):
+    """contact = "influence" in a force sweep: the points are mapped one after another (iterative
+    contact solves), each with the most loaded roller's pressure maps; peaks grow with the force."""
+    path = tmp_path / "sweep.toml"
+    path.write_text(open(example_scene("cylindrical_roller_bearing")).read() + SWEEP)
+    code, out, err, document = _run(tmp_path, str(path), "--set", 'effects.contact="influence"', "--set",
+                                    "fidelity.grid=[16, 64]", "--set", "effects.stiffness=false")
+    assert code == 0, err
+    assert "mapped point by point" in out and all(document["rollers"]["influence"]["converged"])
+    assert np.array(document["rollers"]["influence"]["inner"]["pressure"]).shape == (3, 16, 64)
+    peaks = np.array(document["rollers"]["inner"]["max_pressure"])[:, 0]
+    laminae = np.array(document["rollers"]["inner"]["lamina_max_pressure"])[:, 0]
+    assert np.all(np.diff(peaks) > 0) and np.all(peaks > laminae)
