@@ -232,14 +232,16 @@ def test_examples_lists_every_packaged_scene(capsys):
     code, out, _ = run_cli(capsys, "examples")
     listed = examples()
     assert code == 0 and set(listed) == {"aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
-                                         "starved_roller", "tapered_roller"}
+                                         "starved_roller", "tapered_roller", "tapered_roller_bearing",
+                                         "cylindrical_roller_bearing"}
     for name, description in listed.items():
         assert description and f"{name}" in out and description in out
     assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)
 
 
 @pytest.mark.parametrize("name", ["aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
-                                  "tapered_roller", pytest.param("starved_roller", marks=pytest.mark.slow)])
+                                  "tapered_roller", "tapered_roller_bearing", "cylindrical_roller_bearing",
+                                  pytest.param("starved_roller", marks=pytest.mark.slow)])
 def test_every_example_runs_by_name(capsys, tmp_path, name):
     """`diffbearing run NAME` runs each packaged example to exit 0 and writes its JSON."""
     path = tmp_path / "out.json"

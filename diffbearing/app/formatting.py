@@ -50,3 +50,32 @@ def column(name: str, values, scale: float = 1.0) -> tuple[str, list[str]]:
 def state_column(name: str, flags, ok: str = "converged") -> tuple[str, list[str]]:
     """A sweep-report column of yes/no flags ("NO" where false)."""
     return name, [ok if flag else "NO" for flag in flags]
+
+
+def stiffness_lines(matrix, elements: str) -> list[str]:
+    """Report lines of a 5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] in N/µm and N·m/mrad;
+    `elements` names what was re-equilibrated ("balls", "rollers")."""
+    k = np.asarray(matrix)
+    names = ["x", "y", "z", "θx", "θy"]
+    lines = ["", f"Stiffness K = dF/dΔ ({elements} re-equilibrated; rows F: N, M: N·m; columns δ: µm, θ: mrad)",
+             "  " + " " * 6 + "".join(f"{'∂/∂' + n:>13}" for n in names)]
+    scale = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # per µm and per mrad
+    row_names = ["Fx", "Fy", "Fz", "Mx", "My"]
+    for i in range(5):
+        lines.append(f"  {row_names[i]:<6}" + "".join(f"{k[i, j] * scale[j]:>13.5g}" for j in range(5)))
+    return lines
+
+
+def element_table_lines(result, title: str) -> list[str]:
+    """A table with one row per rolling element (ball or roller): the run's outputs that declare a
+    `column`, in their display units; – for NaN (a quantity that does not exist for that element)."""
+    outputs, values = result.model.outputs, result.values
+    shown = [key for key, out in outputs.items() if out.column and key in values]
+    header = "".join(f"{outputs[k].column + ' [' + unit_label(outputs[k].display) + ']':>12}" for k in shown)
+    lines = ["", title, "   #" + header]
+    columns = [to_display(values[k], outputs[k].unit, outputs[k].display) for k in shown]
+    # rounding noise (a roller's tilt of 1e-18 mrad where it is zero by symmetry) shown as 0
+    columns = [np.where(np.abs(c) < 1e-9, 0.0, c) for c in columns]
+    for j in range(len(columns[0])):
+        lines.append(f"  {j:>2}" + "".join(f"{'–' if np.isnan(c[j]) else format_number(c[j]):>12}" for c in columns))
+    return lines

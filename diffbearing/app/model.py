@@ -17,7 +17,7 @@ import numpy as np
 from . import registry
 from .result import RunResult
 from .scene import Scene
-from .sweep import run_sweep, sweep_axes
+from .sweep import check_corners, run_sweep, sweep_axes
 
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
 # selects the adapters, and the effects and fidelity tables (checked by `resolve` and `read_by`)
@@ -54,7 +54,7 @@ def build_inputs(bearing_type: str, blocks, values) -> dict:
     or a `Reads`; values may be JAX tracers in a sweep). ValueError names a bad value."""
     needed = dict.fromkeys(name for block in blocks for name in block.inputs)
     inputs: dict = {}
-    for builder in registry.input_builders(bearing_type, needed):
+    for builder in registry.input_builders(bearing_type, needed, present=set(values)):
         inputs |= builder.build(values, inputs)
     return inputs
 
@@ -86,10 +86,11 @@ class Model:
 
 def _unread(scene: Scene, blocks, asked: set, axes: dict) -> tuple[list[str], list[str]]:
     """(scene and swept keys that nothing the scene runs reads, fidelity keys that only a block of
-    another effect level of this bearing type reads: a setting kept for when the level changes)."""
+    another effect level of this bearing type and layout reads: a setting kept for when the level
+    changes)."""
     keys = registry.all_keys()
     running = {block.name for block in blocks}
-    of_type = {block.name for adapter in registry.adapters_for(scene.bearing_type) for block in adapter.blocks}
+    of_type = {block.name for block in registry.selectable(scene.bearing_type, scene.values)}
     unread, idle = [], []
     for key in dict.fromkeys(list(scene.values) + list(axes)):
         if key in _SETTINGS or key.startswith("effects."):
@@ -106,10 +107,12 @@ def _unread(scene: Scene, blocks, asked: set, axes: dict) -> tuple[list[str], li
 def build_model(scene: Scene) -> Model:
     """Assemble the model of a scene: only the blocks its effects name (and what they require),
     and the inputs those blocks read. ValueError for bad values, settings or unread keys."""
-    blocks, missing = registry.resolve(scene.bearing_type, scene.table("effects"))
+    blocks, missing = registry.resolve(scene.bearing_type, scene.table("effects"), present=scene.values)
     values = Reads(scene.values)
     inputs = build_inputs(scene.bearing_type, blocks, values)
     axes = sweep_axes(scene.sweep) if scene.sweep else {}  # bad entries fail here, before compiling
+    if axes:  # and parameters out of range at a corner of the grid
+        check_corners(scene.values, axes, lambda point: build_inputs(scene.bearing_type, blocks, point))
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
     for block in blocks:
         if block.validate is not None:

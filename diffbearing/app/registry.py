@@ -12,6 +12,12 @@ An `Adapter` (one module in `diffbearing.app.adapters` per effect family) declar
 The registry knows no adapter or block by name: a block runs when its bearing type matches and
 its `enabled_by` effect is on (or it has none), together with the blocks it `requires`. A block no
 named effect reaches is never called, so it is never traced or compiled.
+
+One bearing type may be modelled in more than one layout, told apart by the keys a scene holds: a
+roller type is one roller–raceway contact where the scene gives `contact.load`, the whole bearing
+where it gives `operating.force`. A block or input builder with `scene_keys` belongs to the layout
+of the scene that holds all of those keys; a block that requires a block of another layout is left
+out with it (`selectable`). Blocks and builders without `scene_keys` serve every layout.
 """
 
 import dataclasses
@@ -73,7 +79,8 @@ class Block:
     uses: tuple[str, ...] = ()  # effects it reads as options (e.g. centrifugal inside the equilibrium)
     only_with: tuple[str, tuple] | None = None  # (effect key, values): another effect it refines must be one of these
     # swept point by point (`jax.lax.map`), not under `jax.vmap`: the numerical EHL solvers, whose
-    # vmapped compiled batch of 1-D line solves ran past 150 s where one solve takes 0.03 s
+    # vmapped compiled batch of 1-D line solves ran past 150 s where one solve takes 0.03 s, and the
+    # iterative contact solves of a whole roller bearing
     sequential_sweep: bool = False
     # data for the figure of a single run only (nothing requires it): a sweep leaves it out
     single_run: bool = False
@@ -84,17 +91,30 @@ class Block:
     validate: Callable[[dict, dict], None] | None = None
     plot: Callable | None = None  # (result, figure) → None: the figure of a single run
     sweep_plot: Callable | None = None  # (result, figure) → None: the figure of a sweep
+    # scene keys that select this block's layout: it runs only in a scene holding every one of them
+    # (module docstring); () serves every layout
+    scene_keys: tuple[str, ...] = ()
+
+    def in_layout(self, present) -> bool:
+        """Whether a scene holding the keys `present` has this block's layout."""
+        return all(key in present for key in self.scene_keys)
 
 
 @dataclasses.dataclass(frozen=True)
 class InputBuilder:
     """Builds the input pytrees `provides` from the scene's SI values (a `Reads` mapping; values
-    may be JAX tracers in a sweep) and the inputs built before it (those in `after`)."""
+    may be JAX tracers in a sweep) and the inputs built before it (those in `after`); with
+    `scene_keys`, only in a scene holding all of them (another builder may provide the same
+    inputs in another layout)."""
 
     provides: tuple[str, ...]
     bearing_types: tuple[str, ...]
     build: Callable[[dict, dict], dict]
     after: tuple[str, ...] = ()
+    scene_keys: tuple[str, ...] = ()
+
+    def in_layout(self, present) -> bool:
+        return all(key in present for key in self.scene_keys)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -154,13 +174,26 @@ def adapters_for(bearing_type: str) -> list[Adapter]:
     return [adapter for adapter in ADAPTERS.values() if bearing_type in adapter.bearing_types]
 
 
-def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
+def selectable(bearing_type: str, present=()) -> list[Block]:
+    """The blocks of `bearing_type` a scene holding the keys `present` may run: those of its layout
+    (`Block.scene_keys`) whose required blocks, and theirs, are of its layout too."""
+    of_type = [block for adapter in adapters_for(bearing_type) for block in adapter.blocks
+               if bearing_type in block.bearing_types]
+    excluded = {block.name for block in of_type if not block.in_layout(present)}
+    while True:
+        more = {block.name for block in of_type if block.name not in excluded and excluded & set(block.requires)}
+        if not more:
+            return [block for block in of_type if block.name not in excluded]
+        excluded |= more
+
+
+def resolve(bearing_type: str, effects: dict, present=()) -> tuple[list[Block], list[str]]:
     """Blocks to run, in dependency order, and the named effects no registered block provides.
 
-    `effects` maps effect names to their scene values (false / absent means off).
+    `effects` maps effect names to their scene values (false / absent means off); `present` holds
+    the scene's keys, which select the layout (`selectable`).
     """
-    candidates = [block for adapter in adapters_for(bearing_type) for block in adapter.blocks
-                  if bearing_type in block.bearing_types]
+    candidates = selectable(bearing_type, present)
     wanted = [block for block in candidates if block.enabled_by is None]
     provided = {effect for block in candidates for effect in block.uses}
     for block in candidates:
@@ -189,10 +222,11 @@ def resolve(bearing_type: str, effects: dict) -> tuple[list[Block], list[str]]:
     return ordered, missing
 
 
-def input_builders(bearing_type: str, names) -> list[InputBuilder]:
-    """The builders of the inputs `names` (and of the inputs they are built after), in order."""
+def input_builders(bearing_type: str, names, present=()) -> list[InputBuilder]:
+    """The builders of the inputs `names` (and of the inputs they are built after), in order, for
+    a scene holding the keys `present` (a builder with `scene_keys` only in its layout)."""
     builders = {name: builder for adapter in adapters_for(bearing_type) for builder in adapter.inputs
-                if bearing_type in builder.bearing_types for name in builder.provides}
+                if bearing_type in builder.bearing_types and builder.in_layout(present) for name in builder.provides}
     ordered: list[InputBuilder] = []
 
     def visit(name):

@@ -51,7 +51,7 @@ def format_sweep_report(result) -> str:
     axes = result.sweep_axes
     shape = tuple(len(v) for v in axes.values())
     grid = f"{' × '.join(str(n) for n in shape)} = " if len(shape) > 1 else ""
-    batch = ("mapped point by point (iterative EHL solver)" if any(b.sequential_sweep for b in result.model.blocks)
+    batch = ("mapped point by point (an iterative solver)" if any(b.sequential_sweep for b in result.model.blocks)
              else "one vmapped batch")
     lines += ["", f"Sweep over {grid}{int(np.prod(shape))} points ({', '.join(axes)}), {batch}"]
     grids = np.meshgrid(*[np.arange(n) for n in shape], indexing="ij")

@@ -8,11 +8,11 @@ Each entry is {start, stop, num} (scalars, or vectors interpolated componentwise
 list; several entries form a grid (first key = first axis). Each point's parameter pytrees are
 built inside the vmapped function from the swept SI values, so any numeric key can be swept; keys
 that change array shapes (`bearing.balls`) or choices cannot. Blocks marked `sequential_sweep`
-(the numerical EHL solvers) are mapped over the points one after another inside the compiled
-function (`jax.lax.map`) instead. The batch runs in chunks of
-`CHUNK` points through one compiled function (a tqdm bar counts the chunks); with several local
-JAX devices each chunk is sharded over them along the batch axis (`jax.sharding`). Output arrays
-gain the grid's leading axes.
+(the numerical EHL solvers, the influence-coefficient contacts of a roller bearing) are mapped
+over the points one after another inside the compiled function (`jax.lax.map`) instead. The
+batch runs in chunks of `CHUNK` points through one compiled function (a tqdm bar counts the
+chunks); with several local JAX devices each chunk is sharded over them along the batch axis
+(`jax.sharding`). Output arrays gain the grid's leading axes.
 
 Under `jax.distributed` (several processes, e.g. one per host; docs/distributed_sweeps.md) each
 process evaluates a contiguous block of the chunks on its own devices and the blocks are gathered
@@ -67,7 +67,7 @@ def grid_points(axes: dict) -> tuple[tuple[int, ...], dict[str, np.ndarray]]:
     return shape, {key: values[index[:, k]] for k, (key, values) in enumerate(axes.items())}
 
 
-def _check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
+def check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
     """Validate the parameters at every corner of the grid (ValueError names the parameter)."""
     for corner in itertools.product(*[(values[0], values[-1]) for values in axes.values()]):
         values = dict(scene_values)
@@ -79,7 +79,7 @@ def _check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
 def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     """Evaluate `model` (a model.Model) over the grid `axes`; returns a RunResult with batched values."""
     inputs_from_values = model.inputs_from_values
-    _check_corners(model.scene.values, axes, inputs_from_values)
+    check_corners(model.scene.values, axes, inputs_from_values)
     shape, points = grid_points(axes)
     count = int(np.prod(shape))
     # process p evaluates points [p·share, (p + 1)·share): gathered in process order the blocks are
@@ -98,7 +98,7 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
         values.update(swept)
         return evaluate(inputs_from_values(values))
 
-    if any(block.sequential_sweep for block in blocks):  # iterative EHL solvers: one point after another
+    if any(block.sequential_sweep for block in blocks):  # iterative solvers: one point after another
         batched = jax.jit(lambda swept: jax.lax.map(point, swept))
     else:
         batched = jax.jit(jax.vmap(point))

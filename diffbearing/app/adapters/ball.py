@@ -8,7 +8,7 @@ from ... import ball_equilibrium, ball_validity, hertz
 from ...kinematics import RACE_CONTROLS
 from ...params import BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
-from ..formatting import format_number, state_column, swept_display, to_display, unit_label
+from ..formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .materials import material
 
@@ -247,7 +247,7 @@ def _stiffness(inputs: dict, settings: dict, results: dict) -> dict:
     return {"stiffness": matrix}
 
 
-def _stiffness_against_sweep(result, figure):
+def stiffness_against_sweep(result, figure):
     """Diagonal stiffness against the first swept quantity (scalar sweeps) or the point index."""
     key, values = next(iter(result.sweep_axes.items()))
     shown, display = swept_display(values, all_keys()[key].dimension)
@@ -279,7 +279,7 @@ STIFFNESS = Block(
                     "5×5 stiffness K = dF/dΔ, balls re-equilibrated (jacfwd through the implicit solve)",
                     in_report=False),),
     compute=_stiffness,
-    sweep_plot=_stiffness_against_sweep,
+    sweep_plot=stiffness_against_sweep,
 )
 
 
@@ -304,30 +304,6 @@ def _header(result) -> list[str]:
     ]
 
 
-def _stiffness_lines(matrix) -> list[str]:
-    k = np.asarray(matrix)
-    names = ["x", "y", "z", "θx", "θy"]
-    lines = ["", "Stiffness K = dF/dΔ (balls re-equilibrated; rows F: N, M: N·m; columns δ: µm, θ: mrad)",
-             "  " + " " * 6 + "".join(f"{'∂/∂' + n:>13}" for n in names)]
-    scale = np.array([1e-6, 1e-6, 1e-6, 1e-3, 1e-3])  # per µm and per mrad
-    row_names = ["Fx", "Fy", "Fz", "Mx", "My"]
-    for i in range(5):
-        lines.append(f"  {row_names[i]:<6}" + "".join(f"{k[i, j] * scale[j]:>13.5g}" for j in range(5)))
-    return lines
-
-
-def _ball_table_lines(result) -> list[str]:
-    outputs, values = result.model.outputs, result.values
-    shown = [key for key, out in outputs.items() if out.column and key in values]
-    header = "".join(f"{outputs[k].column + ' [' + unit_label(outputs[k].display) + ']':>12}" for k in shown)
-    lines = ["", "Balls (load distribution; semi-axes and spin speed in --json; – where a ball carries no load)",
-             "   #" + header]
-    columns = [to_display(values[k], outputs[k].unit, outputs[k].display) for k in shown]
-    for j in range(len(columns[0])):
-        lines.append(f"  {j:>2}" + "".join(f"{'–' if np.isnan(c[j]) else format_number(c[j]):>12}" for c in columns))
-    return lines
-
-
 def _report(result) -> list[str]:
     values = result.values
     d = np.asarray(values["displacement"])
@@ -337,8 +313,9 @@ def _report(result) -> list[str]:
     if result.model.inputs["operating"].axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
     if "stiffness" in values:
-        lines += _stiffness_lines(values["stiffness"])
-    lines += _ball_table_lines(result)
+        lines += stiffness_lines(values["stiffness"], "balls")
+    lines += element_table_lines(result, "Balls (load distribution; semi-axes and spin speed in --json; "
+                                         "– where a ball carries no load)")
     residual = float(values["residual"])
     state = ("converged" if bool(values["converged"]) else "DID NOT CONVERGE"
              if residual >= ball_equilibrium.RESIDUAL_TOLERANCE else "converged to a state OUTSIDE THE MODEL")
@@ -368,8 +345,9 @@ ADAPTER = register(Adapter(
         "bearing.outer_groove_radius": quantity("length"),
         "bearing.inner_groove_ratio": Key("number"),
         "bearing.outer_groove_ratio": Key("number"),
-        "bearing.contact_angle": quantity("angle", "free contact angle"),
-        "bearing.radial_clearance": quantity("length", "diametral"),
+        "bearing.contact_angle": quantity("angle", "ball bearings: the free contact angle; tapered roller bearings: "
+                                                    "the cup angle α_o"),
+        "bearing.radial_clearance": quantity("length", "diametral clearance (ball and roller bearings)"),
         "bearing.dynamic_load_rating": quantity("force"),
         "operating.inner_speed": quantity("angular_speed"),
         "operating.outer_speed": quantity("angular_speed"),

@@ -1,5 +1,9 @@
 """Roller–raceway contact: roller geometry and the Hertz line-contact reference (always), the
-pressure field by Hertz slices (effect contact = "slices") or influence coefficients ("influence")."""
+pressure field by Hertz slices (effect contact = "slices") or influence coefficients ("influence").
+
+These blocks model one contact: they run where the scene gives `contact.load` (`SINGLE_CONTACT`);
+a scene with `operating.force` instead is a whole bearing (roller_bearing.py). The roller itself
+(input `bearing`: diameters, length, profile, material, count) is built here for both."""
 
 import math
 
@@ -17,6 +21,7 @@ from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_ch
 from .materials import material
 
 DEFAULT_CONTACT_GRID = (32, 256)
+SINGLE_CONTACT = ("contact.load",)  # the scene key of this layout (registry: one roller–raceway contact)
 DEFAULT_CONTACT_TOLERANCE = 1e-11
 
 
@@ -73,8 +78,6 @@ def _entrainment_speed(v):
 
 
 def _loading(v, built) -> dict:
-    if "contact.load" not in v:
-        raise ValueError("missing required key 'contact.load' (the roller load Q)")
     return {"operating": RollerLoading(load=v["contact.load"], tilt=v.get("contact.tilt", 0.0),
                                        raceway_curvature=_raceway_curvature(v),
                                        entrainment_speed=_entrainment_speed(v))}
@@ -97,6 +100,7 @@ ROLLER_GEOMETRY = Block(
     enabled_by=None,
     requires=(),
     inputs=("bearing", "operating"),
+    scene_keys=SINGLE_CONTACT,
     outputs=(
         Output("geometry.effective_modulus", "Pa", "GPa", "effective modulus E' of roller and raceway"),
         Output("geometry.equivalent_radius", "m", "mm", "equivalent radius R in rolling, at mid-length"),
@@ -174,6 +178,7 @@ def _contact_block(method: str) -> Block:
         enabled_by=("contact", method),
         requires=("roller_geometry",),
         inputs=("bearing", "operating"),
+        scene_keys=SINGLE_CONTACT,
         outputs=_CONTACT_OUTPUTS,
         compute=_contact(method),
         validate=lambda settings, inputs: contact_settings(settings),
@@ -198,6 +203,21 @@ def _header(result) -> list[str]:
     curvature = float(loading.raceway_curvature)
     raceway = ("flat raceway" if curvature == 0 else
                f"{'convex' if curvature > 0 else 'concave'} raceway, R = {abs(1 / curvature) * 1e3:.4g} mm at mid-length")
+    material = bearing.material
+    return [
+        scene.title,
+        f"scene: {scene.source}",
+        "",
+        f"Roller     {bearing.kind}, {shape}, effective length l = {float(bearing.length) * 1e3:.4g} mm",
+        profile_line(scene, bearing),
+        f"Material   E = {float(material.elastic_modulus) / 1e9:.4g} GPa, ν = {float(material.poisson_ratio):.3g} "
+        "(roller and raceway)",
+        f"Contact    Q = {float(loading.load) / 1e3:.4g} kN, tilt {np.degrees(float(loading.tilt)) * 60:.4g} arcmin, {raceway}",
+    ]
+
+
+def profile_line(scene, bearing) -> str:
+    """The report's line of the roller's crowning profile with its parameters (units on each)."""
     units = {"flat_length": (1e3, "mm"), "crown_radius": (1e3, "mm"), "design_load": (1e-3, "kN"), "zm": (1e6, "µm"),
              "k1": (1, ""), "k2": (1, "")}
     parameters = ", ".join(f"{name} = {value * units[name][0]:.4g} {units[name][1]}".rstrip()
@@ -205,17 +225,7 @@ def _header(result) -> list[str]:
     if "contact.raceway_edge_radius" in scene.values:
         parameters += (f"; with the raceway edge radius {scene.values['contact.raceway_edge_radius'] * 1e3:.4g} mm "
                        "added to the crown")
-    material = bearing.material
-    return [
-        scene.title,
-        f"scene: {scene.source}",
-        "",
-        f"Roller     {bearing.kind}, {shape}, effective length l = {float(bearing.length) * 1e3:.4g} mm",
-        f"Profile    {bearing.profile.kind}" + (f" ({parameters})" if parameters else ""),
-        f"Material   E = {float(material.elastic_modulus) / 1e9:.4g} GPa, ν = {float(material.poisson_ratio):.3g} "
-        "(roller and raceway)",
-        f"Contact    Q = {float(loading.load) / 1e3:.4g} kN, tilt {np.degrees(float(loading.tilt)) * 60:.4g} arcmin, {raceway}",
-    ]
+    return f"Profile    {bearing.profile.kind}" + (f" ({parameters})" if parameters else "")
 
 
 def _report(result) -> list[str]:
@@ -261,7 +271,8 @@ ADAPTER = register(Adapter(
         "bearing.roller_small_diameter": quantity("length"),
         "bearing.roller_large_diameter": quantity("length"),
         "bearing.roller_length": quantity("length"),
-        "bearing.rollers": Key("integer", doc="rollers in the bearing (reported; a single contact does not use it)"),
+        "bearing.rollers": Key("integer", doc="rollers in the bearing Z (a whole bearing's load distribution; "
+                                             "reported for a single contact)"),
         "bearing.cone_half_angle": quantity("angle"),
         "bearing.pitch_diameter": quantity("length"),
         "operating.inner_speed": quantity("angular_speed"),
@@ -289,7 +300,7 @@ ADAPTER = register(Adapter(
               "tapered_roller": ("bearing.roller_small_diameter", "bearing.roller_large_diameter",
                                  "bearing.roller_length")},
     inputs=(InputBuilder(("bearing",), ROLLER_KINDS, _bearing),
-            InputBuilder(("operating",), ROLLER_KINDS, _loading)),
+            InputBuilder(("operating",), ROLLER_KINDS, _loading, scene_keys=SINGLE_CONTACT)),
     blocks=(ROLLER_GEOMETRY, _contact_block("slices"), _contact_block("influence")),
     header=_header,
     report=_report,
