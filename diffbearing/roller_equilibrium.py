@@ -120,7 +120,8 @@ def roller_raceways(bearing: RollerBearing, *, pitch_diameter, diametral_clearan
     if _is_concrete(pitch_diameter, bearing.large_diameter) and float(pitch_diameter) <= float(bearing.large_diameter):
         raise ValueError(f"bearing.pitch_diameter must exceed the roller diameter {float(bearing.large_diameter):g} m, "
                          f"got {float(pitch_diameter):g} m")
-    check_range("bearing.radial_clearance", diametral_clearance, low=-0.01 * pitch_diameter, unit=" m",
+    floor = -0.01 * float(pitch_diameter) if _is_concrete(pitch_diameter) else None
+    check_range("bearing.radial_clearance", diametral_clearance, low=floor, unit=" m",
                 why="diametral clearance; negative for a preloaded bearing, above −1 % of d_m")
     if bearing.kind == "cylindrical_roller":
         if _is_concrete(cup_angle) and float(cup_angle) != 0.0:

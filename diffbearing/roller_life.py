@@ -124,3 +124,20 @@ def roller_reference_rating_life(rating, roller_count, roller_diameter, effectiv
     loaded = damage > 0.0
     safe_damage = jnp.where(loaded, damage, 1.0)
     return jnp.where(loaded, safe_damage ** (-8.0 / 9.0), jnp.inf)
+
+
+def roller_equivalent_dynamic_load(force, contact_angle):
+    """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row radial roller
+    bearing for force [Fx, Fy, Fz] [N]: α = 0 (cylindrical) gives P = F_r; α > 0 (tapered) takes
+    e = 1.5 tan α, and X = 0.4, Y = 0.4 cot α where F_a/F_r > e (ISO 281:2007, Table 8)."""
+    radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
+    axial = jnp.abs(force[2])
+    tangent = jnp.tan(contact_angle)
+    heavy_axial = axial > 1.5 * tangent * radial
+    safe_tangent = jnp.where(tangent > 0, tangent, 1.0)
+    return jnp.where(heavy_axial & (tangent > 0), 0.4 * radial + 0.4 / safe_tangent * axial, radial)
+
+
+def roller_basic_rating_life(rating, equivalent_load):
+    """ISO 281 basic rating life L10 = (C_r/P)^{10/3} [10⁶ revolutions] of a roller bearing."""
+    return (rating / equivalent_load) ** (10.0 / 3.0)

@@ -134,3 +134,16 @@ def test_zero_loads_have_finite_gradients():
     gradient = jax.grad(lambda q: reference_life(rating, q))(loads)
     assert np.all(np.isfinite(gradient)) and np.all(np.asarray(gradient)[np.asarray(loads) == 0] == 0.0)
     assert np.all(np.asarray(gradient)[np.asarray(loads) > 0] < 0.0)
+
+
+def test_equivalent_load_of_roller_bearings():
+    """ISO 281 Table 8: a cylindrical bearing (α = 0) takes P = F_r; a tapered one P = F_r while
+    F_a/F_r ≤ e = 1.5 tan α, else P = 0.4 F_r + 0.4 cot α F_a; L10 = (C/P)^{10/3}."""
+    alpha = np.radians(15.0)
+    np.testing.assert_allclose(roller_life.roller_equivalent_dynamic_load(jnp.array([3e3, 4e3, 0.0]), 0.0), 5e3, rtol=1e-15)
+    light = jnp.array([4e3, 0.0, 1.5 * np.tan(alpha) * 4e3 * 0.99])
+    np.testing.assert_allclose(roller_life.roller_equivalent_dynamic_load(light, alpha), 4e3, rtol=1e-15)
+    heavy = jnp.array([4e3, 0.0, 2e3])
+    np.testing.assert_allclose(roller_life.roller_equivalent_dynamic_load(heavy, alpha), 0.4 * 4e3 + 0.4 / np.tan(alpha) * 2e3,
+                               rtol=1e-14)
+    np.testing.assert_allclose(roller_life.roller_basic_rating_life(50e3, 5e3), 10.0 ** (10.0 / 3.0), rtol=1e-14)

@@ -1,10 +1,13 @@
-"""Rating life of ball bearings (effect `life`): ISO 281 basic rating life and the ISO/TS 16281
-reference rating life from the solved load distribution."""
+"""Rating life of ball and roller bearings (effect `life`): ISO 281 basic rating life and the
+ISO/TS 16281 reference rating life from the solved load distribution (balls, or the rollers'
+laminae)."""
 
-from ... import life
+from ... import life, roller_life
 from ...params import BALL_BEARING_KINDS
+from ...roller_geometry import ROLLER_KINDS
 from ..formatting import column
-from ..registry import Adapter, Block, Key, Output, register
+from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 
 def _life(inputs: dict, settings: dict, results: dict) -> dict:
@@ -22,14 +25,48 @@ def _life(inputs: dict, settings: dict, results: dict) -> dict:
     }
 
 
+def _roller_life(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, raceways = inputs["bearing"], inputs["raceways"]
+    geometry = (bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter), bearing.length,
+                raceways.cup_angle, raceways.pitch_diameter)
+    computed = roller_life.roller_dynamic_load_rating(*geometry)
+    given = inputs["load_rating"]
+    rating = computed if given is None else given
+    load = roller_life.roller_equivalent_dynamic_load(inputs["operating"].force, raceways.cup_angle)
+    width = bearing.length / results["rollers.inner.lamina_load"].shape[-1]
+    return {
+        "life.basic_dynamic_load_rating": rating,
+        "life.iso281_load_rating": computed,
+        "life.equivalent_load": load,
+        "life.L10": roller_life.roller_basic_rating_life(rating, load),
+        "life.L10r": roller_life.roller_reference_rating_life(rating, *geometry,
+                                                              results["rollers.inner.lamina_load"] * width,
+                                                              results["rollers.outer.lamina_load"] * width),
+    }
+
+
+def _load_rating(v, built) -> dict:
+    return {"load_rating": v.get("bearing.dynamic_load_rating")}
+
+
 def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
     return [column("L10r [1e6 rev]", values["life.L10r"])]
 
 
+_ROLLER_OUTPUTS = (
+    Output("life.basic_dynamic_load_rating", "N", "kN", "C_r used (the scene's, else ISO 281)"),
+    Output("life.iso281_load_rating", "N", "kN", "C_r by ISO 281 from the geometry"),
+    Output("life.equivalent_load", "N", "kN", "ISO 281 equivalent load P = X Fr + Y Fa (Table 8)"),
+    Output("life.L10", "1e6 rev", "1e6 rev", "ISO 281 basic rating life L10 = (C/P)^(10/3)"),
+    Output("life.L10r", "1e6 rev", "1e6 rev", "ISO/TS 16281 reference rating life L10r (laminae)"),
+)
+
 ADAPTER = register(Adapter(
     name="life",
-    bearing_types=BALL_BEARING_KINDS,
-    keys={"effects.life": Key("boolean")},
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    keys={"effects.life": Key("boolean"),
+          "bearing.dynamic_load_rating": quantity("force", "basic dynamic load rating C_r (else ISO 281 from the geometry)")},
+    inputs=(InputBuilder(("load_rating",), ROLLER_KINDS, _load_rating, scene_keys=WHOLE_BEARING),),
     blocks=(Block(
         name="life",
         bearing_types=BALL_BEARING_KINDS,
@@ -44,6 +81,15 @@ ADAPTER = register(Adapter(
             Output("life.L10r", "1e6 rev", "1e6 rev", "ISO/TS 16281 reference rating life L10r"),
         ),
         compute=_life,
-    ),),
+    ), Block(
+        name="roller_life",
+        bearing_types=ROLLER_KINDS,
+        enabled_by=("life", True),
+        requires=(EQUILIBRIUM_BLOCK,),
+        inputs=("bearing", "raceways", "operating", "load_rating"),
+        outputs=_ROLLER_OUTPUTS,
+        compute=_roller_life,
+        scene_keys=WHOLE_BEARING,
+    )),
     sweep_columns=_sweep_columns,
 ))
