@@ -561,7 +561,8 @@ def roller_contact_loadings(displacement, roller: int, bearing: RollerBearing, r
     """(inner, outer) `RollerLoading`s of roller `roller`'s two contacts at Δ, for the pressure
     field by influence coefficients (`roller_contact.roller_contact`): the roller load [N], the
     tilt of roller against raceway (θ_t − φ inside, φ outside) [rad] and the raceway curvature at
-    mid-length [1/m]."""
+    mid-length [1/m]. A logarithmic crown is sized there at each contact's own radius, the laminae's
+    at the inner contact's (`lamina_gaps`): for the outer contact the two differ slightly."""
     results = roller_results(displacement, bearing, raceways, operating, model)
     _, tilt = ring_motion(displacement, bearing)
     angles = directions(bearing, raceways)
