@@ -82,6 +82,7 @@ DISPLACEMENT_SCALE = 1e-5  # m: unit of the scaled ring unknowns (10 µm, 10 µm
 ROLLER_SCALE = 1e-6  # m: unit of the scaled roller unknowns (1 µm, 1 µm / (l/2) rad)
 RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled ring and roller residuals are below
 ROLLER_NEWTON_STEPS = 40
+ROLLER_STEP_TOLERANCE = 1e-10  # × ROLLER_SCALE: the per-roller Newton stops below this step
 RING_MAX_STEPS = 60
 STATIC_GRADIENT_TOLERANCE = 1e-12
 # A roller that touches neither raceway (no centrifugal force, or no speed) has no equation for
@@ -307,33 +308,41 @@ def _roller_equations(scaled_states, args):
 
 def _roller_newton(residual, start, args):
     """Every roller's damped Newton at once: the 2×2 block of each roller (`_roller_blocks`), each
-    step halved per roller until ½‖R_j‖² falls (Armijo, c = 1e-4), at most 30 halvings; a fixed
-    count of `ROLLER_NEWTON_STEPS` steps (the rollers are independent, so each row of the residual
-    depends on its own roller alone)."""
+    step halved per roller until ½‖R_j‖² falls (Armijo, c = 1e-4; at most 30 halvings). The rollers
+    are independent, so each row of the residual depends on its own roller alone. Stops when no
+    roller moves by more than `ROLLER_STEP_TOLERANCE` (scaled) or after `ROLLER_NEWTON_STEPS`."""
     def merit(states):
         value = residual(states, args)
         return 0.5 * jnp.sum(value**2, axis=-1), value
 
-    def step(states, _):
+    def step(carry):
+        states, _, count = carry
         start_merit, value = merit(states)
         linear = jax.linearize(lambda s: residual(s, args), states)[1]
         direction = -jnp.linalg.solve(_roller_blocks(linear, states.shape), value[..., None])[..., 0]
 
+        def failing(length, trial):
+            return trial > (1.0 - 2e-4 * length) * start_merit
+
         def shorten(search):
-            length, count = search
-            trial, _ = merit(states + length[:, None] * direction)
-            failing = trial > (1.0 - 2e-4 * length) * start_merit
-            return jnp.where(failing, 0.5 * length, length), count + 1
+            length, trial, halvings = search
+            length = jnp.where(failing(length, trial), 0.5 * length, length)
+            return length, merit(states + length[:, None] * direction)[0], halvings + 1
 
         def busy(search):
-            length, count = search
-            trial, _ = merit(states + length[:, None] * direction)
-            return jnp.any(trial > (1.0 - 2e-4 * length) * start_merit) & (count < 30)
+            length, trial, halvings = search
+            return jnp.any(failing(length, trial)) & (halvings < 30)
 
-        length, _ = jax.lax.while_loop(busy, shorten, (jnp.ones(states.shape[0]), 0))
-        return states + length[:, None] * direction, None
+        ones = jnp.ones(states.shape[0])
+        length, _, _ = jax.lax.while_loop(busy, shorten, (ones, merit(states + direction)[0], 0))
+        change = length[:, None] * direction
+        return states + change, jnp.max(jnp.abs(change)), count + 1
 
-    return jax.lax.scan(step, start, None, length=ROLLER_NEWTON_STEPS)[0]
+    def moving(carry):
+        _, size, count = carry
+        return (size > ROLLER_STEP_TOLERANCE) & (count < ROLLER_NEWTON_STEPS)
+
+    return jax.lax.while_loop(moving, step, (start, jnp.asarray(jnp.inf), 0))[0]
 
 
 def _roller_blocks(linear, shape):
@@ -451,7 +460,7 @@ def _ring_solve(residual, start, args):
     model = args[3]
     y, steps = minimise_convex(_static_energy, start, args, gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     if model.centrifugal:
-        y, more = newton(residual, y, args, max_steps=RING_MAX_STEPS, loop="while", fallback=True, floor=1e-13)
+        y, more = newton(residual, y, args, max_steps=RING_MAX_STEPS, loop="while", fallback=False, floor=1e-13)
         steps = steps + more
     return y, steps.astype(y.dtype)
 

@@ -163,8 +163,10 @@ def test_stiffness_matches_central_differences(solve, stiffness, force, kind, ca
         np.testing.assert_allclose(exact, exact.T, rtol=0, atol=1e-12 * np.abs(exact).max())
 
 
+@pytest.mark.slow
 def test_displacement_derivative_through_the_solve(solve):
-    """dΔ/d(F_r, F_a, clearance) through the implicit ring solve against a central difference."""
+    """dΔ/d(F_r, F_a, clearance) through the implicit ring solve (with centrifugal force: the rollers'
+    implicit solves under it) against a central difference; slow: 35 s of compiling JVP and VJP."""
     bearing, raceways = tapered(5e-6)
 
     def displacement(x):
