@@ -1,7 +1,11 @@
-"""Timing helper shared by the benchmarks."""
+"""Timing and memory helpers shared by the benchmarks."""
 
+import os
+import platform
+import resource
 import statistics
 import time
+import tracemalloc
 
 import jax
 
@@ -14,3 +18,40 @@ def median_time(function, repeats):
         jax.block_until_ready(function())
         times.append(time.perf_counter() - start)
     return statistics.median(times)
+
+
+def compiled_with_time(function, *args):
+    """(compiled executable, compile time [s]) of `jax.jit(function)` for `args` (lowering included)."""
+    start = time.perf_counter()
+    compiled = jax.jit(function).lower(*args).compile()
+    return compiled, time.perf_counter() - start
+
+
+def xla_memory_mib(compiled):
+    """XLA's memory of one call of a compiled executable [MiB]: arguments + outputs + temporaries
+    (`compiled.memory_analysis()`); None where the backend does not say."""
+    stats = compiled.memory_analysis()
+    if stats is None:
+        return None
+    return (stats.argument_size_in_bytes + stats.output_size_in_bytes + stats.temp_size_in_bytes) / 2**20
+
+
+def traced_peak_mib(function):
+    """Peak Python/NumPy heap [MiB] while `function()` runs (tracemalloc; NumPy reports its arrays)."""
+    tracemalloc.start()
+    try:
+        function()
+        return tracemalloc.get_traced_memory()[1] / 2**20
+    finally:
+        tracemalloc.stop()
+
+
+def peak_rss_mib():
+    """Peak resident memory of this process so far [MiB] (Linux ru_maxrss is in KiB)."""
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+
+
+def machine():
+    """One line: architecture, JAX backend × devices, JAX version, CPU cores."""
+    return (f"{platform.machine()}, {os.cpu_count()} cores, {jax.devices()[0].platform.upper()} ×{len(jax.devices())}, "
+            f"jax {jax.__version__}")
