@@ -574,11 +574,10 @@ def roller_contact_loadings(displacement, roller: int, bearing: RollerBearing, r
     at the inner contact's (`lamina_gaps`): for the outer contact the two differ slightly."""
     results = roller_results(displacement, bearing, raceways, operating, model)
     _, tilt = ring_motion(displacement, bearing)
-    angles = directions(bearing, raceways)
-    mean = 0.5 * (bearing.small_diameter + bearing.large_diameter)
-    radius = 0.5 * raceways.pitch_diameter
-    inner_curvature = jnp.cos(angles.cone_angle) / (radius - 0.5 * mean * jnp.cos(angles.cone_angle))
-    outer_curvature = -jnp.cos(angles.cup_angle) / (radius + 0.5 * mean * jnp.cos(angles.cup_angle))
+    middle = jnp.zeros(1)
+    roller_curvature = 2.0 * jnp.cos(bearing.cone_half_angle) / roller_diameter(bearing, middle)[0]
+    inner_sum, outer_sum = raceway_curvatures(bearing, raceways, middle)
+    inner_curvature, outer_curvature = inner_sum[0] - roller_curvature, outer_sum[0] - roller_curvature
     inner = RollerLoading(load=results.inner_load[roller], tilt=tilt[roller] - results.tilt[roller],
                           raceway_curvature=inner_curvature)
     outer = RollerLoading(load=results.outer_load[roller], tilt=results.tilt[roller], raceway_curvature=outer_curvature)

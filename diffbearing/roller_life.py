@@ -102,7 +102,7 @@ def lamina_ratings(rating, roller_count, roller_diameter, contact_angle, pitch_d
     return inner * split, outer * split
 
 
-def roller_reference_rating_life(rating, roller_count, roller_diameter, effective_length, contact_angle, pitch_diameter,
+def roller_reference_rating_life(rating, roller_count, roller_diameter, contact_angle, pitch_diameter,
                                  inner_lamina_loads, outer_lamina_loads):
     """ISO/TS 16281 §5.3 basic reference rating life L10r [10⁶ revolutions] of a single-row roller bearing, inner ring rotating.
 
@@ -113,9 +113,8 @@ def roller_reference_rating_life(rating, roller_count, roller_diameter, effectiv
         L10r = (Σ_k [(q_ei,k/q_ci)^{9/2} + (q_ee,k/q_ce)^{9/2}])^{−8/9}.
     Written in these powers no root of a zero sum is taken: unloaded laminae add exactly 0 with finite
     gradients, and a bearing with no load anywhere gives L10r = +inf with a zero gradient.
-    L_we enters through C_r only and is accepted so the geometry reads as in `roller_dynamic_load_rating`.
+    L_we enters through C_r only.
     """
-    del effective_length  # eqs. (47)–(57) need L_we only through C_r
     laminae = inner_lamina_loads.shape[-1]
     rating_inner, rating_outer = lamina_ratings(rating, roller_count, roller_diameter, contact_angle, pitch_diameter, laminae)
     inner_mean = jnp.sum(positive_power(inner_lamina_loads, 4.0), axis=0) / roller_count

@@ -87,7 +87,7 @@ def radial_lamina_loads(force, laminae=30):
 
 def reference_life(rating, inner, outer=None):
     outer = inner if outer is None else outer
-    return roller_life.roller_reference_rating_life(rating, Z, DIAMETER, LENGTH, 0.0, PITCH, inner, outer)
+    return roller_life.roller_reference_rating_life(rating, Z, DIAMETER, 0.0, PITCH, inner, outer)
 
 
 @pytest.mark.parametrize("load_ratio", [0.05, 0.3])

@@ -27,19 +27,19 @@ def _life(inputs: dict, settings: dict, results: dict) -> dict:
 
 def _roller_life(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, raceways = inputs["bearing"], inputs["raceways"]
-    geometry = (bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter), bearing.length,
-                raceways.cup_angle, raceways.pitch_diameter)
-    computed = roller_life.roller_dynamic_load_rating(*geometry)
+    count, diameter = bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter)
+    angle, pitch = raceways.cup_angle, raceways.pitch_diameter
+    computed = roller_life.roller_dynamic_load_rating(count, diameter, bearing.length, angle, pitch)
     given = inputs["load_rating"]
     rating = computed if given is None else given
-    load = roller_life.roller_equivalent_dynamic_load(inputs["operating"].force, raceways.cup_angle)
+    load = roller_life.roller_equivalent_dynamic_load(inputs["operating"].force, angle)
     width = bearing.length / results["rollers.inner.lamina_load"].shape[-1]
     return {
         "life.basic_dynamic_load_rating": rating,
         "life.iso281_load_rating": computed,
         "life.equivalent_load": load,
         "life.L10": roller_life.roller_basic_rating_life(rating, load),
-        "life.L10r": roller_life.roller_reference_rating_life(rating, *geometry,
+        "life.L10r": roller_life.roller_reference_rating_life(rating, count, diameter, angle, pitch,
                                                               results["rollers.inner.lamina_load"] * width,
                                                               results["rollers.outer.lamina_load"] * width),
     }
