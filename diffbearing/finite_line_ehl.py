@@ -99,6 +99,8 @@ def axial_cells(count: int, flat_end, roller_end, clustering: float | None = Non
     clustering None (the default): a quarter of the cells uniform over [0, FINE_START·flat_end],
     the rest uniform over the fine zone from there to the roller end.
 
+    clustering 0: uniform cells (the matrix-free solver's, whose deflection is an FFT convolution).
+
     clustering β > 0: one smooth map for every count, the cells clustered at the flat's end
     y = f (`flat_end`), where the profile's curvature jumps and the end constriction of the film
     sits: uniform η ∈ [0, 1] mapped by y = f[1 + sinh(β(η − B))/sinh(βB)], with
@@ -112,6 +114,8 @@ def axial_cells(count: int, flat_end, roller_end, clustering: float | None = Non
         split = FINE_START * flat_end
         return jnp.concatenate([jnp.linspace(0.0, split, coarse + 1),
                                 jnp.linspace(split, roller_end, count - coarse + 1)[1:]])
+    if clustering == 0:
+        return jnp.linspace(0.0, roller_end, count + 1)
     ratio = flat_end / roller_end
     shift = jnp.log((1.0 + np.expm1(clustering) * ratio) / (1.0 + np.expm1(-clustering) * ratio)) / (2.0 * clustering)
     eta = jnp.linspace(0.0, 1.0, count + 1)
@@ -180,6 +184,65 @@ def reynolds_from_meniscus(pressure, mass, flow, dry_flow, transverse, spacing, 
     return jnp.where(s > 1, wet, jnp.where(first, s_first * wet, dry))
 
 
+class ColumnGrid(eqx.Module):
+    """What the column-local equations read (dimensionless, Hertz half-width units): nodes x
+    (nx) along rolling and their spacing, cell centres y (ny), edges (ny + 1) and widths (ny)
+    along the half roller, the fluid, the oil supply H_oil (None: flooded) and the fraction of
+    the side inflow in the meniscus balance."""
+
+    x: jax.Array
+    spacing: float
+    y: jax.Array
+    edges: jax.Array
+    widths: jax.Array
+    fluid: FluidParameters
+    supply: jax.Array | None
+    side_inflow: float = eqx.field(static=True)
+
+
+def local_equations(pressure, height, meniscus, columns: ColumnGrid):
+    """The column-local equations [-], (R, ny) with R = nx − 2 (+ 1 when starved): the Reynolds
+    complementarity of each interior node, then the meniscus equation of each column (docstring
+    of `finite_line_film`). The equations of column j read the pressure P (nx, ny) and film H
+    (nx, ny) of columns j − 1, j, j + 1 and the meniscus X_m,j (ny) of column j alone; along x,
+    a Reynolds row at node i reads nodes i − 2 … i + 1, a meniscus row its whole column."""
+    x, spacing, y, edges, widths = columns.x, columns.spacing, columns.y, columns.edges, columns.widths
+    fluid, supply, side_inflow = columns.fluid, columns.supply, columns.side_inflow
+    nx, ny = pressure.shape
+    highest_meniscus = OUTLET - 0.5 * spacing
+    density, flow = reynolds_coefficients(pressure, height, fluid)
+    # the meniscus of each column: cells from it to each node, the gap and ε there (p = 0)
+    cells = (x[:, None] - jnp.clip(meniscus, INLET, highest_meniscus)[None, :]) / spacing
+    first = (cells[1:] > 0) & (cells[1:] <= 1)
+    meniscus_height = jnp.sum(jnp.where(first, cells[1:] * height[:-1] + (1 - cells[1:]) * height[1:], 0.0),
+                              axis=0)
+    meniscus_flow = reynolds_coefficients(jnp.zeros(ny), meniscus_height, fluid)[1]
+    # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
+    flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
+    end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
+    flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
+    poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
+    dry_flow = reynolds_coefficients(jnp.zeros_like(height), height, fluid)[1]
+    reynolds = reynolds_from_meniscus(pressure, density * height, flow, dry_flow, poiseuille_y[1:-1], spacing,
+                                      cells, meniscus_height, meniscus_flow)
+    complementarity = fischer_burmeister(pressure[1:-1], reynolds)
+    if supply is None:
+        return complementarity
+    # mass across the meniscus: ρ̄H − ε ∂P/∂X of the full film = H_oil, taken where the
+    # wedge term is in flux form (second-order upwind face values (3m_i − m_{i−1})/2), on
+    # the faces k + 3/2 and k + 5/2 after the first wet node k, weighted s_k and 1 − s_k so
+    # that it is continuous as the meniscus crosses a node
+    mass = density * height
+    upwind = 0.5 * (3.0 * mass[:-1] - jnp.concatenate([mass[:1], mass[:-2]]))
+    face_flux = upwind - 0.5 * (flow[1:] + flow[:-1]) * jnp.diff(pressure, axis=0) / spacing
+    face_flux = jnp.concatenate([face_flux, jnp.repeat(height[-1:], 3, axis=0)])  # past the outlet: the gap
+    flux = jnp.sum(jnp.where(first, cells[1:] * face_flux[2:-1] + (1 - cells[1:]) * face_flux[3:], 0.0), axis=0)
+    if side_inflow:  # the side inflow up to those faces (docstring)
+        flux = flux - side_inflow * spacing * jnp.sum(jnp.clip(3.0 - cells, 0.0, 1.0) * poiseuille_y, axis=0)
+    meniscus_equation = _box_complementarity(meniscus, INLET, highest_meniscus, flux / supply - 1.0)
+    return jnp.concatenate([complementarity, meniscus_equation[None, :]])
+
+
 def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
     """Jacobian [-] of column-local equations under elastic coupling, by coloring.
 
@@ -245,7 +308,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             instead of the 1-D line solution: a continuation in any argument, taken in steps
             small enough that each converges (the starved-EHL paper's roller from 2.0 to 1.8 µm,
             1028 N, 33 × 48: steps of 0.02 µm, about 2 s each).
-        axial_clustering: None for the default cells along the roller, or β > 0 for cells clustered
+        axial_clustering: None for the default cells along the roller, 0 for uniform cells, or β > 0 for cells clustered
             at the flat's end by a smooth map (`axial_cells`; not yet the default: the
             starved-EHL paper's roller near the flooded limit, h_oil = 1.8 and 2.0 µm on 33 × 48, does not converge on it).
         side_inflow: the fraction in [0, 1] of the side inflow that each column's meniscus
@@ -282,8 +345,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     nx, ny = check_grid(grid)
     if not (load_path and load_path[-1] == 1.0 and all(a < b for a, b in zip((0.0, *load_path), load_path))):
         raise ValueError(f"load_path: increasing load fractions in (0, 1] ending at 1.0, got {load_path}")
-    if axial_clustering is not None and not axial_clustering > 0:
-        raise ValueError(f"axial_clustering: None or a clustering β > 0, got {axial_clustering}")
+    if axial_clustering is not None and not axial_clustering >= 0:
+        raise ValueError(f"axial_clustering: None, 0 (uniform cells) or a clustering β > 0, got {axial_clustering}")
     if not 0.0 <= side_inflow <= 1.0:
         raise ValueError(f"side_inflow: the fraction of the side inflow in the meniscus balance, in [0, 1], "
                          f"got {side_inflow}")
@@ -310,45 +373,11 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     profile_film = crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
     load_target = 0.5 * np.pi * flat_length / half_width  # ∬P dX dY over the whole roller
     supply = oil_layer * radius / half_width**2 if starved else None  # H_oil
+    columns = ColumnGrid(jnp.asarray(x), spacing, y, edges, widths, fluid, supply, side_inflow)
 
     def film(pressure, offset):
         elastic = (kernel @ pressure.reshape(-1)).reshape(nx, ny)
         return offset + 0.5 * jnp.asarray(x)[:, None] ** 2 + profile_film[None, :] + elastic
-
-    def equations(pressure, height, meniscus):
-        """The local equations, (R, ny) with R = nx − 2 (+ 1 when starved): the Reynolds
-        complementarity of each interior node, then the meniscus equation of each column."""
-        density, flow = reynolds_coefficients(pressure, height, fluid)
-        # the meniscus of each column: cells from it to each node, the gap and ε there (p = 0)
-        cells = (jnp.asarray(x)[:, None] - jnp.clip(meniscus, INLET, highest_meniscus)[None, :]) / spacing
-        first = (cells[1:] > 0) & (cells[1:] <= 1)
-        meniscus_height = jnp.sum(jnp.where(first, cells[1:] * height[:-1] + (1 - cells[1:]) * height[1:], 0.0),
-                                  axis=0)
-        meniscus_flow = reynolds_coefficients(jnp.zeros(ny), meniscus_height, fluid)[1]
-        # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
-        flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
-        end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
-        flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
-        poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
-        dry_flow = reynolds_coefficients(jnp.zeros_like(height), height, fluid)[1]
-        reynolds = reynolds_from_meniscus(pressure, density * height, flow, dry_flow, poiseuille_y[1:-1], spacing,
-                                          cells, meniscus_height, meniscus_flow)
-        complementarity = fischer_burmeister(pressure[1:-1], reynolds)
-        if not starved:
-            return complementarity
-        # mass across the meniscus: ρ̄H − ε ∂P/∂X of the full film = H_oil, taken where the
-        # wedge term is in flux form (second-order upwind face values (3m_i − m_{i−1})/2), on
-        # the faces k + 3/2 and k + 5/2 after the first wet node k, weighted s_k and 1 − s_k so
-        # that it is continuous as the meniscus crosses a node
-        mass = density * height
-        upwind = 0.5 * (3.0 * mass[:-1] - jnp.concatenate([mass[:1], mass[:-2]]))
-        face_flux = upwind - 0.5 * (flow[1:] + flow[:-1]) * jnp.diff(pressure, axis=0) / spacing
-        face_flux = jnp.concatenate([face_flux, jnp.repeat(height[-1:], 3, axis=0)])  # past the outlet: the gap
-        flux = jnp.sum(jnp.where(first, cells[1:] * face_flux[2:-1] + (1 - cells[1:]) * face_flux[3:], 0.0), axis=0)
-        if side_inflow:  # the side inflow up to those faces (docstring)
-            flux = flux - side_inflow * spacing * jnp.sum(jnp.clip(3.0 - cells, 0.0, 1.0) * poiseuille_y, axis=0)
-        meniscus_equation = _box_complementarity(meniscus, INLET, highest_meniscus, flux / supply - 1.0)
-        return jnp.concatenate([complementarity, meniscus_equation[None, :]])
 
     def balance(pressure, fraction=1.0):
         return (2.0 * spacing * jnp.sum(pressure * widths) - fraction * load_target) / load_target * 0.5 * np.pi
@@ -358,7 +387,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         the load balance (at `fraction` of the load: the continuation's stages), then (starved)
         the meniscus equation of each column."""
         pressure, offset, meniscus = unpack(unknowns)
-        local = equations(pressure, film(pressure, offset), meniscus)
+        local = local_equations(pressure, film(pressure, offset), meniscus, columns)
         result = jnp.append(local[:nx - 2].reshape(-1), balance(pressure, fraction))
         return jnp.concatenate([result, local[nx - 2]]) if starved else result
 
@@ -367,7 +396,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         one forward pass per unknown through the influence matrix K (`local_and_elastic_jacobian`)."""
         pressure, offset, meniscus = unpack(unknowns)
         blocks, offset_column, meniscus_diagonal = local_and_elastic_jacobian(
-            lambda inner, height, menisci: equations(jnp.pad(inner, ((1, 1), (0, 0))), height, menisci),
+            lambda inner, height, menisci: local_equations(jnp.pad(inner, ((1, 1), (0, 0))), height, menisci, columns),
             pressure[1:-1], film(pressure, offset), meniscus, influence)
         rows = blocks.shape[1]  # nx − 2, or nx − 1 with the meniscus equations
         # rows (r, j) → equation order: Reynolds r < nx − 2 row-major, the balance, the menisci

@@ -13,7 +13,8 @@ import jax.numpy as jnp
 import numpy as np
 
 from ... import film_formulas, hertz
-from ...finite_line_ehl import finite_line_film, half_domain_grid
+from ...finite_line_ehl import MAX_UNKNOWNS, finite_line_film, half_domain_grid
+from ...finite_line_krylov import finite_line_film_krylov, krylov_levels
 from ...kinematics import raceway_entrainment_speed
 from ...line_ehl import check_nodes, density_ratio, line_film
 from ...params import BALL_BEARING_KINDS, _as_float, check_range
@@ -27,6 +28,10 @@ DEFAULT_LINE_NODES = 513
 # domain, on fidelity.grid = [nx, ny]: nx nodes along rolling by ny cells along the whole roller,
 # of which the ⌈ny/2⌉ on y ≥ 0 are solved (`finite_line_ehl.half_domain_grid`).
 DEFAULT_FINITE_LINE_GRID = (33, 96)
+# Its solver (fidelity.solver): "dense", the dense Newton on cells clustered at the roller end,
+# or "krylov", the matrix-free Newton–Krylov on uniform cells (`finite_line_krylov`); by default
+# the dense one where the half grid fits it, else Newton–Krylov.
+FINITE_LINE_SOLVERS = ("dense", "krylov")
 # Chevalier's γ for a line contact: no side flow, so the film follows the supply until it meets
 # the flooded one; γ = 20 matches the 1-D numerical starved films (`benchmarks/line_ehl.py`).
 LINE_STARVATION_SHARPNESS = 20.0
@@ -106,10 +111,22 @@ def _line_nodes(settings: dict) -> int:
     return settings["fidelity"].get("grid", [DEFAULT_LINE_NODES])[0]
 
 
-def finite_line_settings(settings: dict) -> tuple[int, int]:
-    """(nx, ny on the half domain) of the finite line level from fidelity.grid (whole roller
-    length), default [33, 96]; ValueError beyond the dense Newton's size."""
-    return half_domain_grid(settings["fidelity"].get("grid", DEFAULT_FINITE_LINE_GRID))
+def finite_line_settings(settings: dict) -> tuple[tuple[int, int], str]:
+    """((nx, ny on the half domain), solver) of the finite line level from fidelity.grid (whole
+    roller length, default [33, 96]) and fidelity.solver (default: "dense" where the half grid
+    fits it, else "krylov"); ValueError naming the key for a grid the solver does not take."""
+    fidelity = settings["fidelity"]
+    nx, ny = (int(n) for n in fidelity.get("grid", DEFAULT_FINITE_LINE_GRID))
+    half = (ny + 1) // 2
+    solver = fidelity.get("solver", "dense" if (nx - 2) * half <= MAX_UNKNOWNS else "krylov")
+    if solver == "dense":
+        return half_domain_grid((nx, ny)), solver
+    try:
+        krylov_levels((nx, half))
+    except ValueError as error:
+        raise ValueError(f"fidelity.grid = [nx, ny] with fidelity.solver = \"krylov\" (half ⌈ny/2⌉ solved): "
+                         f"{str(error).removeprefix('grid: ')}") from None
+    return (nx, half), solver
 
 
 def _roller_film_case(inputs: dict):
@@ -140,10 +157,11 @@ def _film_line(inputs: dict, settings: dict, results: dict) -> dict:
 def _finite_line(inputs: dict, settings: dict, oil_layer=None):
     bearing, lubricant = inputs["bearing"], inputs["lubricant"]
     _, radius, speed, viscosity, pressure_viscosity, modulus = _roller_film_case(inputs)
-    return finite_line_film(inputs["operating"].load, radius, speed, viscosity, pressure_viscosity, modulus,
-                            bearing.profile, bearing.length, film_length(bearing), grid=finite_line_settings(settings),
-                            viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law,
-                            oil_layer=oil_layer)
+    grid, solver = finite_line_settings(settings)
+    solve = finite_line_film if solver == "dense" else finite_line_film_krylov
+    return solve(inputs["operating"].load, radius, speed, viscosity, pressure_viscosity, modulus, bearing.profile,
+                 bearing.length, film_length(bearing), grid=grid, viscosity_law=lubricant.viscosity_law,
+                 density_law=lubricant.density_law, oil_layer=oil_layer)
 
 
 _FINITE_LINE_FIELDS = ("central", "minimum", "minimum_position", "converged", "x", "y", "pressure", "thickness")
@@ -269,15 +287,22 @@ def _finite_line_film_plot(result, figure):
 
 # --- report --------------------------------------------------------------------------------------
 
+def _uniform(y) -> bool:
+    """Whether cell centres y are uniform (the Newton–Krylov grid)."""
+    steps = np.diff(np.asarray(y))
+    return bool(np.allclose(steps, steps[0], rtol=1e-9))
+
+
 def _report(result) -> list[str]:
     values = result.values
     if "film.y" in values:  # the finite line level
-        level, grid = "finite line EHL", f"{len(values['film.x'])} × {len(values['film.y'])} half-domain grid"
+        solver = "Newton–Krylov" if _uniform(values["film.y"]) else "Newton"
+        level, grid = "finite line EHL", f"{solver}, {len(values['film.x'])} × {len(values['film.y'])} half-domain grid"
         meniscus = "a meniscus per y cell by mass balance"
     else:
-        level, grid, meniscus = "line EHL", f"{len(values.get('film.x', ()))} nodes", "meniscus by flux balance"
+        level, grid, meniscus = "line EHL", f"Newton, {len(values.get('film.x', ()))} nodes", "meniscus by flux balance"
     lines = []
-    for key, solve in (("film.converged", f"Newton, {grid}, fully flooded"),
+    for key, solve in (("film.converged", f"{grid}, fully flooded"),
                        ("starvation.converged", f"starved by the oil layer, {meniscus}")):
         if key in values:
             state = "converged" if bool(values[key]) else "DID NOT CONVERGE (values are the last iterate)"
@@ -309,6 +334,10 @@ ADAPTER = register(Adapter(
         "fidelity.grid": Key("integers", length=2, read_by=_FILM_BLOCKS,
                              doc="[nx, ny] cells along rolling and along the whole roller "
                                  "(2-D EHL solves the half y ≥ 0)"),
+        "fidelity.solver": Key("choice", choices=FINITE_LINE_SOLVERS,
+                               read_by=("film_finite_line", "starvation_finite_line"),
+                               doc="finite line EHL: dense Newton (clustered cells) or matrix-free Newton–Krylov "
+                                   "(uniform cells); default dense where the grid fits it"),
     },
     inputs=(InputBuilder(("oil_layer",), ROLLER_KINDS, _oil_layer),),
     blocks=(

@@ -1,0 +1,310 @@
+"""The finite line contact on fine grids: matrix-free Newton–Krylov with FFT deflection.
+
+The same discrete equations as `finite_line_ehl` (Reynolds complementarity, load balance,
+menisci; `local_equations`) on uniform cells along the half roller, so that the elastic film is a
+convolution: H_el = (1/2π) Σ P C with Love's rectangle coefficients over the whole roller (each
+cell and its mirror image at −y), applied by DC-FFT (`influence`) in O(N log N) and O(N) memory
+instead of the dense influence matrix's O(N²).
+
+Solver: nested iteration. The coarsest grid (nx ≤ 2·COARSEST_NODES − 1 nodes) is solved by the
+dense Newton of `finite_line_ehl` with its load continuation and held menisci; each finer grid, x
+nodes and y cells doubled, starts from the coarser solution interpolated (bilinear, p = 0 on the
+roller end; a node is wet only where every coarse node around it is) and is solved by inexact
+Newton–Krylov (`newton_krylov`). Preconditioner: the exact Jacobian blocks of each y column —
+its interior pressures and meniscus against its own equations, the elastic coupling of the column
+with itself and its two neighbours' films included — inverted column by column, bordered by the
+film offset H₀ and the load balance through their Schur complement. The blocks come from
+colored Jacobian-vector products of the column-local equations (Curtis–Powell–Reid: the Reynolds
+row of node i reads nodes i − 2 … i + 1 of columns j − 1 … j + 1, so 5 × 3 colors suffice)
+and from the meniscus rows by three colored vector-Jacobian products. The coupling between
+columns that the blocks leave out is what GMRES iterates on: measured in
+`benchmarks/finite_line_krylov.py`.
+
+Derivatives: implicit, through the finest solution (`newton_krylov.krylov_root`), the tangent
+systems solved by the same preconditioned GMRES.
+"""
+
+import math
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from .finite_line_ehl import ColumnGrid, FiniteLineFilm, axial_cells, finite_line_film, local_equations
+from .hertz import line_contact
+from .influence import coefficient_spectrum, influence_coefficients, love_rectangle
+from .line_ehl import INLET, OUTLET, FluidParameters
+from .newton_krylov import krylov_root, newton_krylov
+from .numerics import require_float64
+from .roller_profile import RollerProfile, crown_drop
+
+COARSEST_NODES = 33  # nodes along rolling of the coarsest (dense) grid
+COARSEST_CELLS = 32  # fewest cells on the half roller of a coarser grid: fewer put h < 0 at the roller end
+NEWTON_STEPS = 60  # Newton–Krylov steps per level
+BAND = 5  # colors along x: a Reynolds row reads nodes i − 2 … i + 1
+DIMENSIONLESS_MODULUS = 4.0  # E' in influence_coefficients' 2/(πE') so that H_el = (1/2π) Σ P C
+
+
+def krylov_levels(grid) -> list[tuple[int, int]]:
+    """The nested grids (nx, ny on the half domain), coarsest first: nx nodes halved while the
+    coarser grid keeps ≥ COARSEST_NODES nodes, ny cells halved alike while they stay
+    ≥ COARSEST_CELLS (a coarse solution with h < 0 at the roller end is no start); ValueError
+    unless nx = 2^k·(n₀ − 1) + 1 with n₀ ≥ COARSEST_NODES and ny ≥ 8."""
+    nx, ny = (int(n) for n in grid)
+    if nx < COARSEST_NODES or ny < 8:
+        raise ValueError(f"grid: the finite-line EHL (Newton–Krylov) needs nx ≥ {COARSEST_NODES} and ny ≥ 8 cells on "
+                         f"the half roller, got {[nx, ny]}")
+    levels = [(nx, ny)]
+    while (levels[0][0] - 1) % 2 == 0 and (levels[0][0] - 1) // 2 + 1 >= COARSEST_NODES:
+        cells = levels[0][1]
+        levels.insert(0, ((levels[0][0] - 1) // 2 + 1, math.ceil(cells / 2) if cells >= 2 * COARSEST_CELLS else cells))
+    if (levels[0][0] - 2) * levels[0][1] > 4200:
+        raise ValueError(f"grid: nx must be 2^k·(n₀ − 1) + 1 with a coarsest n₀ of {COARSEST_NODES} … 65 nodes "
+                         f"(e.g. 65, 129, 257, 513), got nx = {nx}")
+    return levels
+
+
+class _Level:
+    """One grid of the nested iteration: its columns (ColumnGrid), FFT spectrum, rigid film and
+    the elastic coefficients the preconditioner reads. Dimensionless, Hertz half-width units."""
+
+    def __init__(self, nx, ny, half_length, rigid_axial, fluid, supply, side_inflow, load_target):
+        self.nx, self.ny = nx, ny
+        x = np.linspace(INLET, OUTLET, nx)
+        self.spacing = x[1] - x[0]
+        self.centre = int(np.argmin(np.abs(x)))  # the node at x = 0
+        edges = axial_cells(ny, 0.0, half_length, 0.0)
+        self.cell = half_length / ny
+        y = 0.5 * (edges[1:] + edges[:-1])
+        self.columns = ColumnGrid(jnp.asarray(x), self.spacing, y, edges, jnp.diff(edges), fluid, supply, side_inflow)
+        self.spectrum = coefficient_spectrum(
+            influence_coefficients(nx, 2 * ny, self.spacing, self.cell, DIMENSIONLESS_MODULUS))
+        self.rigid = 0.5 * jnp.asarray(x)[:, None] ** 2 + rigid_axial(y)[None, :]
+        self.load_target = load_target
+        self.starved = supply is not None
+        self.interior = (nx - 2) * ny
+        offsets = np.arange(-(nx - 1), nx)[:, None] * self.spacing  # node offset, then cell offset −1 … 2ny
+        cells = np.arange(-1, 2 * ny + 1)[None, :] * self.cell
+        self.coefficients = love_rectangle(jnp.asarray(offsets), jnp.asarray(cells), 0.5 * self.spacing,
+                                           0.5 * self.cell) / (2 * np.pi)
+
+    def elastic(self, pressure):
+        """H_el (nx, ny) of P (nx, ny) on y ≥ 0 and its mirror image."""
+        whole = jnp.concatenate([pressure[:, ::-1], pressure], axis=1)
+        shape = (2 * self.nx, 4 * self.ny)
+        spectrum = jnp.fft.rfft2(whole, s=shape)
+        return jnp.fft.irfft2(self.spectrum * spectrum, s=shape)[:self.nx, self.ny:2 * self.ny]
+
+    def film(self, pressure, offset):
+        return offset + self.rigid + self.elastic(pressure)
+
+    def unpack(self, unknowns):
+        pressure = jnp.pad(unknowns[:self.interior].reshape(self.nx - 2, self.ny), ((1, 1), (0, 0)))
+        meniscus = unknowns[self.interior + 1:] if self.starved else jnp.full(self.ny, INLET)
+        return pressure, unknowns[self.interior], meniscus
+
+    def balance(self, pressure):
+        return (2.0 * self.spacing * jnp.sum(pressure * self.columns.widths) - self.load_target) / self.load_target \
+            * 0.5 * np.pi
+
+    def residual(self, unknowns, _=None):
+        """Reynolds complementarity (row-major), load balance, (starved) menisci: the dense
+        solver's order."""
+        pressure, offset, meniscus = self.unpack(unknowns)
+        local = local_equations(pressure, self.film(pressure, offset), meniscus, self.columns)
+        result = jnp.append(local[:self.nx - 2].reshape(-1), self.balance(pressure))
+        return jnp.concatenate([result, local[self.nx - 2]]) if self.starved else result
+
+    def preconditioner(self, unknowns, _=None):
+        """v ↦ M⁻¹v: the column blocks of J at `unknowns`, bordered by H₀ and the load balance
+        (module docstring)."""
+        nx, ny = self.nx, self.ny
+        rows = nx - 2
+        size = rows + 1 if self.starved else rows  # unknowns of a column: its interior pressures (and meniscus)
+        pressure, offset, meniscus = self.unpack(jax.lax.stop_gradient(unknowns))
+        height = self.film(pressure, offset)
+
+        def local(interior, film, menisci):
+            return local_equations(jnp.pad(interior, ((1, 1), (0, 0))), film, menisci, self.columns)
+
+        _, linear = jax.linearize(local, pressure[1:-1], height, meniscus)
+        zero_p, zero_h, zero_m = jnp.zeros_like(pressure[1:-1]), jnp.zeros_like(height), jnp.zeros_like(meniscus)
+        column = jnp.arange(ny)
+
+        def colors(count):  # [c] → the tangent on nodes i ≡ c_x (mod BAND) of columns j ≡ c_y (mod 3)
+            node = jnp.arange(count)
+            return jnp.stack([((node[:, None] % BAND == cx) & (column[None, :] % 3 == cy)).astype(float)
+                              for cx in range(BAND) for cy in range(3)])
+
+        by_pressure = jax.vmap(lambda t: linear(t, zero_h, zero_m))(colors(rows))  # [color, r, j]
+        by_height = jax.vmap(lambda t: linear(zero_p, t, zero_m))(colors(nx))
+        by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
+        by_offset = linear(zero_p, jnp.ones_like(height), zero_m)
+        r, j = jnp.meshgrid(jnp.arange(rows), column, indexing="ij")
+        blocks = jnp.zeros((ny, size, size))
+        for shift in (-2, -1, 0, 1):  # ∂(Reynolds r, j)/∂P[r + shift, j]
+            a = r + shift
+            inside = (a >= 0) & (a < rows)
+            value = by_pressure[(a % BAND) * 3 + j % 3, r, j] * inside
+            blocks = blocks.at[j, r, jnp.clip(a, 0, rows - 1)].add(value)
+        target = jnp.arange(rows) + 1  # the node of each interior unknown
+
+        def elastic_block(sensitivity, equation_rows):
+            """Σ_shift ∂F/∂H[·, j + shift] · ∂H[·, j + shift]/∂P[a, j]: sensitivity[shift] (rows, nx, ny)
+            → (ny, rows, nx − 2)."""
+            block = jnp.zeros((ny, equation_rows, rows))
+            node = jnp.arange(nx)
+            for index, shift in enumerate((-1, 0, 1)):
+                neighbour = column + shift
+                mirror = jnp.clip(2 * column + shift + 1, -1, 2 * ny)  # cells between y_{j+shift} and −y_j
+                offset = node[:, None] - target[None, :] + nx - 1
+                direct = self.coefficients[offset, shift + 1]  # (nx, rows)
+                image = self.coefficients[offset[None], mirror[:, None, None] + 1]  # (ny, nx, rows)
+                inside = ((neighbour >= 0) & (neighbour < ny))[:, None, None]
+                block = block + inside * jnp.einsum("eij,jia->jea", sensitivity[index], direct[None] + image)
+            return block
+
+        # ∂(Reynolds r, j)/∂H[i, j + shift], banded in i (i − r − 1 ∈ −2 … 1)
+        node = jnp.arange(nx)
+        banded = []
+        for shift in (-1, 0, 1):
+            neighbour = jnp.clip(column + shift, 0, ny - 1)
+            near = (node[None, :] - r[:, :1] - 1 >= -2) & (node[None, :] - r[:, :1] - 1 <= 1)  # (rows, nx)
+            value = by_height[(node[None, :, None] % BAND) * 3 + neighbour[None, None, :] % 3, r[:, :1, None],
+                              column[None, None, :]]  # (rows, nx, ny)
+            banded.append(value * near[:, :, None])
+        blocks = blocks.at[:, :rows, :rows].add(elastic_block(banded, rows))
+        offset_column = by_offset[:rows].T  # (ny, rows)
+        if self.starved:
+            blocks = blocks.at[:, :rows, rows].set(by_meniscus[:rows].T)
+            blocks = blocks.at[:, rows, rows].set(by_meniscus[rows])
+
+            def meniscus_rows(c):  # cotangent on the meniscus rows of the columns of class c
+                cotangent = jnp.zeros((rows + 1, ny)).at[rows].set((column % 3 == c).astype(float))
+                _, pull = jax.vjp(local, pressure[1:-1], height, meniscus)
+                return pull(cotangent)[:2]
+
+            by_row = [meniscus_rows(c) for c in range(3)]
+            own = jnp.stack([by_row[c][0] for c in range(3)])[column % 3, :, column]  # (ny, rows)
+            blocks = blocks.at[:, rows, :rows].add(own)
+            sensitivity = [jnp.stack([by_row[c][1] for c in range(3)])[column % 3, :, jnp.clip(column + shift, 0, ny - 1)
+                                                                       ][:, None, :].transpose(1, 2, 0)
+                           for shift in (-1, 0, 1)]  # [shift] (1, nx, ny)
+            blocks = blocks.at[:, rows:, :rows].add(elastic_block(sensitivity, 1))
+            offset_column = jnp.concatenate([offset_column, by_offset[rows][:, None]], axis=1)
+        inverse = jnp.linalg.inv(blocks)
+        balance_row = jnp.zeros((ny, size)).at[:, :rows].set(
+            (2.0 * self.spacing * self.columns.widths / self.load_target * 0.5 * np.pi)[:, None])
+        offset_response = jnp.einsum("jab,jb->ja", inverse, offset_column)
+        schur = jnp.sum(balance_row * offset_response)
+
+        def to_columns(vector):
+            by_column = vector[:self.interior].reshape(rows, ny).T
+            if self.starved:
+                by_column = jnp.concatenate([by_column, vector[self.interior + 1:][:, None]], axis=1)
+            return by_column, vector[self.interior]
+
+        def from_columns(by_column, scalar):
+            flat = jnp.append(by_column[:, :rows].T.reshape(-1), scalar)
+            return jnp.concatenate([flat, by_column[:, rows]]) if self.starved else flat
+
+        def apply(vector):
+            by_column, balance_residual = to_columns(vector)
+            response = jnp.einsum("jab,jb->ja", inverse, by_column)
+            correction = (jnp.sum(balance_row * response) - balance_residual) / schur
+            return from_columns(response - offset_response * correction, correction)
+
+        return apply
+
+
+def _interpolate(unknowns, coarse: _Level, fine: _Level):
+    """Unknowns of `coarse` on `fine`: P bilinear (p = 0 at the roller end; wet only where every
+    coarse node around is), H₀ kept, menisci linear along y."""
+    pressure, offset, meniscus = coarse.unpack(unknowns)
+    y_coarse = jnp.append(coarse.columns.y, coarse.columns.edges[-1])
+
+    def bilinear(values):
+        values = jnp.concatenate([values, jnp.zeros((coarse.nx, 1))], axis=1)
+        along_y = jax.vmap(lambda row: jnp.interp(fine.columns.y, y_coarse, row))(values)
+        return jax.vmap(lambda col: jnp.interp(fine.columns.x, coarse.columns.x, col), in_axes=1, out_axes=1)(along_y)
+
+    wet = bilinear((pressure > 0).astype(float)) > 1.0 - 1e-9
+    fine_pressure = jnp.where(wet, bilinear(pressure), 0.0)
+    result = jnp.append(fine_pressure[1:-1].reshape(-1), offset)
+    if fine.starved:
+        result = jnp.concatenate([result, jnp.interp(fine.columns.y, coarse.columns.y, meniscus)])
+    return result
+
+
+def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, effective_modulus,
+                            profile: RollerProfile, length, flat_length, grid=(129, 129), viscosity_law="roelands",
+                            density_law="dowson_higginson", tolerance=1e-10, oil_layer=None,
+                            side_inflow: float = 0.0) -> FiniteLineFilm:
+    """Isothermal EHL of a roller of finite length on its raceway (2-D, half domain), fully
+    flooded or starved, on a fine grid of uniform cells by Newton–Krylov (module docstring).
+
+    Arguments as `finite_line_ehl.finite_line_film`, except: grid (nx, ny): nx nodes along
+    rolling, 2^k·(n₀ − 1) + 1 with n₀ from 33 to 65 (e.g. 129, 257, 513), by ny uniform cells on
+    the half roller (`krylov_levels`). Converged means max|F| below `tolerance` and a positive film
+    on the finest grid; the number of Newton steps and GMRES restarts per level are not returned
+    (the benchmark measures them)."""
+    require_float64()
+    levels = krylov_levels(grid)
+    if not 0.0 <= side_inflow <= 1.0:
+        raise ValueError(f"side_inflow: the fraction of the side inflow in the meniscus balance, in [0, 1], "
+                         f"got {side_inflow}")
+    starved = oil_layer is not None
+    fixed = jax.lax.stop_gradient
+    arguments = (load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length, flat_length,
+                 oil_layer)
+    if len(levels) == 1:  # the dense Newton alone, on uniform cells
+        return finite_line_film(*arguments[:-1], grid=levels[0], viscosity_law=viscosity_law, density_law=density_law,
+                                tolerance=tolerance, oil_layer=oil_layer, axial_clustering=0.0, side_inflow=side_inflow)
+    coarse = finite_line_film(*fixed(arguments[:-1]), grid=levels[0], viscosity_law=viscosity_law,
+                              density_law=density_law, tolerance=tolerance, oil_layer=fixed(oil_layer),
+                              axial_clustering=0.0, side_inflow=side_inflow)
+
+    def level_maker(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length,
+                    flat_length, oil_layer):
+        """(nx, ny) → _Level, and the Hertz half-width [m] and pressure [Pa] of the case."""
+        hertz_contact = line_contact(load / flat_length, radius, effective_modulus)
+        half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure
+        speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
+        fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law,
+                                density_law)
+        supply = oil_layer * radius / half_width**2 if starved else None
+
+        def rigid_axial(y):
+            return crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
+
+        def level(nx, ny):
+            return _Level(nx, ny, 0.5 * length / half_width, rigid_axial, fluid, supply, side_inflow,
+                          0.5 * np.pi * flat_length / half_width)
+
+        return level, half_width, hertz_pressure
+
+    solving, half_width, hertz_pressure = level_maker(*fixed(arguments))  # the solves carry no derivative
+    previous = solving(*levels[0])
+    pressure = coarse.pressure / hertz_pressure
+    offset = coarse.central * radius / half_width**2 - previous.film(pressure, 0.0)[previous.centre, 0]
+    unknowns = jnp.append(pressure[1:-1].reshape(-1), offset)
+    if starved:
+        unknowns = jnp.concatenate([unknowns, coarse.meniscus / half_width])
+    for nx, ny in levels[1:]:
+        current = solving(nx, ny)
+        unknowns = newton_krylov(current.residual, _interpolate(unknowns, previous, current), None,
+                                 current.preconditioner, tolerance=tolerance, max_steps=NEWTON_STEPS)[0]
+        previous = current
+    live, half_width, hertz_pressure = level_maker(*arguments)
+    finest = live(*levels[-1])
+    unknowns = krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns))
+    error = jnp.max(jnp.abs(finest.residual(fixed(unknowns))))
+    pressure, offset, meniscus = finest.unpack(unknowns)
+    film = finest.film(pressure, offset)
+    converged = (error < tolerance) & (jnp.min(fixed(film)) > 0)
+    thickness = film * half_width**2 / radius
+    lowest = jnp.argmin(thickness)
+    y = finest.columns.y
+    return FiniteLineFilm(finest.columns.x * half_width, y * half_width, pressure * hertz_pressure, thickness,
+                          thickness[finest.centre, 0], thickness.reshape(-1)[lowest], y[lowest % finest.ny] * half_width,
+                          converged, error, meniscus * half_width)

@@ -1,0 +1,135 @@
+"""The matrix-free Newton–Krylov finite line EHL: its pieces against the dense solver's (FFT
+deflection, Jacobian column blocks), its solution against the dense Newton's on the same uniform
+cells, derivatives against central differences, and the CLI."""
+
+import json
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+from diffbearing.app import cli
+from diffbearing.finite_line_ehl import finite_line_film
+from diffbearing.finite_line_krylov import _Level, finite_line_film_krylov, krylov_levels
+from diffbearing.influence import love_rectangle
+from diffbearing.line_ehl import FluidParameters
+from diffbearing.roller_profile import roller_profile
+
+from .helpers import assert_jvp_matches_central_difference, example_scene
+from .test_film_formulas import STARVED_EHL_LINE, starved_ehl_entrainment_speed
+
+PROFILE = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
+GRID = (65, 32)  # two levels: 33 × 32 dense, then 65 × 32 by Newton–Krylov
+
+
+def _solve(load, layer=None, grid=GRID, solver=finite_line_film_krylov, **options):
+    return solver(load, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8, 2.26e11, PROFILE,
+                  14.7e-3, 12.7e-3, grid=grid, oil_layer=layer, **options)
+
+
+def _level(nx, ny, supply=None):
+    """A small level of the starved-EHL paper's roller at 1028 N in its dimensionless units."""
+    fluid = FluidParameters(jnp.asarray(2.0e-4), jnp.asarray(0.4e9), jnp.asarray(0.08), jnp.asarray(2.2e-8),
+                            "roelands", "dowson_higginson")
+    return _Level(nx, ny, 66.0, lambda y: 1e-3 * jnp.maximum(y - 57.0, 0.0) ** 2, fluid, supply, 0.0, 57.0 * np.pi)
+
+
+def test_levels_halve_to_the_dense_grid_and_bad_grids_are_refused():
+    assert krylov_levels((257, 257)) == [(33, 33), (65, 65), (129, 129), (257, 257)]
+    assert krylov_levels((129, 40)) == [(33, 40), (65, 40), (129, 40)]
+    for grid in ((100, 64), (16, 64), (129, 4)):
+        with pytest.raises(ValueError, match="grid"):
+            krylov_levels(grid)
+
+
+def test_fft_film_is_the_dense_love_sum_with_the_mirror_image():
+    """H_el = (1/2π) Σ_k P_k [C(x_i − x_k, y_j − y_k) + C(x_i − x_k, y_j + y_k)]: the FFT
+    convolution against the direct double sum, to round-off."""
+    level = _level(17, 6)
+    pressure = jax.random.uniform(jax.random.key(0), (17, 6))
+    x, y = np.asarray(level.columns.x), np.asarray(level.columns.y)
+    dx, dy = level.spacing, float(level.cell)
+    offset_x = (x[:, None] - x[None, :])[:, None, :, None]
+    kernel = (love_rectangle(offset_x, (y[:, None] - y[None, :])[None, :, None, :], dx / 2, dy / 2)
+              + love_rectangle(offset_x, (y[:, None] + y[None, :])[None, :, None, :], dx / 2, dy / 2)) / (2 * np.pi)
+    direct = jnp.einsum("ijkl,kl->ij", kernel, pressure)
+    np.testing.assert_allclose(level.elastic(pressure), direct, rtol=1e-12, atol=1e-12 * float(jnp.max(direct)))
+
+
+@pytest.mark.parametrize("supply", [None, 3.0])
+def test_preconditioner_blocks_are_the_exact_column_blocks_of_the_jacobian(supply):
+    """Applied to J's own columns of one y cell, the preconditioner returns the unit vectors where J
+    has no coupling to other columns: so the blocks are the exact ones. Checked as M⁻¹(J e) = e
+    for J restricted to block-diagonal plus the H₀ border, assembled from jax.jacfwd."""
+    level = _level(17, 6, supply)
+    key = jax.random.key(1)
+    pressure = jax.random.uniform(key, (15, 6)) * jnp.exp(-jnp.arange(15.0) / 4)[:, None]
+    unknowns = jnp.append(pressure.reshape(-1), -0.5)
+    if supply is not None:
+        unknowns = jnp.concatenate([unknowns, jnp.linspace(-4.0, -2.0, 6)])
+    jacobian = jax.jacfwd(level.residual)(unknowns)
+    interior, ny = 15 * 6, 6
+    # column of each unknown and equation: pressures row-major (x, y), then H₀ / balance, then menisci
+    column = np.concatenate([np.tile(np.arange(ny), 15), [-1], np.arange(ny) if supply is not None else []])
+    same = (column[:, None] == column[None, :]) | (column[:, None] == -1) | (column[None, :] == -1)
+    same[interior, interior] = False  # the balance does not read H₀
+    block_jacobian = jnp.where(same, jacobian, 0.0)
+    apply = level.preconditioner(unknowns)
+    for index in (0, 7, 40, interior - 1, interior, len(unknowns) - 1):
+        np.testing.assert_allclose(apply(block_jacobian[:, index]), jnp.eye(len(unknowns))[index], atol=1e-9)
+
+
+@pytest.fixture(scope="module")
+def flooded_and_starved():
+    """(Newton–Krylov, dense on the same uniform cells) films at 1028 N, flooded and at h_oil = 0.8 µm."""
+    krylov = jax.jit(lambda w, layer: _solve(w, layer))
+    dense = jax.jit(lambda w, layer: _solve(w, layer, solver=finite_line_film, axial_clustering=0.0))
+    return {case: (krylov(1028.0, layer), dense(1028.0, layer)) for case, layer in (("flooded", None),
+                                                                                      ("starved", 0.8e-6))}
+
+
+@pytest.mark.slow  # about 3 minutes with a cold compilation cache (2 cores): two solvers, two cases
+@pytest.mark.parametrize("case", ["flooded", "starved"])
+def test_newton_krylov_solves_the_dense_solvers_equations(flooded_and_starved, case):
+    """The same discrete equations on the same 65 × 32 uniform cells: the Newton–Krylov solution
+    is the dense Newton's, to the solvers' tolerance (1e-10 in the residual)."""
+    krylov, dense = flooded_and_starved[case]
+    assert bool(krylov.converged) and bool(dense.converged) and float(krylov.residual) < 1e-10
+    scale = float(jnp.max(dense.pressure))
+    np.testing.assert_allclose(krylov.pressure, dense.pressure, atol=1e-6 * scale)
+    np.testing.assert_allclose(krylov.thickness, dense.thickness, rtol=1e-6)
+    np.testing.assert_allclose(krylov.meniscus, dense.meniscus, atol=1e-9)
+
+
+@pytest.mark.slow  # compiles the solve with its forward and reverse derivatives
+def test_newton_krylov_derivatives_match_central_differences():
+    """Implicit derivative of the central and minimum film (GMRES tangent solves, forward and
+    reverse) with respect to load, speed factor and oil layer, starved, on 65 × 32."""
+
+    def films(x):  # (W [kN], h_oil [µm]) → (h_c, h_min) [µm]
+        result = _solve(x[0] * 1e3, x[1] * 1e-6)
+        return jnp.stack([result.central, result.minimum]) * 1e6
+
+    point = jnp.array([1.028, 0.8])
+    function = jax.jit(films)
+    for direction in jnp.eye(2):
+        assert_jvp_matches_central_difference(function, point, direction, step=1e-5, rtol=1e-5)
+
+
+@pytest.mark.slow  # compiles the flooded and starved Newton–Krylov solves
+def test_krylov_through_the_cli(capsys, tmp_path):
+    """fidelity.solver = "krylov" on the starved roller scene: both films converge on the uniform
+    half-domain grid; a grid it does not take exits 2 with one line naming fidelity.grid."""
+    path = tmp_path / "krylov.json"
+    code = cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[65, 64]", "--set",
+                     "fidelity.solver=krylov", "--json", str(path)])
+    out = capsys.readouterr().out
+    assert code == 0 and "Newton–Krylov, 65 × 32 half-domain grid" in out
+    values = json.loads(path.read_text())
+    assert values["film"]["converged"] is True and values["starvation"]["converged"] is True
+    assert np.allclose(np.diff(values["film"]["y"]), np.diff(values["film"]["y"])[0])
+    code = cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[100, 32]", "--set",
+                     "fidelity.solver=krylov"])
+    captured = capsys.readouterr()
+    assert code == 2 and "fidelity.grid" in captured.err and len(captured.err.strip().splitlines()) == 1
