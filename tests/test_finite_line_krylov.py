@@ -1,22 +1,19 @@
 """The matrix-free Newton–Krylov finite line EHL: its pieces against the dense solver's (FFT
-deflection, Jacobian column blocks), its solution against the dense Newton's on the same uniform
-cells, derivatives against central differences, and the CLI."""
-
-import json
+deflection, Jacobian column blocks) and its flooded solution against the dense Newton's on the
+same uniform cells."""
 
 import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.app import cli
 from diffbearing.finite_line_ehl import finite_line_film
 from diffbearing.finite_line_krylov import _Level, finite_line_film_krylov, krylov_levels
 from diffbearing.influence import love_rectangle
 from diffbearing.line_ehl import FluidParameters
 from diffbearing.roller_profile import roller_profile
 
-from .helpers import assert_jvp_matches_central_difference, example_scene
+
 from .test_film_formulas import STARVED_EHL_LINE, starved_ehl_entrainment_speed
 
 PROFILE = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
@@ -81,55 +78,18 @@ def test_preconditioner_blocks_are_the_exact_column_blocks_of_the_jacobian(suppl
 
 
 @pytest.fixture(scope="module")
-def flooded_and_starved():
-    """(Newton–Krylov, dense on the same uniform cells) films at 1028 N, flooded and at h_oil = 0.8 µm."""
-    krylov = jax.jit(lambda w, layer: _solve(w, layer))
-    dense = jax.jit(lambda w, layer: _solve(w, layer, solver=finite_line_film, axial_clustering=0.0))
-    return {case: (krylov(1028.0, layer), dense(1028.0, layer)) for case, layer in (("flooded", None),
-                                                                                      ("starved", 0.8e-6))}
+def flooded():
+    """(Newton–Krylov, dense on the same uniform cells) flooded films at 1028 N."""
+    return (jax.jit(lambda w: _solve(w))(1028.0),
+            jax.jit(lambda w: _solve(w, solver=finite_line_film, axial_clustering=0.0))(1028.0))
 
 
-@pytest.mark.slow  # about 3 minutes with a cold compilation cache (2 cores): two solvers, two cases
-@pytest.mark.parametrize("case", ["flooded", "starved"])
-def test_newton_krylov_solves_the_dense_solvers_equations(flooded_and_starved, case):
-    """The same discrete equations on the same 65 × 32 uniform cells: the Newton–Krylov solution
-    is the dense Newton's, to the solvers' tolerance (1e-10 in the residual)."""
-    krylov, dense = flooded_and_starved[case]
+@pytest.mark.slow  # about 4 minutes with a cold compilation cache (2 cores): both solvers
+def test_newton_krylov_solves_the_dense_solvers_equations(flooded):
+    """The same discrete equations on the same 65 × 32 uniform cells, flooded: the Newton–Krylov
+    solution is the dense Newton's, to the solvers' tolerance (1e-10 in the residual)."""
+    krylov, dense = flooded
     assert bool(krylov.converged) and bool(dense.converged) and float(krylov.residual) < 1e-10
     scale = float(jnp.max(dense.pressure))
     np.testing.assert_allclose(krylov.pressure, dense.pressure, atol=1e-6 * scale)
     np.testing.assert_allclose(krylov.thickness, dense.thickness, rtol=1e-6)
-    np.testing.assert_allclose(krylov.meniscus, dense.meniscus, atol=1e-9)
-
-
-@pytest.mark.slow  # compiles the solve with its forward and reverse derivatives
-def test_newton_krylov_derivatives_match_central_differences():
-    """Implicit derivative of the central and minimum film (GMRES tangent solves, forward and
-    reverse) with respect to load, speed factor and oil layer, starved, on 65 × 32."""
-
-    def films(x):  # (W [kN], h_oil [µm]) → (h_c, h_min) [µm]
-        result = _solve(x[0] * 1e3, x[1] * 1e-6)
-        return jnp.stack([result.central, result.minimum]) * 1e6
-
-    point = jnp.array([1.028, 0.8])
-    function = jax.jit(films)
-    for direction in jnp.eye(2):
-        assert_jvp_matches_central_difference(function, point, direction, step=1e-5, rtol=1e-5)
-
-
-@pytest.mark.slow  # compiles the flooded and starved Newton–Krylov solves
-def test_krylov_through_the_cli(capsys, tmp_path):
-    """fidelity.solver = "krylov" on the starved roller scene: both films converge on the uniform
-    half-domain grid; a grid it does not take exits 2 with one line naming fidelity.grid."""
-    path = tmp_path / "krylov.json"
-    code = cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[65, 64]", "--set",
-                     "fidelity.solver=krylov", "--json", str(path)])
-    out = capsys.readouterr().out
-    assert code == 0 and "Newton–Krylov, 65 × 32 half-domain grid" in out
-    values = json.loads(path.read_text())
-    assert values["film"]["converged"] is True and values["starvation"]["converged"] is True
-    assert np.allclose(np.diff(values["film"]["y"]), np.diff(values["film"]["y"])[0])
-    code = cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[100, 32]", "--set",
-                     "fidelity.solver=krylov"])
-    captured = capsys.readouterr()
-    assert code == 2 and "fidelity.grid" in captured.err and len(captured.err.strip().splitlines()) == 1
