@@ -138,7 +138,6 @@ class _Level:
 
         by_pressure = jax.vmap(lambda t: linear(t, zero_h, zero_m))(colors(rows))  # [color, r, j]
         by_height = jax.vmap(lambda t: linear(zero_p, t, zero_m))(colors(nx))
-        by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
         by_offset = linear(zero_p, jnp.ones_like(height), zero_m)
         r, j = jnp.meshgrid(jnp.arange(rows), column, indexing="ij")
         blocks = jnp.zeros((ny, size, size))
@@ -176,6 +175,7 @@ class _Level:
         blocks = blocks.at[:, :rows, :rows].add(elastic_block(banded, rows))
         offset_column = by_offset[:rows].T  # (ny, rows)
         if self.starved:
+            by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
             blocks = blocks.at[:, :rows, rows].set(by_meniscus[:rows].T)
             blocks = blocks.at[:, rows, rows].set(by_meniscus[rows])
 
