@@ -273,8 +273,10 @@ def test_starved_ehl_paper_starvation_criterion_through_the_cli(tmp_path, oil_la
 
 def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys):
     """A grid whose half domain is beyond the dense Newton ([129, 257]: 127 × 129 = 16383
-    unknowns) exits 2 with a one-line message naming fidelity.grid, its limit and a grid that works."""
-    assert cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[129, 257]"]) == 2
+    unknowns) with fidelity.solver = "dense" named exits 2 with a one-line message naming
+    fidelity.grid, its limit and a grid that works."""
+    assert cli.main(["run", example_scene("starved_roller"), "--set", "fidelity.grid=[129, 257]",
+                     "--set", 'fidelity.solver="dense"']) == 2
     message = capsys.readouterr().err
     assert "fidelity.grid" in message and "(nx − 2)·⌈ny/2⌉ ≤ 4200" in message and "[65, 129]" in message
 

@@ -35,12 +35,14 @@ def flooded():
 
 def test_supply_above_the_flooded_flux_leaves_the_film_flooded(starved, flooded):
     """Mass conservation in steady pure rolling: the contact passes ρ̄h − (ρh³/12ηu)p' = h_oil.
-    A flooded contact passes q_ff; a layer 1 % above q_ff gives the flooded film exactly, one 1 %
+    A flooded contact passes q_ff; a layer above q_ff gives the flooded film (to round-off: the two
+    are separate compilations, whose floating-point reductions may differ in the last bit), a layer
     below moves the meniscus inside the domain and thins the film."""
     central_pressure = float(jnp.max(flooded.pressure))
     flux = float(density_ratio(central_pressure)) * float(flooded.central)  # ≈ q_ff, within a few %
     above = starved(1.1 * flux * 1e6, 1.0)
-    assert float(above.central) == float(flooded.central) and float(above.meniscus) == float(flooded.meniscus)
+    assert float(above.central) == pytest.approx(float(flooded.central), rel=1e-13)
+    assert float(above.meniscus) == float(flooded.meniscus)
     below = starved(0.8 * flux * 1e6, 1.0)
     assert bool(below.converged) and float(below.meniscus) > float(flooded.meniscus)
     assert float(below.central) < 0.9 * float(flooded.central)

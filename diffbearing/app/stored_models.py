@@ -7,7 +7,8 @@ inputs' structure, shapes and dtypes, the JAX version and a digest of diffbearin
 edit of the code invalidates it); the next process deserializes it and gets the executable from
 the persistent cache. Without a compilation cache folder (`jax_compilation_cache_dir` unset, as in
 a notebook that does not set it) nothing is stored, nor is a model whose lowering holds host
-callbacks (`jax.export` cannot serialize them: the cage dynamics' diffrax integration), which is
+callbacks or LAPACK calls without a stability guarantee (`jax.export` cannot serialize them: the
+cage dynamics' diffrax integration, the GMRES of the Newton–Krylov film), which is
 traced anew in each process.
 """
 
@@ -54,7 +55,10 @@ def compile_stored(function, inputs, key: str):
     else:
         try:
             exported = export.export(jax.jit(flat))(*leaves)
-        except NotImplementedError:  # host callbacks (diffrax's cage dynamics) cannot be serialized
+        except (NotImplementedError, ValueError):
+            # host callbacks (diffrax's cage dynamics) and LAPACK calls without a stability
+            # guarantee (lineax's QR in GMRES) cannot be serialized; a ValueError of the model
+            # itself is raised again by the plain lowering below
             return jax.jit(function).lower(inputs).compile()
         folder.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=folder, suffix=".partial", delete=False) as temporary:
