@@ -12,8 +12,8 @@ methods, SIAM J. Optim. 4, 1994); a step that lowers nothing is not taken, and t
 there.
 
 `krylov_root` differentiates the root by the implicit function theorem (`jax.lax.custom_root`),
-its tangent system J x = b solved by the same preconditioned GMRES; reverse mode transposes it
-(lineax transposes the operator and the preconditioner).
+its tangent system J x = b solved by the same preconditioned GMRES; reverse mode solves
+Jᵀx = b by GMRES with the transposed preconditioner M⁻ᵀ (`jax.lax.custom_linear_solve`).
 """
 
 import jax
@@ -97,8 +97,16 @@ def krylov_root(function, solution, args, preconditioner, *, restart: int = 30, 
     derivative dy* = −J⁻¹ (∂F/∂args) d args, J x = b solved by GMRES preconditioned by
     `preconditioner` (v ↦ M⁻¹v, built at the root without derivatives); forward and reverse mode."""
 
-    def tangent_solve(linear, rhs):
+    def solve(linear, rhs):
         return gmres(linear, rhs, preconditioner, TANGENT_TOLERANCE, restart=restart, max_steps=linear_steps)[0]
+
+    def transpose_solve(transposed, rhs):  # Jᵀx = b, left-preconditioned by M⁻ᵀ
+        preconditioner_transposed = jax.linear_transpose(preconditioner, rhs)
+        return gmres(transposed, rhs, lambda v: preconditioner_transposed(v)[0], TANGENT_TOLERANCE, restart=restart,
+                     max_steps=linear_steps)[0]
+
+    def tangent_solve(linear, rhs):
+        return jax.lax.custom_linear_solve(linear, rhs, solve, transpose_solve)
 
     return jax.lax.custom_root(lambda y: function(y, args), jax.lax.stop_gradient(solution),
                                lambda _, start: start, tangent_solve)

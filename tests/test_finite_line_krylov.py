@@ -1,6 +1,6 @@
 """The matrix-free Newton–Krylov finite line EHL: its pieces against the dense solver's (FFT
-deflection, Jacobian column blocks) and its flooded solution against the dense Newton's on the
-same uniform cells."""
+deflection, Jacobian column blocks), its flooded solution against the dense Newton's on the
+same uniform cells, and its implicit derivatives against central differences."""
 
 import jax
 import jax.numpy as jnp
@@ -14,6 +14,7 @@ from diffbearing.line_ehl import FluidParameters
 from diffbearing.roller_profile import roller_profile
 
 
+from .helpers import assert_jvp_matches_central_difference
 from .test_film_formulas import STARVED_EHL_LINE, starved_ehl_entrainment_speed
 
 PROFILE = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
@@ -93,3 +94,18 @@ def test_newton_krylov_solves_the_dense_solvers_equations(flooded):
     scale = float(jnp.max(dense.pressure))
     np.testing.assert_allclose(krylov.pressure, dense.pressure, atol=1e-6 * scale)
     np.testing.assert_allclose(krylov.thickness, dense.thickness, rtol=1e-6)
+
+
+@pytest.mark.slow  # about a minute (2 cores): the solve, its forward and reverse derivatives, two more solves
+def test_newton_krylov_film_derivatives_match_central_differences():
+    """d(h_c, h_min)/dW [µm/kN] at 1028 N, flooded, 65 × 32: the implicit derivatives (GMRES
+    tangent solve forward, the transposed one in reverse) against a central difference of ±1 N,
+    whose truncation and solver-tolerance error is below 1e-4 relative here."""
+
+    def films(load_kilonewton):
+        film = _solve(1e3 * load_kilonewton)
+        return jnp.stack([film.central, film.minimum]) * 1e6
+
+    solved = _solve(1028.0)
+    assert bool(solved.converged) and float(solved.minimum) > 0.1e-6  # the end constriction resolved
+    assert_jvp_matches_central_difference(jax.jit(films), jnp.asarray(1.028), jnp.asarray(1.0), 1e-3, rtol=5e-4)
