@@ -88,6 +88,13 @@ class _Level:
         self.coefficients = love_rectangle(jnp.asarray(offsets), jnp.asarray(cells), 0.5 * self.spacing,
                                            0.5 * self.cell) / (2 * np.pi)
 
+    def limit(self, step):
+        """`step` shortened so that no meniscus moves more than a cell (as the dense Newton)."""
+        if not self.starved:
+            return step
+        largest = jnp.abs(step[self.interior + 1:]).max()
+        return step * jnp.minimum(1.0, self.spacing / jnp.maximum(largest, 1e-300))
+
     def elastic(self, pressure):
         """H_el (nx, ny) of P (nx, ny) on y ≥ 0 and its mirror image."""
         whole = jnp.concatenate([pressure[:, ::-1], pressure], axis=1)
@@ -293,7 +300,8 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
     for nx, ny in levels[1:]:
         current = solving(nx, ny)
         unknowns = newton_krylov(current.residual, _interpolate(unknowns, previous, current), None,
-                                 current.preconditioner, tolerance=tolerance, max_steps=NEWTON_STEPS)[0]
+                                 current.preconditioner, tolerance=tolerance, max_steps=NEWTON_STEPS,
+                                 limit=current.limit)[0]
         previous = current
     live, half_width, hertz_pressure = level_maker(*arguments)
     finest = live(*levels[-1])

@@ -38,7 +38,7 @@ def gmres(linear, rhs, preconditioner, tolerance, *, restart: int, max_steps: in
 
 
 def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, max_steps: int, restart: int = 30,
-                  linear_steps: int = 20, shortest: float = 1e-3):
+                  linear_steps: int = 20, shortest: float = 1e-3, limit=None):
     """Root of `function(y, args)` [-] from `y0` by inexact Newton (module docstring).
 
     Args:
@@ -48,6 +48,8 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         max_steps: the most Newton steps.
         restart, linear_steps: GMRES's Krylov dimension and its most restarts per step.
         shortest: the shortest step length the backtracking tries.
+        limit: d → d shortened (e.g. a largest change per unknown), applied to every step; the
+            sufficient decrease is then asked of the shortened step's fraction of the Newton step.
 
     Returns (y, Newton steps, GMRES restarts in all)."""
 
@@ -64,10 +66,15 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         _, linear = jax.linearize(lambda point: function(point, args), y)
         direction, used = gmres(linear, -residual, preconditioner_at(y, args), forcing, restart=restart,
                                 max_steps=linear_steps)
+        fraction = 1.0  # of the Newton step that the limited step is
+        if limit is not None:
+            full, direction = direction, limit(direction)
+            fraction = jnp.vdot(direction, full) / jnp.maximum(jnp.vdot(full, full), 1e-300)
 
         def shorter(search):
             length, trial_merit, _ = search
-            return (trial_merit > merit * (1.0 - 2.0 * ARMIJO * length * (1.0 - forcing))) & (length > shortest)
+            return ((trial_merit > merit * (1.0 - 2.0 * ARMIJO * length * fraction * (1.0 - forcing)))
+                    & (length > shortest))
 
         def halve(search):
             length = 0.5 * search[0]

@@ -96,6 +96,18 @@ def test_newton_krylov_solves_the_dense_solvers_equations(flooded):
     np.testing.assert_allclose(krylov.thickness, dense.thickness, rtol=1e-6)
 
 
+@pytest.mark.slow  # about 80 s (2 cores): both solvers
+def test_newton_krylov_solves_the_dense_solvers_starved_equations():
+    """Starved by 0.8 µm of oil at 1028 N on 65 × 48 uniform cells (33 × 48 dense, then Newton–Krylov
+    with the menisci moving at most a cell per step): the dense Newton's solution, menisci included."""
+    krylov = jax.jit(lambda w: _solve(w, 0.8e-6, grid=(65, 48)))(1028.0)
+    dense = jax.jit(lambda w: _solve(w, 0.8e-6, grid=(65, 48), solver=finite_line_film, axial_clustering=0.0))(1028.0)
+    assert bool(krylov.converged) and bool(dense.converged)
+    np.testing.assert_allclose(krylov.pressure, dense.pressure, atol=1e-6 * float(jnp.max(dense.pressure)))
+    np.testing.assert_allclose(krylov.thickness, dense.thickness, rtol=1e-6)
+    np.testing.assert_allclose(krylov.meniscus, dense.meniscus, atol=1e-9)
+
+
 @pytest.mark.slow  # about a minute (2 cores): the solve, its forward and reverse derivatives, two more solves
 def test_newton_krylov_film_derivatives_match_central_differences():
     """d(h_c, h_min)/dW [µm/kN] at 1028 N, flooded, 65 × 32: the implicit derivatives (GMRES
