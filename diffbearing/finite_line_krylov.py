@@ -45,11 +45,11 @@ BAND = 5  # colors along x: a Reynolds row reads nodes i − 2 … i + 1
 DIMENSIONLESS_MODULUS = 4.0  # E' in influence_coefficients' 2/(πE') so that H_el = (1/2π) Σ P C
 
 
-def krylov_levels(grid) -> list[tuple[int, int]]:
+def krylov_levels(grid, fewest_cells: int = COARSEST_CELLS) -> list[tuple[int, int]]:
     """The nested grids (nx, ny on the half domain), coarsest first: nx nodes halved while the
     coarser grid keeps ≥ COARSEST_NODES nodes, ny cells halved alike while they stay
-    ≥ COARSEST_CELLS (a coarse solution with h < 0 at the roller end is no start); ValueError
-    unless nx = 2^k·(n₀ − 1) + 1 with n₀ ≥ COARSEST_NODES and ny ≥ 8."""
+    ≥ `fewest_cells` (for the roller, a coarse solution with h < 0 at its end is no start);
+    ValueError unless nx = 2^k·(n₀ − 1) + 1 with n₀ ≥ COARSEST_NODES and ny ≥ 8."""
     nx, ny = (int(n) for n in grid)
     if nx < COARSEST_NODES or ny < 8:
         raise ValueError(f"grid: the finite-line EHL (Newton–Krylov) needs nx ≥ {COARSEST_NODES} and ny ≥ 8 cells on "
@@ -57,18 +57,18 @@ def krylov_levels(grid) -> list[tuple[int, int]]:
     levels = [(nx, ny)]
     while (levels[0][0] - 1) % 2 == 0 and (levels[0][0] - 1) // 2 + 1 >= COARSEST_NODES:
         cells = levels[0][1]
-        levels.insert(0, ((levels[0][0] - 1) // 2 + 1, math.ceil(cells / 2) if cells >= 2 * COARSEST_CELLS else cells))
+        levels.insert(0, ((levels[0][0] - 1) // 2 + 1, math.ceil(cells / 2) if cells >= 2 * fewest_cells else cells))
     if (levels[0][0] - 2) * levels[0][1] > 4200:
         raise ValueError(f"grid: nx must be 2^k·(n₀ − 1) + 1 with a coarsest n₀ of {COARSEST_NODES} … 65 nodes "
                          f"(e.g. 65, 129, 257, 513), got nx = {nx}")
     return levels
 
 
-class _Level:
+class UniformLevel:
     """One grid of the nested iteration: its columns (ColumnGrid), FFT spectrum, rigid film and
     the elastic coefficients the preconditioner reads. Dimensionless, Hertz half-width units."""
 
-    def __init__(self, nx, ny, half_length, rigid_axial, fluid, supply, side_inflow, load_target):
+    def __init__(self, nx, ny, half_length, rigid_axial, fluid, supply, side_inflow, load_target, largest_step=None):
         self.nx, self.ny = nx, ny
         x = np.linspace(INLET, OUTLET, nx)
         self.spacing = x[1] - x[0]
@@ -81,6 +81,7 @@ class _Level:
             influence_coefficients(nx, 2 * ny, self.spacing, self.cell, DIMENSIONLESS_MODULUS))
         self.rigid = 0.5 * jnp.asarray(x)[:, None] ** 2 + rigid_axial(y)[None, :]
         self.load_target = load_target
+        self.largest_step = largest_step
         self.starved = supply is not None
         self.interior = (nx - 2) * ny
         offsets = np.arange(-(nx - 1), nx)[:, None] * self.spacing  # node offset, then cell offset −1 … 2ny
@@ -89,11 +90,16 @@ class _Level:
                                            0.5 * self.cell) / (2 * np.pi)
 
     def limit(self, step):
-        """`step` shortened so that no meniscus moves more than a cell (as the dense Newton)."""
-        if not self.starved:
-            return step
-        largest = jnp.abs(step[self.interior + 1:]).max()
-        return step * jnp.minimum(1.0, self.spacing / jnp.maximum(largest, 1e-300))
+        """`step` shortened so that no meniscus moves more than a cell (as the dense Newton) and,
+        with `largest_step` = (ΔP, ΔH₀), no pressure and offset more than those."""
+        ratio = 1.0
+        if self.starved:
+            ratio = jnp.abs(step[self.interior + 1:]).max() / self.spacing
+        if self.largest_step is not None:
+            pressure_step, offset_step = self.largest_step
+            ratio = jnp.maximum(ratio, jnp.maximum(jnp.abs(step[:self.interior]).max() / pressure_step,
+                                                   jnp.abs(step[self.interior]) / offset_step))
+        return step / jnp.maximum(ratio, 1.0)
 
     def elastic(self, pressure):
         """H_el (nx, ny) of P (nx, ny) on y ≥ 0 and its mirror image."""
@@ -224,7 +230,7 @@ class _Level:
         return apply
 
 
-def _interpolate(unknowns, coarse: _Level, fine: _Level):
+def interpolate_level(unknowns, coarse: UniformLevel, fine: UniformLevel):
     """Unknowns of `coarse` on `fine`: P bilinear (p = 0 at the roller end; wet only where every
     coarse node around is), H₀ kept, menisci linear along y."""
     pressure, offset, meniscus = coarse.unpack(unknowns)
@@ -241,6 +247,33 @@ def _interpolate(unknowns, coarse: _Level, fine: _Level):
     if fine.starved:
         result = jnp.concatenate([result, jnp.interp(fine.columns.y, coarse.columns.y, meniscus)])
     return result
+
+
+def solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_solved=False,
+                 coarsest_steps=NEWTON_STEPS):
+    """(the finest UniformLevel built from the live `arguments`, its solution with implicit
+    derivatives): `unknowns` of levels[0] solved there by Newton–Krylov (unless
+    `coarsest_solved`, in `coarsest_steps` at most), then interpolated to each finer level and
+    solved again; no derivative flows through the iterations. `level_at(*arguments)` → a
+    function (nx, ny) → UniformLevel."""
+    fixed = jax.lax.stop_gradient
+    solving = level_at(*fixed(arguments))
+    previous = None
+    for nx, ny in levels:
+        current = solving(nx, ny)
+        steps = NEWTON_STEPS
+        if previous is None:
+            if coarsest_solved:
+                previous = current
+                continue
+            steps = coarsest_steps
+        else:
+            unknowns = interpolate_level(unknowns, previous, current)
+        unknowns = newton_krylov(current.residual, unknowns, None, current.preconditioner, tolerance=tolerance,
+                                 max_steps=steps, limit=current.limit)[0]
+        previous = current
+    finest = level_at(*arguments)(*levels[-1])
+    return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns))
 
 
 def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, effective_modulus,
@@ -271,11 +304,15 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
                               density_law=density_law, tolerance=tolerance, oil_layer=fixed(oil_layer),
                               axial_clustering=0.0, side_inflow=side_inflow)
 
-    def level_maker(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length,
-                    flat_length, oil_layer):
-        """(nx, ny) → _Level, and the Hertz half-width [m] and pressure [Pa] of the case."""
+    def scales(load, radius, effective_modulus, flat_length):
+        """The Hertz half-width b [m] and pressure p_h [Pa] under the load per flat length."""
         hertz_contact = line_contact(load / flat_length, radius, effective_modulus)
-        half_width, hertz_pressure = hertz_contact.half_width, hertz_contact.max_pressure
+        return hertz_contact.half_width, hertz_contact.max_pressure
+
+    def level_at(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length, flat_length,
+                 oil_layer):
+        """(nx, ny) → UniformLevel of the case."""
+        half_width, hertz_pressure = scales(load, radius, effective_modulus, flat_length)
         speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
         fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law,
                                 density_law)
@@ -284,28 +321,18 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
         def rigid_axial(y):
             return crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
 
-        def level(nx, ny):
-            return _Level(nx, ny, 0.5 * length / half_width, rigid_axial, fluid, supply, side_inflow,
-                          0.5 * np.pi * flat_length / half_width)
+        return lambda nx, ny: UniformLevel(nx, ny, 0.5 * length / half_width, rigid_axial, fluid, supply, side_inflow,
+                                           0.5 * np.pi * flat_length / half_width)
 
-        return level, half_width, hertz_pressure
-
-    solving, half_width, hertz_pressure = level_maker(*fixed(arguments))  # the solves carry no derivative
-    previous = solving(*levels[0])
+    half_width, hertz_pressure = scales(*fixed((load, radius, effective_modulus, flat_length)))
+    coarsest = level_at(*fixed(arguments))(*levels[0])
     pressure = coarse.pressure / hertz_pressure
-    offset = coarse.central * radius / half_width**2 - previous.film(pressure, 0.0)[previous.centre, 0]
+    offset = coarse.central * radius / half_width**2 - coarsest.film(pressure, 0.0)[coarsest.centre, 0]
     unknowns = jnp.append(pressure[1:-1].reshape(-1), offset)
     if starved:
         unknowns = jnp.concatenate([unknowns, coarse.meniscus / half_width])
-    for nx, ny in levels[1:]:
-        current = solving(nx, ny)
-        unknowns = newton_krylov(current.residual, _interpolate(unknowns, previous, current), None,
-                                 current.preconditioner, tolerance=tolerance, max_steps=NEWTON_STEPS,
-                                 limit=current.limit)[0]
-        previous = current
-    live, half_width, hertz_pressure = level_maker(*arguments)
-    finest = live(*levels[-1])
-    unknowns = krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns))
+    finest, unknowns = solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_solved=True)
+    half_width, hertz_pressure = scales(load, radius, effective_modulus, flat_length)
     error = jnp.max(jnp.abs(finest.residual(fixed(unknowns))))
     pressure, offset, meniscus = finest.unpack(unknowns)
     film = finest.film(pressure, offset)

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from diffbearing.finite_line_ehl import finite_line_film
-from diffbearing.finite_line_krylov import _Level, finite_line_film_krylov, krylov_levels
+from diffbearing.finite_line_krylov import UniformLevel, finite_line_film_krylov, krylov_levels
 from diffbearing.influence import love_rectangle
 from diffbearing.line_ehl import FluidParameters
 from diffbearing.roller_profile import roller_profile
@@ -30,7 +30,7 @@ def _level(nx, ny, supply=None):
     """A small level of the starved-EHL paper's roller at 1028 N in its dimensionless units."""
     fluid = FluidParameters(jnp.asarray(2.0e-4), jnp.asarray(0.4e9), jnp.asarray(0.08), jnp.asarray(2.2e-8),
                             "roelands", "dowson_higginson")
-    return _Level(nx, ny, 66.0, lambda y: 1e-3 * jnp.maximum(y - 57.0, 0.0) ** 2, fluid, supply, 0.0, 57.0 * np.pi)
+    return UniformLevel(nx, ny, 66.0, lambda y: 1e-3 * jnp.maximum(y - 57.0, 0.0) ** 2, fluid, supply, 0.0, 57.0 * np.pi)
 
 
 def test_levels_halve_to_the_dense_grid_and_bad_grids_are_refused():

@@ -1,6 +1,7 @@
 """Lubricant films (effect `film`) and starvation (effect `starvation`).
 
-Ball bearings: Hamrock–Dowson point-contact films at every loaded ball (film = "hamrock_dowson").
+Ball bearings: Hamrock–Dowson point-contact films at every loaded ball (film = "hamrock_dowson"),
+or the numerical point contact (film = "point") at the most loaded ball of each raceway.
 Rollers, fully flooded and in pure rolling: Pan–Hamrock (film = "formula"), the numerical line
 contact at mid-length ("line") or the 2-D finite line contact over the whole roller
 ("finite_line"). Starvation (with operating.oil_layer): the film of the same level with the inlet
@@ -17,6 +18,7 @@ from ...finite_line_ehl import MAX_UNKNOWNS, finite_line_film, half_domain_grid
 from ...finite_line_krylov import finite_line_film_krylov, krylov_levels
 from ...kinematics import raceway_entrainment_speed
 from ...line_ehl import check_nodes, density_ratio, line_film
+from ...point_ehl import FEWEST_CELLS, point_film
 from ...params import BALL_BEARING_KINDS, _as_float, check_range
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
 from ...roller_geometry import ROLLER_KINDS, equivalent_radius, film_length, roller_modulus
@@ -32,6 +34,10 @@ DEFAULT_FINITE_LINE_GRID = (33, 96)
 # or "krylov", the matrix-free Newton–Krylov on uniform cells (`finite_line_krylov`); by default
 # the dense one where the half grid fits it, else Newton–Krylov.
 FINITE_LINE_SOLVERS = ("dense", "krylov")
+# The point contact level (film = "point"): fidelity.grid = [nx, ny], nx nodes along rolling by
+# ny cells across the whole contact, of which the ⌈ny/2⌉ on y ≥ 0 are solved; 129 × 64 on the
+# half is within 10 % of Hamrock–Dowson (docs/validation.md §Point contact EHL).
+DEFAULT_POINT_GRID = (129, 128)
 # Chevalier's γ for a line contact: no side flow, so the film follows the supply until it meets
 # the flooded one; γ = 20 matches the 1-D numerical starved films (`benchmarks/line_ehl.py`).
 LINE_STARVATION_SHARPNESS = 20.0
@@ -82,6 +88,100 @@ def _ball_film_outputs(side):
         Output(f"film.{side}.entrainment_speed", "m/s", "m/s", f"mean entrainment speed u, {side}", in_report=False),
         Output(f"film.{side}.film_parameter", "", "", f"film parameter Λ = h_min/σ, {side}", column=f"Λ{short}"),
     )
+
+
+# --- ball bearings: the numerical point contact at the most loaded ball ------------------------
+
+def point_grid(settings: dict) -> tuple[int, int]:
+    """(nx, ny on the half domain) of the point contact level from fidelity.grid (default
+    [129, 128]); ValueError naming the key for a grid the solver does not take."""
+    nx, ny = (int(n) for n in settings["fidelity"].get("grid", DEFAULT_POINT_GRID))
+    half = (ny + 1) // 2
+    try:
+        krylov_levels((nx, half), FEWEST_CELLS)
+    except ValueError as error:
+        raise ValueError(f"fidelity.grid = [nx, ny] with effects.film = \"point\" (ny across the whole contact, "
+                         f"half solved): {str(error).removeprefix('grid: ')}") from None
+    return nx, half
+
+
+def _point_settings(settings: dict, inputs: dict) -> None:
+    point_grid(settings)
+
+
+_POINT_FIELDS = ("central", "minimum", "converged", "x", "y", "pressure", "thickness")
+
+
+def _film_point(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, operating, lubricant = inputs["bearing"], inputs["operating"], inputs["lubricant"]
+    modulus = ball_raceway_modulus(bearing)
+    out = {}
+    for side, curvature, ring_speed in (("inner", inner_curvature, operating.inner_speed),
+                                        ("outer", outer_curvature, operating.outer_speed)):
+        loads = results[f"balls.{side}.load"]
+        ball = jnp.argmax(loads)
+        load, angle = loads[ball], results[f"balls.{side}.contact_angle"][ball]
+        curvature_sum, difference = curvature(bearing, angle)
+        radius_rolling = rolling_radius(bearing, angle, side)
+        radius_transverse = 1.0 / (curvature_sum - 1.0 / radius_rolling)
+        speed = raceway_entrainment_speed(ring_speed, results["balls.orbital_speed"][ball], bearing.pitch_diameter,
+                                          diameter_ratio(bearing, angle), side)
+        solved = point_film(load, radius_rolling, radius_transverse, speed, lubricant.viscosity,
+                            lubricant.pressure_viscosity, modulus, grid=point_grid(settings),
+                            viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+        central, minimum = film_formulas.hamrock_dowson_point(
+            load, radius_rolling, hertz.ellipticity(difference), speed, lubricant.viscosity,
+            lubricant.pressure_viscosity, modulus)
+        out |= {f"film.{side}.ball": ball, f"film.{side}.load": load, f"film.{side}.entrainment_speed": speed,
+                f"film.{side}.hamrock_dowson_central": central, f"film.{side}.hamrock_dowson_minimum": minimum,
+                **{f"film.{side}.{name}": getattr(solved, name) for name in _POINT_FIELDS}}
+        if inputs["roughness"] is not None:
+            out[f"film.{side}.film_parameter"] = film_formulas.film_parameter(solved.minimum, inputs["roughness"])
+    return out
+
+
+def _point_outputs(side):
+    return (
+        Output(f"film.{side}.ball", "", "", f"the most loaded ball on the {side} raceway (index), where it is solved"),
+        Output(f"film.{side}.load", "N", "N", f"its contact load Q, {side}"),
+        Output(f"film.{side}.central", "m", "um", f"central film h_c (numerical point contact), {side}"),
+        Output(f"film.{side}.minimum", "m", "um", f"minimum film h_min (numerical point contact), {side}"),
+        Output(f"film.{side}.hamrock_dowson_central", "m", "um", f"Hamrock–Dowson h_c at that ball, {side}"),
+        Output(f"film.{side}.hamrock_dowson_minimum", "m", "um", f"Hamrock–Dowson h_min at that ball, {side}"),
+        Output(f"film.{side}.film_parameter", "", "", f"film parameter Λ = h_min/σ, {side}"),
+        Output(f"film.{side}.entrainment_speed", "m/s", "m/s", f"mean entrainment speed u, {side}", in_report=False),
+        Output(f"film.{side}.converged", "", "", f"the {side} point contact EHL converged", in_report=False),
+        Output(f"film.{side}.x", "m", "mm", "nodes along rolling (x)", in_report=False),
+        Output(f"film.{side}.y", "m", "mm", "cell centres across rolling from the rolling plane (y ≥ 0)",
+               in_report=False),
+        Output(f"film.{side}.pressure", "Pa", "GPa", f"film pressure p[x, y], {side}", in_report=False),
+        Output(f"film.{side}.thickness", "m", "um", f"film thickness h[x, y], {side}", in_report=False),
+    )
+
+
+def _point_film_plot(result, figure):
+    """Pressure and film maps of the inner and outer contacts of the most loaded balls, mirrored
+    to the whole contact."""
+    values = result.values
+    axes = figure.subplots(2, 2)
+    for row, side in enumerate(("inner", "outer")):
+        x = np.asarray(values[f"film.{side}.x"]) * 1e3
+        y = np.asarray(values[f"film.{side}.y"]) * 1e3
+        whole_y = np.concatenate([-y[::-1], y])
+
+        def whole(field):
+            field = np.asarray(field)
+            return np.concatenate([field[:, ::-1], field], axis=1)
+
+        central = float(values[f"film.{side}.central"]) * 1e6
+        for axis, field, scale, cmap, label, limit in (
+                (axes[row, 0], values[f"film.{side}.pressure"], 1e-9, "viridis", "pressure [GPa]", None),
+                (axes[row, 1], values[f"film.{side}.thickness"], 1e6, "magma", "film thickness [µm]", 3 * central)):
+            shown = axis.pcolormesh(whole_y, x, whole(field) * scale, shading="nearest", cmap=cmap, vmax=limit)
+            figure.colorbar(shown, ax=axis, label=label)
+            axis.set(xlabel="y across rolling [mm]", ylabel="x, rolling [mm]", aspect="equal",
+                     title=f"{side}, ball {int(values[f'film.{side}.ball'])}: {label.split(' [')[0]}")
+    figure.suptitle(f"{result.model.scene.title}: point contact EHL, {len(x)} × {len(y)} half-domain grid")
 
 
 # --- rollers: fully flooded -------------------------------------------------------------------
@@ -295,6 +395,11 @@ def _uniform(y) -> bool:
 
 def _report(result) -> list[str]:
     values = result.values
+    if "film.inner.pressure" in values:  # the point contact level
+        return [f"  point contact EHL ({side}, Newton–Krylov, {len(values[f'film.{side}.x'])} × "
+                f"{len(values[f'film.{side}.y'])} half-domain grid): "
+                + ("converged" if bool(values[f"film.{side}.converged"]) else
+                   "DID NOT CONVERGE (values are the last iterate)") for side in ("inner", "outer")]
     if "film.y" in values:  # the finite line level
         solver = "Newton–Krylov" if _uniform(values["film.y"]) else "Newton"
         level, grid = "finite line EHL", f"{solver}, {len(values['film.x'])} × {len(values['film.y'])} half-domain grid"
@@ -322,18 +427,18 @@ def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
 
 
 ROLLER_INPUTS = ("bearing", "operating", "lubricant")
-_FILM_BLOCKS = ("film_line", "film_finite_line", "starvation_line", "starvation_finite_line")
+_FILM_BLOCKS = ("film_line", "film_finite_line", "starvation_line", "starvation_finite_line", "film_point")
 
 ADAPTER = register(Adapter(
     name="film",
     bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
     keys={
-        "effects.film": Key("choice", choices=(False, "hamrock_dowson", "formula", "line", "finite_line")),
+        "effects.film": Key("choice", choices=(False, "hamrock_dowson", "point", "formula", "line", "finite_line")),
         "effects.starvation": Key("boolean"),
         "operating.oil_layer": quantity("length", "inlet oil supply layer"),
         "fidelity.grid": Key("integers", length=2, read_by=_FILM_BLOCKS,
-                             doc="[nx, ny] cells along rolling and along the whole roller "
-                                 "(2-D EHL solves the half y ≥ 0)"),
+                             doc="[nx, ny] cells along rolling and along the whole roller (or across the whole "
+                                 "point contact; 2-D EHL solves the half y ≥ 0)"),
         "fidelity.solver": Key("choice", choices=FINITE_LINE_SOLVERS,
                                read_by=("film_finite_line", "starvation_finite_line"),
                                doc="finite line EHL: dense Newton (clustered cells) or matrix-free Newton–Krylov "
@@ -344,6 +449,12 @@ ADAPTER = register(Adapter(
         Block(name="film_hamrock_dowson", bearing_types=BALL_BEARING_KINDS, enabled_by=("film", "hamrock_dowson"),
               requires=("equilibrium",), inputs=("bearing", "operating", "lubricant", "roughness"),
               outputs=(*_ball_film_outputs("inner"), *_ball_film_outputs("outer")), compute=_film_hamrock_dowson),
+        Block(name="film_point", sequential_sweep=True, bearing_types=BALL_BEARING_KINDS, enabled_by=("film", "point"),
+              requires=("equilibrium",), inputs=("bearing", "operating", "lubricant", "roughness"),
+              outputs=(*_point_outputs("inner"), *_point_outputs("outer")), compute=_film_point,
+              validate=_point_settings, plot=_point_film_plot,
+              checks=convergence_checks(("film.inner.converged", "the point contact EHL (inner raceway)"),
+                                        ("film.outer.converged", "the point contact EHL (outer raceway)"))),
         Block(name="film_formula", bearing_types=ROLLER_KINDS, enabled_by=("film", "formula"),
               requires=("roller_geometry",), inputs=ROLLER_INPUTS, outputs=_ROLLER_FILM_COMMON,
               compute=_film_formula, validate=_entrainment),

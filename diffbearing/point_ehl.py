@@ -1,0 +1,149 @@
+"""Numerical EHL of an elliptical point contact (a ball on its raceway), fully flooded.
+
+The discrete equations of the finite line contact (`finite_line_ehl.local_equations`: isothermal
+Newtonian Reynolds with the Roelands or Barus viscosity and the Dowson–Higginson density,
+cavitation by Fischer–Burmeister complementarity) with the gap of two bodies of radii Rx (along
+rolling) and Ry (across):
+
+    h = h₀ + x²/2Rx + y²/2Ry + v(x, y),   v = (2/πE') ∬ p/r dA   (Hamrock & Dowson 1976).
+
+Dimensionless in the reference length b_r = 4 Rx p₀/E' (p₀ the Hertz pressure): X = x/b_r,
+Y = y/b_r, P = p/p₀, H = h Rx/b_r², so that v becomes H_el = (1/2π) ∬ P/ρ dX dY exactly as in
+the line units of `line_ehl` (b_r is the Hertz half-width b of a line contact and 4a/π of a
+circular one) and λ = 12η₀u Rx²/(b_r³p₀). Domain: X ∈ [−4.5, 1.5], Y ∈ [0, 1.5(a/b_r) + 1.5]
+(the half y ≥ 0 by symmetry about the rolling plane), p = 0 on its edge; uniform cells, so that
+the deflection is a DC-FFT convolution.
+
+Solver: the finite line contact's matrix-free Newton–Krylov (`finite_line_krylov.solve_nested`):
+on the coarsest grid from the dry Hertz pressure at the Hamrock–Dowson central film, each step
+at most LARGEST_STEP long, then grid by grid, x nodes and y cells doubled, to the finest.
+Derivatives implicit through the finest solution.
+
+Not here yet: the starved inlet. The same equations take an oil layer (one meniscus per y cell,
+as the finite line contact), but from the flooded solution with the menisci at the inlet Newton
+stalls on the coarsest grid (κ ≈ 9, 500 N, a layer of half the flooded film on 33 × 16: max|F|
+≈ 0.1–1 with Newton–Krylov, with a continuation in the layer and with the dense Newton's
+Levenberg–Marquardt steps alike).
+"""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from .film_formulas import hamrock_dowson_point
+from .finite_line_krylov import UniformLevel, krylov_levels, solve_nested
+from .hertz import point_contact
+from .line_ehl import FluidParameters
+from .numerics import require_float64
+
+FEWEST_CELLS = 16  # cells across the half contact of a coarser grid
+COARSEST_STEPS = 120  # Newton–Krylov steps on the coarsest grid, from the Hertz start
+# the largest Newton–Krylov step: |ΔP| ≤ 0.2 p₀ at any node, |ΔH₀| ≤ 0.06 (Hertz units); from the
+# Hertz start the full Newton steps overshoot to h < 0 and stall, even for a circular contact
+# (50 N, Rx = 10 mm, 3 m/s on 33 × 16); limited, they converge in about 20 steps
+LARGEST_STEP = (0.2, 0.06)
+DOMAIN_SIDE = (1.5, 1.5)  # the half domain across rolling: Y_end = 1.5 a/b_r + 1.5
+
+
+class PointFilm(eqx.Module):
+    """Solution [SI] on the half domain y ≥ 0: x [m] (nx), y [m] cell centres (ny), pressure [Pa]
+    and film [m] (nx, ny), central film at x = 0 next to y = 0 [m], minimum film [m] and where it
+    is (x, y [m]), whether Newton–Krylov converged (residual below the tolerance, positive film),
+    that residual [-]."""
+
+    x: jax.Array
+    y: jax.Array
+    pressure: jax.Array
+    thickness: jax.Array
+    central: jax.Array
+    minimum: jax.Array
+    minimum_x: jax.Array
+    minimum_y: jax.Array
+    converged: jax.Array
+    residual: jax.Array
+
+
+def _scales(load, radius_rolling, radius_transverse, effective_modulus):
+    """(b_r [m], p₀ [Pa], a/b_r, b/b_r): the reference length, the Hertz pressure and semi-axes."""
+    curvature_sum = 1.0 / radius_rolling + 1.0 / radius_transverse
+    contact = point_contact(load, curvature_sum, (1.0 / radius_rolling - 1.0 / radius_transverse) / curvature_sum,
+                            effective_modulus)
+    reference = 4.0 * radius_rolling * contact.max_pressure / effective_modulus
+    return (reference, contact.max_pressure, contact.semi_major_axis / reference,
+            contact.semi_minor_axis / reference)
+
+
+def _hertz_start(level_at, constants, grid):
+    """The start [-] on the coarsest grid, without derivatives: the dry Hertz pressure (scaled
+    to the discrete load) and the offset H₀ that puts the Hamrock–Dowson central film at the
+    centre."""
+    load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus = constants
+    level = level_at(*constants)(*grid)
+    reference, _, major, minor = _scales(load, radius_rolling, radius_transverse, effective_modulus)
+    x, y = level.columns.x[:, None], level.columns.y[None, :]
+    hertz = jnp.sqrt(jnp.clip(1.0 - (x / minor) ** 2 - (y / major) ** 2, 0.0, None))
+    hertz = hertz * level.load_target / (2.0 * level.spacing * jnp.sum(hertz * level.columns.widths))
+    central, _ = hamrock_dowson_point(load, radius_rolling, major / minor, speed, viscosity, pressure_viscosity,
+                                      effective_modulus)
+    offset = central * radius_rolling / reference**2 - level.film(hertz, 0.0)[level.centre, 0]
+    return jnp.append(hertz[1:-1].reshape(-1), offset)
+
+
+def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus,
+               grid=(65, 32), viscosity_law="roelands", density_law="dowson_higginson",
+               tolerance=1e-10) -> PointFilm:
+    """Isothermal EHL film [m] of an elliptical point contact, fully flooded (module docstring).
+
+    Args:
+        load: contact load Q [N] > 0.
+        radius_rolling: reduced radius Rx [m] along rolling; radius_transverse: Ry ≥ Rx [m] across
+            (the ellipse's long axis a lies across rolling, as for a ball in its groove).
+        speed: mean entrainment speed u [m/s] > 0.
+        viscosity: η₀ [Pa·s]; pressure_viscosity: α [1/Pa]; effective_modulus: E' [Pa].
+        grid: (nx, ny) nodes along rolling (2^k·(n₀ − 1) + 1 with n₀ from 33 to 65, e.g. 65, 129,
+            257) by uniform cells on the half domain y ≥ 0 (`finite_line_krylov.krylov_levels`).
+        viscosity_law: "roelands" or "barus"; density_law: "dowson_higginson" or
+            "incompressible" (`line_ehl`).
+
+    Converged means max|F| below `tolerance` and a positive film on the finest grid."""
+    require_float64()
+    levels = krylov_levels(grid, FEWEST_CELLS)
+    for name, value, what in (("load", load, "a contact load > 0 N"), ("speed", speed, "an entrainment speed > 0 m/s"),
+                              ("radius_rolling", radius_rolling, "a reduced radius > 0 m"),
+                              ("radius_transverse", radius_transverse, "a reduced radius > 0 m")):
+        if not isinstance(value, jax.core.Tracer) and not float(value) > 0:
+            raise ValueError(f"{name}: {what}, got {value}")
+    if not isinstance(radius_transverse, jax.core.Tracer) and not isinstance(radius_rolling, jax.core.Tracer) \
+            and float(radius_transverse) < float(radius_rolling):
+        raise ValueError(f"radius_transverse: Ry ≥ Rx = {radius_rolling} m (the ellipse's long axis across rolling), "
+                         f"got {radius_transverse}")
+    fixed = jax.lax.stop_gradient
+
+    def level_at(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus):
+        """(nx, ny) → UniformLevel of the case."""
+        reference, hertz_pressure, major, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
+        fluid = FluidParameters(12.0 * viscosity * speed * radius_rolling**2 / (reference**3 * hertz_pressure),
+                                hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
+
+        def rigid_transverse(y):
+            return 0.5 * radius_rolling / radius_transverse * y**2
+
+        side = DOMAIN_SIDE[0] * major + DOMAIN_SIDE[1]
+        return lambda nx, ny: UniformLevel(nx, ny, side, rigid_transverse, fluid, None, 0.0,
+                                           load / (hertz_pressure * reference**2), largest_step=LARGEST_STEP)
+
+    arguments = (load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus)
+    constants = fixed(arguments)
+    unknowns = _hertz_start(level_at, constants, levels[0])
+    finest, unknowns = solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_steps=COARSEST_STEPS)
+    reference, hertz_pressure, _, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
+    error = jnp.max(jnp.abs(finest.residual(fixed(unknowns))))
+    pressure, offset, _ = finest.unpack(unknowns)
+    film = finest.film(pressure, offset)
+    converged = (error < tolerance) & (jnp.min(fixed(film)) > 0)
+    thickness = film * reference**2 / radius_rolling
+    lowest = jnp.argmin(thickness)
+    x, y = finest.columns.x * reference, finest.columns.y * reference
+    return PointFilm(x, y, pressure * hertz_pressure, thickness, thickness[finest.centre, 0],
+                     thickness.reshape(-1)[lowest], x[lowest // finest.ny], y[lowest % finest.ny], converged, error)

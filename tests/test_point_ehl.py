@@ -1,0 +1,89 @@
+"""The numerical point-contact EHL: bad input refused, the load carried exactly, flooded films
+against Hamrock–Dowson, and implicit derivatives against central differences."""
+
+import jax
+import jax.numpy as jnp
+import pytest
+
+from diffbearing.film_formulas import hamrock_dowson_point
+from diffbearing.hertz import point_contact
+from diffbearing.point_ehl import point_film
+
+from .helpers import assert_jvp_matches_central_difference
+
+# a ball in a groove (D = 12.7 mm, f = 0.52, inner race of a 6206-sized bearing): Rx 5.4 mm,
+# Ry 165 mm (κ ≈ 9), 500 N (p₀ 1.44 GPa), u = 5 m/s; and a circular contact, Rx = Ry = 10 mm,
+# 50 N (p₀ 1.07 GPa), u = 1 m/s; η₀ 0.08 Pa·s, α 2.2e-8 1/Pa, E' 2.26e11 Pa
+OIL = dict(viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
+GROOVE = dict(load=500.0, radius_rolling=5.4e-3, radius_transverse=0.165, speed=5.0)
+CIRCLE = dict(load=50.0, radius_rolling=10e-3, radius_transverse=10e-3, speed=1.0)
+
+
+def _film(case, grid=(65, 32), **options):
+    return jax.jit(lambda q: point_film(q, case["radius_rolling"], case["radius_transverse"], case["speed"], **OIL,
+                                        grid=grid, **options))(case["load"])
+
+
+def _hamrock_dowson(case):
+    """(h_c, h_min) [m] of Hamrock and Dowson's formula at the case's Hertz ellipticity."""
+    curvature_sum = 1.0 / case["radius_rolling"] + 1.0 / case["radius_transverse"]
+    difference = (1.0 / case["radius_rolling"] - 1.0 / case["radius_transverse"]) / curvature_sum
+    ellipticity = point_contact(case["load"], curvature_sum, difference, OIL["effective_modulus"]).ellipticity
+    return hamrock_dowson_point(case["load"], case["radius_rolling"], ellipticity, case["speed"], **OIL)
+
+
+@pytest.mark.parametrize("change, match", [
+    (dict(radius_transverse=4e-3), "radius_transverse"),
+    (dict(radius_rolling=-1.0), "radius_rolling"),
+    (dict(speed=0.0), "speed"),
+    (dict(grid=(16, 32)), "grid"),
+])
+def test_bad_input_names_the_parameter(change, match):
+    arguments = dict(CIRCLE | OIL, radius_rolling=5e-3) | change
+    with pytest.raises(ValueError, match=match):
+        point_film(**arguments)
+
+
+@pytest.fixture(scope="module")
+def groove():
+    return _film(GROOVE)
+
+
+@pytest.mark.slow  # about 10 s (2 cores)
+def test_the_film_carries_the_load_and_closes_at_the_outlet(groove):
+    """∬p dA over the whole contact is Q (the load balance, to the solver's tolerance); the film
+    is positive, and its minimum lies in the outlet constriction, between the centre and the
+    Hertz edge b = 0.136 mm behind it."""
+    assert bool(groove.converged)
+    dx, dy = float(groove.x[1] - groove.x[0]), float(groove.y[1] - groove.y[0])
+    assert 2.0 * dx * dy * float(jnp.sum(groove.pressure)) == pytest.approx(GROOVE["load"], rel=1e-9)
+    assert 0.0 < float(groove.minimum) < float(groove.central)
+    assert 0.0 < float(groove.minimum_x) < 0.136e-3
+
+
+@pytest.mark.slow  # about 20 s each (2 cores)
+@pytest.mark.parametrize("case", [CIRCLE, GROOVE], ids=["circular", "elliptical κ≈9"])
+def test_flooded_film_within_ten_percent_of_hamrock_dowson(case):
+    """On 129 × 64 (half domain) the central and minimum films are within 10 % of Hamrock and
+    Dowson's formula (J. Lubr. Technol. 99, 1977), itself a fit to numerical solutions within
+    about 5 %; the grid study in docs/validation.md §Point contact EHL shows where the films
+    converge."""
+    film = _film(case, grid=(129, 64))
+    central, minimum = _hamrock_dowson(case)
+    assert bool(film.converged)
+    assert float(film.central) == pytest.approx(float(central), rel=0.10)
+    assert float(film.minimum) == pytest.approx(float(minimum), rel=0.10)
+
+
+@pytest.mark.slow  # about 40 s (2 cores)
+def test_point_film_derivatives_match_central_differences():
+    """d(h_c, h_min)/dQ [µm/kN] and d/du at the groove case on 65 × 32: the implicit derivatives
+    (forward, and reverse through the transposed GMRES solve) against central differences."""
+
+    def films(x):  # (load [kN], speed [m/s]) → films [µm]
+        film = point_film(1e3 * x[0], GROOVE["radius_rolling"], GROOVE["radius_transverse"], x[1], **OIL)
+        return jnp.stack([film.central, film.minimum]) * 1e6
+
+    point = jnp.array([GROOVE["load"] * 1e-3, GROOVE["speed"]])
+    for direction in jnp.eye(2):
+        assert_jvp_matches_central_difference(jax.jit(films), point, direction, step=1e-4, rtol=1e-3)
