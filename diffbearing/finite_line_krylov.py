@@ -42,6 +42,7 @@ COARSEST_NODES = 33  # nodes along rolling of the coarsest (dense) grid
 COARSEST_CELLS = 32  # fewest cells on the half roller of a coarser grid: fewer put h < 0 at the roller end
 NEWTON_STEPS = 60  # Newton–Krylov steps per level
 BAND = 5  # colors along x: a Reynolds row reads nodes i − 2 … i + 1
+READ_BAND = (-2, -1, 0, 1)  # those nodes, from the row's own
 DIMENSIONLESS_MODULUS = 4.0  # E' in influence_coefficients' 2/(πE') so that H_el = (1/2π) Σ P C
 
 
@@ -162,8 +163,8 @@ class UniformLevel:
         target = jnp.arange(rows) + 1  # the node of each interior unknown
 
         def elastic_block(sensitivity, equation_rows):
-            """Σ_shift ∂F/∂H[·, j + shift] · ∂H[·, j + shift]/∂P[a, j]: sensitivity[shift] (rows, nx, ny)
-            → (ny, rows, nx − 2)."""
+            """Σ_shift ∂F/∂H[·, j + shift] · ∂H[·, j + shift]/∂P[a, j] of rows that read their whole
+            column (the menisci): sensitivity[shift] (equation_rows, nx, ny) → (ny, equation_rows, nx − 2)."""
             block = jnp.zeros((ny, equation_rows, rows))
             node = jnp.arange(nx)
             for index, shift in enumerate((-1, 0, 1)):
@@ -176,16 +177,21 @@ class UniformLevel:
                 block = block + inside * jnp.einsum("eij,jia->jea", sensitivity[index], direct[None] + image)
             return block
 
-        # ∂(Reynolds r, j)/∂H[i, j + shift], banded in i (i − r − 1 ∈ −2 … 1)
-        node = jnp.arange(nx)
-        banded = []
-        for shift in (-1, 0, 1):
-            neighbour = jnp.clip(column + shift, 0, ny - 1)
-            near = (node[None, :] - r[:, :1] - 1 >= -2) & (node[None, :] - r[:, :1] - 1 <= 1)  # (rows, nx)
-            value = by_height[(node[None, :, None] % BAND) * 3 + neighbour[None, None, :] % 3, r[:, :1, None],
-                              column[None, None, :]]  # (rows, nx, ny)
-            banded.append(value * near[:, :, None])
-        blocks = blocks.at[:, :rows, :rows].add(elastic_block(banded, rows))
+        # ∂(Reynolds r, j)/∂H[r + 1 + d, j + shift] for d = −2 … 1 (the band it reads), [shift][d] (rows, ny)
+        equation = jnp.arange(rows)
+        band = [[((equation + 1 + d >= 0) & (equation + 1 + d < nx))[:, None]
+                 * by_height[((equation[:, None] + 1 + d) % BAND) * 3 + jnp.clip(column + shift, 0, ny - 1)[None, :] % 3,
+                             equation[:, None], column[None, :]] for d in READ_BAND] for shift in (-1, 0, 1)]
+        reynolds = jnp.zeros((ny, rows, rows))
+        for index, shift in enumerate((-1, 0, 1)):  # Σ_shift Σ_d band · ∂H[r + 1 + d, j + shift]/∂P[a, j]
+            mirror = jnp.clip(2 * column + shift + 1, -1, 2 * ny)  # cells between y_{j+shift} and −y_j
+            inside = (column + shift >= 0) & (column + shift < ny)
+            for position, d in enumerate(READ_BAND):
+                offset = equation[:, None] + d - equation[None, :] + nx - 1  # node r + 1 + d against node a + 1
+                coupling = self.coefficients[offset, shift + 1][None] + self.coefficients[offset[None],
+                                                                                          mirror[:, None, None] + 1]
+                reynolds = reynolds + (band[index][position] * inside).T[:, :, None] * coupling
+        blocks = blocks.at[:, :rows, :rows].add(reynolds)
         offset_column = by_offset[:rows].T  # (ny, rows)
         if self.starved:
             by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
