@@ -142,7 +142,7 @@ def _film_point(inputs: dict, settings: dict, results: dict) -> dict:
 
 def _point_outputs(side):
     return (
-        Output(f"film.{side}.ball", "", "", f"the most loaded ball on the {side} raceway (index), where it is solved"),
+        Output(f"film.{side}.ball", "", "", f"most loaded ball (index), where solved, {side}"),
         Output(f"film.{side}.load", "N", "N", f"its contact load Q, {side}"),
         Output(f"film.{side}.central", "m", "um", f"central film h_c (numerical point contact), {side}"),
         Output(f"film.{side}.minimum", "m", "um", f"minimum film h_min (numerical point contact), {side}"),
