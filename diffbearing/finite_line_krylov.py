@@ -117,6 +117,15 @@ class UniformLevel:
         meniscus = unknowns[self.interior + 1:] if self.starved else jnp.full(self.ny, INLET)
         return pressure, unknowns[self.interior], meniscus
 
+    def solution(self, unknowns, tolerance):
+        """(P, H, X_m, max|F|, converged) of `unknowns`: converged where max|F| is below
+        `tolerance` and the film is positive."""
+        fixed = jax.lax.stop_gradient
+        error = jnp.max(jnp.abs(self.residual(fixed(unknowns))))
+        pressure, offset, meniscus = self.unpack(unknowns)
+        film = self.film(pressure, offset)
+        return pressure, film, meniscus, error, (error < tolerance) & (jnp.min(fixed(film)) > 0)
+
     def balance(self, pressure):
         return (2.0 * self.spacing * jnp.sum(pressure * self.columns.widths) - self.load_target) / self.load_target \
             * 0.5 * np.pi
@@ -339,10 +348,7 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
         unknowns = jnp.concatenate([unknowns, coarse.meniscus / half_width])
     finest, unknowns = solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_solved=True)
     half_width, hertz_pressure = scales(load, radius, effective_modulus, flat_length)
-    error = jnp.max(jnp.abs(finest.residual(fixed(unknowns))))
-    pressure, offset, meniscus = finest.unpack(unknowns)
-    film = finest.film(pressure, offset)
-    converged = (error < tolerance) & (jnp.min(fixed(film)) > 0)
+    pressure, film, meniscus, error, converged = finest.solution(unknowns, tolerance)
     thickness = film * half_width**2 / radius
     lowest = jnp.argmin(thickness)
     y = finest.columns.y

@@ -29,7 +29,6 @@ Levenberg–Marquardt steps alike).
 import equinox as eqx
 import jax
 import jax.numpy as jnp
-import numpy as np
 
 from .film_formulas import hamrock_dowson_point
 from .finite_line_krylov import UniformLevel, krylov_levels, solve_nested
@@ -138,10 +137,7 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
     unknowns = _hertz_start(level_at, constants, levels[0])
     finest, unknowns = solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_steps=COARSEST_STEPS)
     reference, hertz_pressure, _, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
-    error = jnp.max(jnp.abs(finest.residual(fixed(unknowns))))
-    pressure, offset, _ = finest.unpack(unknowns)
-    film = finest.film(pressure, offset)
-    converged = (error < tolerance) & (jnp.min(fixed(film)) > 0)
+    pressure, film, _, error, converged = finest.solution(unknowns, tolerance)
     thickness = film * reference**2 / radius_rolling
     lowest = jnp.argmin(thickness)
     x, y = finest.columns.x * reference, finest.columns.y * reference
