@@ -17,8 +17,9 @@ film offset H₀ and the load balance through their Schur complement. The blocks
 colored Jacobian-vector products of the column-local equations (Curtis–Powell–Reid: the Reynolds
 row of node i reads nodes i − 2 … i + 1 of columns j − 1 … j + 1, so 5 × 3 colors suffice)
 and from the meniscus rows by three colored vector-Jacobian products. The coupling between
-columns that the blocks leave out is what GMRES iterates on: measured in
-`benchmarks/finite_line_krylov.py`.
+columns that the blocks leave out is what GMRES iterates on (docs/benchmarks.md §Finite line EHL
+by Newton–Krylov). Newton steps are limited (`UniformLevel.limit`): no meniscus moves more than
+a cell, and, where a caller asks, no pressure and H₀ more than given amounts.
 
 Derivatives: implicit, through the finest solution (`newton_krylov.krylov_root`), the tangent
 systems solved by the same preconditioned GMRES.
@@ -67,7 +68,10 @@ def krylov_levels(grid, fewest_cells: int = COARSEST_CELLS) -> list[tuple[int, i
 
 class UniformLevel:
     """One grid of the nested iteration: its columns (ColumnGrid), FFT spectrum, rigid film and
-    the elastic coefficients the preconditioner reads. Dimensionless, Hertz half-width units."""
+    the elastic coefficients the preconditioner reads. Dimensionless, Hertz half-width units:
+    nx nodes on X ∈ [INLET, OUTLET] by ny uniform cells on Y ∈ [0, half_length], the rigid film
+    X²/2 + rigid_axial(Y), ∬P dX dY = load_target over the whole contact, H_oil = supply (None:
+    flooded); largest_step = (ΔP, ΔH₀) bounds each Newton step (None: only the menisci's)."""
 
     def __init__(self, nx, ny, half_length, rigid_axial, fluid, supply, side_inflow, load_target, largest_step=None):
         self.nx, self.ny = nx, ny
@@ -301,8 +305,7 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
     Arguments as `finite_line_ehl.finite_line_film`, except: grid (nx, ny): nx nodes along
     rolling, 2^k·(n₀ − 1) + 1 with n₀ from 33 to 65 (e.g. 129, 257, 513), by ny uniform cells on
     the half roller (`krylov_levels`). Converged means max|F| below `tolerance` and a positive film
-    on the finest grid; the number of Newton steps and GMRES restarts per level are not returned
-    (the benchmark measures them)."""
+    on the finest grid (at most NEWTON_STEPS per level)."""
     require_float64()
     levels = krylov_levels(grid)
     if not 0.0 <= side_inflow <= 1.0:
