@@ -87,3 +87,18 @@ def test_point_film_derivatives_match_central_differences():
     point = jnp.array([GROOVE["load"] * 1e-3, GROOVE["speed"]])
     for direction in jnp.eye(2):
         assert_jvp_matches_central_difference(jax.jit(films), point, direction, step=1e-4, rtol=1e-3)
+
+
+@pytest.mark.slow  # about 30 s (2 cores)
+def test_heavy_load_converges_with_finite_gradients():
+    """A hard case: the groove at 3 kN (p₀ = 2.62 GPa, Moes M ≈ 3500) on 65 × 32 converges, with a
+    positive film and finite derivatives d(h_c, h_min)/dQ, both negative (a heavier load thins the
+    film, h ∝ Q^−0.067 and Q^−0.073 in Hamrock–Dowson)."""
+
+    def films(load):
+        film = point_film(load, GROOVE["radius_rolling"], GROOVE["radius_transverse"], GROOVE["speed"], **OIL)
+        return jnp.stack([film.central, film.minimum]), film.converged
+
+    (values, converged), (slopes, _) = jax.jit(lambda q: jax.jvp(films, (q,), (1.0,)))(3000.0)
+    assert bool(converged) and bool(jnp.all(values > 0))
+    assert bool(jnp.all(jnp.isfinite(slopes))) and bool(jnp.all(slopes < 0))
