@@ -321,6 +321,23 @@ def test_starved_ehl_paper_as_published_through_the_cli(tmp_path):
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3 and starvation["relative_error"] > 0.01
 
 
+@pytest.mark.slow  # about 2 minutes (2 cores): flooded and starved, each compiled
+def test_newton_krylov_finite_line_through_the_cli(capsys, tmp_path):
+    """The public scene with fidelity.solver = "krylov" on [65, 96] (65 × 48 uniform cells on the
+    half, from a 33 × 48 dense solve): both solves converge, the report names the solver, the
+    flooded central film is within 5 % of the paper's 1.207 µm and the starved film is thinner."""
+    path = tmp_path / "krylov.json"
+    code = cli.main(["run", example_scene("starved_roller"), "--json", str(path), "--set", "fidelity.grid=[65, 96]",
+                     "--set", 'fidelity.solver="krylov"'])
+    out = capsys.readouterr().out
+    assert code == 0 and "finite line EHL (Newton–Krylov, 65 × 48 half-domain grid, fully flooded): converged" in out
+    values = json.loads(path.read_text())
+    film, starvation = values["film"], values["starvation"]
+    assert film["converged"] is True and starvation["converged"] is True
+    assert film["central"] == pytest.approx(1.207e-6, rel=0.05)
+    assert starvation["central"] < film["central"] and starvation["relative_error"] > 0.01
+
+
 def test_starvation_without_an_oil_layer_exits_2(capsys, tmp_path):
     text = Path(example_scene("starved_roller")).read_text()
     scene = tmp_path / "no_oil_layer.toml"

@@ -387,12 +387,6 @@ def _finite_line_film_plot(result, figure):
 
 # --- report --------------------------------------------------------------------------------------
 
-def _uniform(y) -> bool:
-    """Whether cell centres y are uniform (the Newton–Krylov grid)."""
-    steps = np.diff(np.asarray(y))
-    return bool(np.allclose(steps, steps[0], rtol=1e-9))
-
-
 def _report(result) -> list[str]:
     values = result.values
     if "film.inner.pressure" in values:  # the point contact level
@@ -401,7 +395,8 @@ def _report(result) -> list[str]:
                 + ("converged" if bool(values[f"film.{side}.converged"]) else
                    "DID NOT CONVERGE (values are the last iterate)") for side in ("inner", "outer")]
     if "film.y" in values:  # the finite line level
-        solver = "Newton–Krylov" if _uniform(values["film.y"]) else "Newton"
+        grid, chosen = finite_line_settings(result.model.settings)
+        solver = "Newton–Krylov" if chosen == "krylov" and len(krylov_levels(grid)) > 1 else "Newton"
         level, grid = "finite line EHL", f"{solver}, {len(values['film.x'])} × {len(values['film.y'])} half-domain grid"
         meniscus = "a meniscus per y cell by mass balance"
     else:
