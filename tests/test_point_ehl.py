@@ -102,3 +102,19 @@ def test_heavy_load_converges_with_finite_gradients():
     (values, converged), (slopes, _) = jax.jit(lambda q: jax.jvp(films, (q,), (1.0,)))(3000.0)
     assert bool(converged) and bool(jnp.all(values > 0))
     assert bool(jnp.all(jnp.isfinite(slopes))) and bool(jnp.all(slopes < 0))
+
+
+@pytest.mark.slow  # about 40 s (2 cores)
+def test_very_low_speed_says_whether_it_converged_and_stays_finite():
+    """A hard case: the groove at 0.05 m/s (Moes M ≈ 18 000, a 50 nm film) on 65 × 32. Whether or
+    not Newton–Krylov converges, the solution says so by its residual, and the
+    values and their load derivatives are finite."""
+
+    def solve(load):
+        film = point_film(load, GROOVE["radius_rolling"], GROOVE["radius_transverse"], 0.05, **OIL)
+        return jnp.stack([film.central, film.minimum]), (film.converged, film.residual, jnp.min(film.thickness))
+
+    (values, (converged, residual, lowest)), (slopes, _) = jax.jit(
+        lambda q: jax.jvp(solve, (q,), (1.0,)))(GROOVE["load"])
+    assert bool(converged) == (float(residual) < 1e-10 and float(lowest) > 0)
+    assert bool(jnp.all(jnp.isfinite(values))) and bool(jnp.all(jnp.isfinite(slopes)))
