@@ -51,7 +51,7 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         limit: d → d shortened (e.g. a largest change per unknown), applied to every step; the
             sufficient decrease is then asked of the shortened step's fraction of the Newton step.
 
-    Returns (y, Newton steps, GMRES restarts in all)."""
+    Returns (y, Newton steps, GMRES restart cycles in all: lineax's `num_steps`)."""
 
     def evaluate(y):
         residual = function(y, args)
