@@ -10,7 +10,7 @@ import pytest
 from diffbearing.finite_line_ehl import finite_line_film
 from diffbearing.finite_line_krylov import UniformLevel, finite_line_film_krylov, krylov_levels
 from diffbearing.influence import love_rectangle
-from diffbearing.line_ehl import FluidParameters
+from diffbearing.line_ehl import FluidParameters, moes_load_parameter
 from diffbearing.roller_profile import roller_profile
 
 
@@ -121,3 +121,25 @@ def test_newton_krylov_film_derivatives_match_central_differences():
     solved = _solve(1028.0)
     assert bool(solved.converged) and float(solved.minimum) > 0.1e-6  # the end constriction resolved
     assert_jvp_matches_central_difference(jax.jit(films), jnp.asarray(1.028), jnp.asarray(1.0), 1e-3, rtol=5e-4)
+
+
+@pytest.mark.slow  # about 30 s and 80 s (2 cores)
+@pytest.mark.parametrize("load, layer, speed_factor", [(2471.0, None, 6e-4), (1028.0, 0.1e-6, 1.0)],
+                         ids=["M-above-200", "severe-starvation"])
+def test_newton_krylov_hard_cases_say_whether_they_converged_and_stay_finite(load, layer, speed_factor):
+    """Hard cases on 65 × 48: the paper's heaviest load at 6e-4 of its speed (Moes M ≈ 205 on the
+    flat's length), and 1028 N starved by 0.1 µm of oil (a twelfth of the flooded film). Whether
+    or not Newton–Krylov converges, `converged` agrees with the residual and the film, and the
+    films and their load derivatives are finite."""
+    speed = starved_ehl_entrainment_speed() * speed_factor
+    assert speed_factor == 1.0 or float(moes_load_parameter(load / 12.7e-3, STARVED_EHL_LINE["radius"], speed, 0.08,
+                                                            2.26e11)) > 200
+
+    def solve(w):
+        film = finite_line_film_krylov(w, STARVED_EHL_LINE["radius"], speed, 0.08, 2.2e-8, 2.26e11, PROFILE, 14.7e-3,
+                                       12.7e-3, grid=(65, 48), oil_layer=layer)
+        return jnp.stack([film.central, film.minimum]), (film.converged, film.residual, jnp.min(film.thickness))
+
+    (values, (converged, residual, lowest)), (slopes, _) = jax.jit(lambda w: jax.jvp(solve, (w,), (1.0,)))(load)
+    assert bool(converged) == (float(residual) < 1e-10 and float(lowest) > 0)
+    assert bool(jnp.all(jnp.isfinite(values))) and bool(jnp.all(jnp.isfinite(slopes)))
