@@ -2,9 +2,9 @@
 
     python benchmarks/point_ehl.py [--grids 65 129] [--refinement 65 129 257]
 
-Cases: a circular contact and ball-in-groove contacts (κ ≈ 3 and 9) over a range of loads and
-speeds (Moes M from about 20 to 600, L from 7 to 20; steel, η₀ 0.08 Pa·s, α 2.2e-8 1/Pa,
-Roelands, Dowson–Higginson); each solved on the half-domain grids nx × nx/2, in its own process
+Cases: circular contacts and elliptical ones (κ ≈ 3, 6 and 9) over a range of loads and speeds
+(Moes M from 40 to 3500, L from 14 to 25, as the table prints them; steel, η₀ 0.08 Pa·s,
+α 2.2e-8 1/Pa, Roelands, Dowson–Higginson); each solved on the half-domain grids nx × nx/2, in its own process
 (time and peak memory its own). The refinement study takes one case through every grid of
 `--refinement` and gives the observed order p = log₂(|f₁ − f₂| / |f₂ − f₃|) of the last three.
 Writes benchmarks/results/point_ehl.md and point_ehl.png.

@@ -268,28 +268,25 @@ def interpolate_level(unknowns, coarse: UniformLevel, fine: UniformLevel):
     return result
 
 
-def solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_solved=False,
-                 coarsest_steps=NEWTON_STEPS):
+def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=None):
     """(the finest UniformLevel built from the live `arguments`, its solution with implicit
-    derivatives): `unknowns` of levels[0] solved there by Newton–Krylov (unless
-    `coarsest_solved`, in `coarsest_steps` at most), then interpolated to each finer level and
-    solved again; no derivative flows through the iterations. `level_at(*arguments)` → a
-    function (nx, ny) → UniformLevel."""
-    fixed = jax.lax.stop_gradient
-    solving = level_at(*fixed(arguments))
-    previous = None
-    for nx, ny in levels:
+    derivatives): `start(coarsest level)` → unknowns there, solved by Newton–Krylov in at most
+    `coarsest_steps` (None: taken as solved), then interpolated to each finer level and solved
+    again in at most NEWTON_STEPS; no derivative flows through the iterations.
+    `level_at(*arguments)` → a function (nx, ny) → UniformLevel."""
+    solving = level_at(*jax.lax.stop_gradient(arguments))
+
+    def solve(level, unknowns, steps):
+        return newton_krylov(level.residual, unknowns, None, level.preconditioner, tolerance=tolerance,
+                             max_steps=steps, limit=level.limit)[0]
+
+    previous = solving(*levels[0])
+    unknowns = start(previous)
+    if coarsest_steps is not None:
+        unknowns = solve(previous, unknowns, coarsest_steps)
+    for nx, ny in levels[1:]:
         current = solving(nx, ny)
-        steps = NEWTON_STEPS
-        if previous is None:
-            if coarsest_solved:
-                previous = current
-                continue
-            steps = coarsest_steps
-        else:
-            unknowns = interpolate_level(unknowns, previous, current)
-        unknowns = newton_krylov(current.residual, unknowns, None, current.preconditioner, tolerance=tolerance,
-                                 max_steps=steps, limit=current.limit)[0]
+        unknowns = solve(current, interpolate_level(unknowns, previous, current), NEWTON_STEPS)
         previous = current
     finest = level_at(*arguments)(*levels[-1])
     return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns))
@@ -342,14 +339,15 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
         return lambda nx, ny: UniformLevel(nx, ny, 0.5 * length / half_width, rigid_axial, fluid, supply, side_inflow,
                                            0.5 * np.pi * flat_length / half_width)
 
-    half_width, hertz_pressure = scales(*fixed((load, radius, effective_modulus, flat_length)))
-    coarsest = level_at(*fixed(arguments))(*levels[0])
-    pressure = coarse.pressure / hertz_pressure
-    offset = coarse.central * radius / half_width**2 - coarsest.film(pressure, 0.0)[coarsest.centre, 0]
-    unknowns = jnp.append(pressure[1:-1].reshape(-1), offset)
-    if starved:
-        unknowns = jnp.concatenate([unknowns, coarse.meniscus / half_width])
-    finest, unknowns = solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_solved=True)
+    def from_dense(coarsest):
+        """The dense Newton's coarse solution as the unknowns of the coarsest level."""
+        half_width, hertz_pressure = scales(*fixed((load, radius, effective_modulus, flat_length)))
+        pressure = coarse.pressure / hertz_pressure
+        offset = coarse.central * radius / half_width**2 - coarsest.film(pressure, 0.0)[coarsest.centre, 0]
+        unknowns = jnp.append(pressure[1:-1].reshape(-1), offset)
+        return jnp.concatenate([unknowns, coarse.meniscus / half_width]) if starved else unknowns
+
+    finest, unknowns = solve_nested(level_at, arguments, levels, from_dense, tolerance)
     half_width, hertz_pressure = scales(load, radius, effective_modulus, flat_length)
     pressure, film, meniscus, error, converged = finest.solution(unknowns, tolerance)
     thickness = film * half_width**2 / radius

@@ -35,6 +35,7 @@ from .finite_line_krylov import UniformLevel, krylov_levels, solve_nested
 from .hertz import point_contact
 from .line_ehl import FluidParameters
 from .numerics import require_float64
+from .params import _is_concrete, check_range
 
 FEWEST_CELLS = 16  # cells across the half contact of a coarser grid
 COARSEST_STEPS = 120  # Newton–Krylov steps on the coarsest grid, from the Hertz start
@@ -73,12 +74,11 @@ def _scales(load, radius_rolling, radius_transverse, effective_modulus):
             contact.semi_minor_axis / reference)
 
 
-def _hertz_start(level_at, constants, grid):
-    """The start [-] on the coarsest grid, without derivatives: the dry Hertz pressure (scaled
+def _hertz_start(level, constants):
+    """The start [-] on the coarsest `level`, without derivatives: the dry Hertz pressure (scaled
     to the discrete load) and the offset H₀ that puts the Hamrock–Dowson central film at the
     centre."""
     load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus = constants
-    level = level_at(*constants)(*grid)
     reference, _, major, minor = _scales(load, radius_rolling, radius_transverse, effective_modulus)
     x, y = level.columns.x[:, None], level.columns.y[None, :]
     hertz = jnp.sqrt(jnp.clip(1.0 - (x / minor) ** 2 - (y / major) ** 2, 0.0, None))
@@ -108,16 +108,11 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
     Converged means max|F| below `tolerance` and a positive film on the finest grid."""
     require_float64()
     levels = krylov_levels(grid, FEWEST_CELLS)
-    for name, value, what in (("load", load, "a contact load > 0 N"), ("speed", speed, "an entrainment speed > 0 m/s"),
-                              ("radius_rolling", radius_rolling, "a reduced radius > 0 m"),
-                              ("radius_transverse", radius_transverse, "a reduced radius > 0 m")):
-        if not isinstance(value, jax.core.Tracer) and not float(value) > 0:
-            raise ValueError(f"{name}: {what}, got {value}")
-    if not isinstance(radius_transverse, jax.core.Tracer) and not isinstance(radius_rolling, jax.core.Tracer) \
-            and float(radius_transverse) < float(radius_rolling):
-        raise ValueError(f"radius_transverse: Ry ≥ Rx = {radius_rolling} m (the ellipse's long axis across rolling), "
-                         f"got {radius_transverse}")
-    fixed = jax.lax.stop_gradient
+    check_range("load", load, low=0.0, unit=" N")
+    check_range("speed", speed, low=0.0, unit=" m/s", why="the mean entrainment speed")
+    check_range("radius_rolling", radius_rolling, low=0.0, unit=" m")
+    check_range("radius_transverse", radius_transverse, low=float(radius_rolling) if _is_concrete(radius_rolling)
+                else 0.0, low_open=False, unit=" m", why="Ry ≥ Rx: the ellipse's long axis across rolling")
 
     def level_at(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus):
         """(nx, ny) → UniformLevel of the case."""
@@ -133,9 +128,9 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
                                            load / (hertz_pressure * reference**2), largest_step=LARGEST_STEP)
 
     arguments = (load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus)
-    constants = fixed(arguments)
-    unknowns = _hertz_start(level_at, constants, levels[0])
-    finest, unknowns = solve_nested(level_at, arguments, levels, unknowns, tolerance, coarsest_steps=COARSEST_STEPS)
+    constants = jax.lax.stop_gradient(arguments)
+    finest, unknowns = solve_nested(level_at, arguments, levels, lambda level: _hertz_start(level, constants),
+                                    tolerance, coarsest_steps=COARSEST_STEPS)
     reference, hertz_pressure, _, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
     pressure, film, _, error, converged = finest.solution(unknowns, tolerance)
     thickness = film * reference**2 / radius_rolling

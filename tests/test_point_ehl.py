@@ -11,7 +11,7 @@ from diffbearing.point_ehl import point_film
 
 from .helpers import assert_jvp_matches_central_difference
 
-# a ball in a groove (D = 12.7 mm, f = 0.52, inner race of a 6206-sized bearing): Rx 5.4 mm,
+# a ball in its inner-race groove (D = 12.7 mm, f = 0.52, γ = D cos α/d_m = 0.15): Rx 5.4 mm,
 # Ry 165 mm (κ ≈ 9), 500 N (p₀ 1.44 GPa), u = 5 m/s; and a circular contact, Rx = Ry = 10 mm,
 # 50 N (p₀ 1.07 GPa), u = 1 m/s; η₀ 0.08 Pa·s, α 2.2e-8 1/Pa, E' 2.26e11 Pa
 OIL = dict(viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
@@ -19,9 +19,9 @@ GROOVE = dict(load=500.0, radius_rolling=5.4e-3, radius_transverse=0.165, speed=
 CIRCLE = dict(load=50.0, radius_rolling=10e-3, radius_transverse=10e-3, speed=1.0)
 
 
-def _film(case, grid=(65, 32), **options):
+def _film(case, grid=(65, 32)):
     return jax.jit(lambda q: point_film(q, case["radius_rolling"], case["radius_transverse"], case["speed"], **OIL,
-                                        grid=grid, **options))(case["load"])
+                                        grid=grid))(case["load"])
 
 
 def _hamrock_dowson(case):

@@ -128,11 +128,12 @@ def _film_point(inputs: dict, settings: dict, results: dict) -> dict:
         speed = raceway_entrainment_speed(ring_speed, results["balls.orbital_speed"][ball], bearing.pitch_diameter,
                                           diameter_ratio(bearing, angle), side)
         loaded = load > 0  # an unloaded raceway has no film: null values (NaN), solved at 1 N
-        solved = point_film(jnp.where(loaded, load, 1.0), radius_rolling, radius_transverse, speed,
-                            lubricant.viscosity, lubricant.pressure_viscosity, modulus, grid=point_grid(settings),
+        solved_load = jnp.where(loaded, load, 1.0)
+        solved = point_film(solved_load, radius_rolling, radius_transverse, speed, lubricant.viscosity,
+                            lubricant.pressure_viscosity, modulus, grid=point_grid(settings),
                             viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
         central, minimum = film_formulas.hamrock_dowson_point(
-            jnp.where(loaded, load, 1.0), radius_rolling, hertz.ellipticity(difference), speed, lubricant.viscosity,
+            solved_load, radius_rolling, hertz.ellipticity(difference), speed, lubricant.viscosity,
             lubricant.pressure_viscosity, modulus)
         films = {"central": solved.central, "minimum": solved.minimum, "hamrock_dowson_central": central,
                  "hamrock_dowson_minimum": minimum}
