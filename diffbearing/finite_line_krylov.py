@@ -34,14 +34,14 @@ import numpy as np
 from .finite_line_ehl import ColumnGrid, FiniteLineFilm, axial_cells, finite_line_film, local_equations
 from .hertz import line_contact
 from .influence import coefficient_spectrum, influence_coefficients, love_rectangle
-from .line_ehl import INLET, OUTLET, FluidParameters
+from .line_ehl import INLET, OUTLET, FluidParameters, reynolds_coefficients
 from .newton_krylov import krylov_root, newton_krylov
 from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 COARSEST_NODES = 33  # nodes along rolling of the coarsest (dense) grid
 COARSEST_CELLS = 32  # fewest cells on the half roller of a coarser grid: fewer put h < 0 at the roller end
-NEWTON_STEPS = 60  # Newton–Krylov steps per level
+NEWTON_STEPS = 80  # Newton–Krylov steps per level: 257 × 257 flooded at 1028 N takes 60 (docs/benchmarks.md)
 BAND = 5  # colors along x: a Reynolds row reads nodes i − 2 … i + 1
 READ_BAND = (-2, -1, 0, 1)  # those nodes, from the row's own
 DIMENSIONLESS_MODULUS = 4.0  # E' in influence_coefficients' 2/(πE') so that H_el = (1/2π) Σ P C
@@ -121,11 +121,30 @@ class UniformLevel:
         meniscus = unknowns[self.interior + 1:] if self.starved else jnp.full(self.ny, INLET)
         return pressure, unknowns[self.interior], meniscus
 
+    def row_scale(self, unknowns):
+        """(nx − 2, ny) [-]: 1 + |∂L/∂P| of each Reynolds row at its own node from the Poiseuille
+        terms, (ε_{i−½} + ε_{i+½})/ΔX + ΔX (ε_{j−½}/ΔY_{j−½} + ε_{j+½}/ΔY_{j+½})/w_j
+        (`local_equations`: L is the Reynolds residual × ΔX)."""
+        pressure, offset, _ = self.unpack(unknowns)
+        _, flow = reynolds_coefficients(pressure, self.film(pressure, offset), self.columns.fluid)
+        along_x = 0.5 * (flow[2:] + 2.0 * flow[1:-1] + flow[:-2]) / self.spacing
+        faces = 0.5 * (flow[:, 1:] + flow[:, :-1]) / jnp.diff(self.columns.y)  # no flux at y = 0; p = 0 at the end
+        end = flow[:, -1:] / (self.columns.edges[-1] - self.columns.y[-1])
+        across = (jnp.pad(faces, ((0, 0), (1, 0))) + jnp.concatenate([faces, end], axis=1)) / self.columns.widths
+        return 1.0 + along_x + self.spacing * across[1:-1]
+
+    def error(self, unknowns, residual):
+        """max|F| [-] with each Reynolds row divided by its `row_scale`: the pressure change (in
+        p_h) that row asks of its own node. Unscaled, rows in the inlet and at the crowned ends,
+        where ε ∝ H³ is large, keep O(1) residuals for pressures below 1e-10 p_h."""
+        reynolds = residual[:self.interior].reshape(self.nx - 2, self.ny) / self.row_scale(unknowns)
+        return jnp.maximum(jnp.max(jnp.abs(reynolds)), jnp.max(jnp.abs(residual[self.interior:])))
+
     def solution(self, unknowns, tolerance):
-        """(P, H, X_m, max|F|, converged) of `unknowns`: converged where max|F| is below
-        `tolerance` and the film is positive."""
+        """(P, H, X_m, scaled max|F| (`error`), converged) of `unknowns`: converged where that
+        error is below `tolerance` and the film is positive."""
         fixed = jax.lax.stop_gradient
-        error = jnp.max(jnp.abs(self.residual(fixed(unknowns))))
+        error = self.error(fixed(unknowns), self.residual(fixed(unknowns)))
         pressure, offset, meniscus = self.unpack(unknowns)
         film = self.film(pressure, offset)
         return pressure, film, meniscus, error, (error < tolerance) & (jnp.min(fixed(film)) > 0)
@@ -278,7 +297,7 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
 
     def solve(level, unknowns, steps):
         return newton_krylov(level.residual, unknowns, None, level.preconditioner, tolerance=tolerance,
-                             max_steps=steps, limit=level.limit)[0]
+                             max_steps=steps, limit=level.limit, error=level.error)[0]
 
     previous = solving(*levels[0])
     unknowns = start(previous)
@@ -301,8 +320,9 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
 
     Arguments as `finite_line_ehl.finite_line_film`, except: grid (nx, ny): nx nodes along
     rolling, 2^k·(n₀ − 1) + 1 with n₀ from 33 to 65 (e.g. 129, 257, 513), by ny uniform cells on
-    the half roller (`krylov_levels`). Converged means max|F| below `tolerance` and a positive film
-    on the finest grid (at most NEWTON_STEPS per level)."""
+    the half roller (`krylov_levels`). Converged means the residual, each Reynolds row scaled to
+    the pressure change it asks (`UniformLevel.error`), below `tolerance` and a positive film on the
+    finest grid (at most NEWTON_STEPS per level)."""
     require_float64()
     levels = krylov_levels(grid)
     if not 0.0 <= side_inflow <= 1.0:

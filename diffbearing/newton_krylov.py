@@ -38,18 +38,20 @@ def gmres(linear, rhs, preconditioner, tolerance, *, restart: int, max_steps: in
 
 
 def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, max_steps: int, restart: int = 30,
-                  linear_steps: int = 20, shortest: float = 1e-3, limit=None):
+                  linear_steps: int = 20, shortest: float = 1e-3, limit=None, error=None):
     """Root of `function(y, args)` [-] from `y0` by inexact Newton (module docstring).
 
     Args:
         function: F(y, args) → an array of y's shape (1-D).
         preconditioner_at: (y, args) → a linear map v ↦ M⁻¹v approximating J(y)⁻¹.
-        tolerance: stop where max|F| ≤ tolerance.
+        tolerance: stop where `error` ≤ tolerance.
         max_steps: the most Newton steps.
         restart, linear_steps: GMRES's Krylov dimension and its most restarts per step.
         shortest: the shortest step length the backtracking tries.
         limit: d → d shortened (e.g. a largest change per unknown), applied to every step; the
             sufficient decrease is then asked of the shortened step's fraction of the Newton step.
+        error: (y, F) → the scalar compared to `tolerance` (None: max|F|), e.g. a residual scaled
+            row by row to the unknowns' units.
 
     Returns (y, Newton steps, GMRES restart cycles in all: lineax's `num_steps`)."""
 
@@ -57,9 +59,12 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         residual = function(y, args)
         return residual, 0.5 * jnp.sum(residual**2)
 
+    def measure(y, residual):
+        return jnp.max(jnp.abs(residual)) if error is None else error(y, residual)
+
     def busy(state):
-        _, residual, _, count, _, _, stalled = state
-        return (jnp.max(jnp.abs(residual)) > tolerance) & (count < max_steps) & ~stalled
+        y, residual, _, count, _, _, stalled = state
+        return (measure(y, residual) > tolerance) & (count < max_steps) & ~stalled
 
     def step(state):
         y, residual, merit, count, forcing, restarts, _ = state

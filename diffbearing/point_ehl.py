@@ -49,8 +49,8 @@ DOMAIN_SIDE = (1.5, 1.5)  # the half domain across rolling: Y_end = 1.5 a/b_r + 
 class PointFilm(eqx.Module):
     """Solution [SI] on the half domain y ≥ 0: x [m] (nx), y [m] cell centres (ny), pressure [Pa]
     and film [m] (nx, ny), central film at x = 0 next to y = 0 [m], minimum film [m] and where it
-    is (x, y [m]), whether Newton–Krylov converged (residual below the tolerance, positive film),
-    that residual [-]."""
+    is (x, y [m]), whether Newton–Krylov converged (scaled residual below the tolerance, positive
+    film), that residual [-] (`finite_line_krylov.UniformLevel.error`)."""
 
     x: jax.Array
     y: jax.Array
@@ -105,7 +105,8 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
         viscosity_law: "roelands" or "barus"; density_law: "dowson_higginson" or
             "incompressible" (`line_ehl`).
 
-    Converged means max|F| below `tolerance` and a positive film on the finest grid."""
+    Converged means the scaled residual (`finite_line_krylov.UniformLevel.error`) below
+    `tolerance` and a positive film on the finest grid."""
     require_float64()
     levels = krylov_levels(grid, FEWEST_CELLS)
     check_range("load", load, low=0.0, unit=" N")

@@ -88,7 +88,7 @@ def flooded():
 @pytest.mark.slow  # about 4 minutes with a cold compilation cache (2 cores): both solvers
 def test_newton_krylov_solves_the_dense_solvers_equations(flooded):
     """The same discrete equations on the same 65 × 32 uniform cells, flooded: the Newton–Krylov
-    solution is the dense Newton's, to the solvers' tolerance (1e-10 in the residual)."""
+    solution is the dense Newton's, to the solvers' tolerance (1e-10 in the residual, scaled for Newton–Krylov)."""
     krylov, dense = flooded
     assert bool(krylov.converged) and bool(dense.converged) and float(krylov.residual) < 1e-10
     scale = float(jnp.max(dense.pressure))
