@@ -133,18 +133,19 @@ class UniformLevel:
         across = (jnp.pad(faces, ((0, 0), (1, 0))) + jnp.concatenate([faces, end], axis=1)) / self.columns.widths
         return 1.0 + along_x + self.spacing * across[1:-1]
 
-    def error(self, unknowns, residual):
-        """max|F| [-] with each Reynolds row divided by its `row_scale`: the pressure change (in
-        p_h) that row asks of its own node. Unscaled, rows in the inlet and at the crowned ends,
-        where ε ∝ H³ is large, keep O(1) residuals for pressures below 1e-10 p_h."""
-        reynolds = residual[:self.interior].reshape(self.nx - 2, self.ny) / self.row_scale(unknowns)
-        return jnp.maximum(jnp.max(jnp.abs(reynolds)), jnp.max(jnp.abs(residual[self.interior:])))
+    def residual_scale(self, unknowns):
+        """The size of each equation [-]: `row_scale` for the Reynolds rows, 1 for the load balance
+        and the menisci. F/s is the pressure change (in p_h) a Reynolds row asks of its own node:
+        unscaled, rows in the inlet and at the crowned ends, where ε ∝ H³ is large, keep O(1)
+        residuals for pressures below 1e-10 p_h and rule the merit of the line search."""
+        rest = jnp.ones(unknowns.shape[0] - self.interior)
+        return jnp.concatenate([self.row_scale(unknowns).reshape(-1), rest])
 
     def solution(self, unknowns, tolerance):
-        """(P, H, X_m, scaled max|F| (`error`), converged) of `unknowns`: converged where that
-        error is below `tolerance` and the film is positive."""
+        """(P, H, X_m, max|F/s| (`residual_scale`), converged) of `unknowns`: converged where that
+        is below `tolerance` and the film is positive."""
         fixed = jax.lax.stop_gradient
-        error = self.error(fixed(unknowns), self.residual(fixed(unknowns)))
+        error = jnp.max(jnp.abs(self.residual(fixed(unknowns)) / self.residual_scale(fixed(unknowns))))
         pressure, offset, meniscus = self.unpack(unknowns)
         film = self.film(pressure, offset)
         return pressure, film, meniscus, error, (error < tolerance) & (jnp.min(fixed(film)) > 0)
@@ -297,7 +298,7 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
 
     def solve(level, unknowns, steps):
         return newton_krylov(level.residual, unknowns, None, level.preconditioner, tolerance=tolerance,
-                             max_steps=steps, limit=level.limit, error=level.error)[0]
+                             max_steps=steps, limit=level.limit, scale=level.residual_scale)[0]
 
     previous = solving(*levels[0])
     unknowns = start(previous)
@@ -321,7 +322,7 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
     Arguments as `finite_line_ehl.finite_line_film`, except: grid (nx, ny): nx nodes along
     rolling, 2^k·(n₀ − 1) + 1 with n₀ from 33 to 65 (e.g. 129, 257, 513), by ny uniform cells on
     the half roller (`krylov_levels`). Converged means the residual, each Reynolds row scaled to
-    the pressure change it asks (`UniformLevel.error`), below `tolerance` and a positive film on the
+    the pressure change it asks (`UniformLevel.residual_scale`), below `tolerance` and a positive film on the
     finest grid (at most NEWTON_STEPS per level)."""
     require_float64()
     levels = krylov_levels(grid)

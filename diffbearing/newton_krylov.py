@@ -6,10 +6,10 @@ relative tolerance of the linear solve is the forcing term η_k of Eisenstat & W
 forcing terms in an inexact Newton method, SIAM J. Sci. Comput. 17, 1996, choice 2:
 η_k = 0.9 (‖F_k‖/‖F_{k−1}‖)², safeguarded by 0.9 η²_{k−1} where that exceeds 0.1), so that early
 steps cost few Krylov iterations and the last ones converge fast. Globalised by Armijo backtracking
-on ½‖F‖² as `newton.newton` (Nocedal & Wright, Numerical Optimization, 2nd ed. 2006, §11.5),
-with the inexact slope −(1 − η)‖F‖² (Eisenstat & Walker, Globally convergent inexact Newton
-methods, SIAM J. Optim. 4, 1994); a step that lowers nothing is not taken, and the iteration stops
-there.
+on ½‖F/s‖² (each equation divided by its size s, `newton_krylov`) as `newton.newton` (Nocedal &
+Wright, Numerical Optimization, 2nd ed. 2006, §11.5), with the inexact slope −(1 − η)‖F/s‖²
+(Eisenstat & Walker, Globally convergent inexact Newton methods, SIAM J. Optim. 4, 1994); a step
+that lowers nothing is not taken, and the iteration stops there.
 
 `krylov_root` differentiates the root by the implicit function theorem (`jax.lax.custom_root`),
 its tangent system J x = b solved by the same preconditioned GMRES; reverse mode solves
@@ -38,36 +38,39 @@ def gmres(linear, rhs, preconditioner, tolerance, *, restart: int, max_steps: in
 
 
 def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, max_steps: int, restart: int = 30,
-                  linear_steps: int = 20, shortest: float = 1e-3, limit=None, error=None):
+                  linear_steps: int = 20, shortest: float = 1e-3, limit=None, scale=None):
     """Root of `function(y, args)` [-] from `y0` by inexact Newton (module docstring).
 
     Args:
         function: F(y, args) → an array of y's shape (1-D).
         preconditioner_at: (y, args) → a linear map v ↦ M⁻¹v approximating J(y)⁻¹.
-        tolerance: stop where `error` ≤ tolerance.
+        tolerance: stop where max|F/s| ≤ tolerance.
         max_steps: the most Newton steps.
         restart, linear_steps: GMRES's Krylov dimension and its most restarts per step.
         shortest: the shortest step length the backtracking tries.
         limit: d → d shortened (e.g. a largest change per unknown), applied to every step; the
             sufficient decrease is then asked of the shortened step's fraction of the Newton step.
-        error: (y, F) → the scalar compared to `tolerance` (None: max|F|), e.g. a residual scaled
-            row by row to the unknowns' units.
+        scale: y → s > 0 of F's shape, the size of each equation (None: 1): the stopping test and
+            the merit ½‖F/s‖² of the backtracking read F/s, s taken at each step's start point
+            (equations of very different sizes otherwise let the largest decide every step).
 
     Returns (y, Newton steps, GMRES restart cycles in all: lineax's `num_steps`)."""
 
-    def evaluate(y):
-        residual = function(y, args)
-        return residual, 0.5 * jnp.sum(residual**2)
+    def sizes(y):
+        return jnp.ones_like(y) if scale is None else scale(y)
 
-    def measure(y, residual):
-        return jnp.max(jnp.abs(residual)) if error is None else error(y, residual)
+    def evaluate(y, size):
+        residual = function(y, args)
+        return residual, 0.5 * jnp.sum((residual / size) ** 2)
 
     def busy(state):
-        y, residual, _, count, _, _, stalled = state
-        return (measure(y, residual) > tolerance) & (count < max_steps) & ~stalled
+        y, residual, count, _, _, stalled = state
+        return (jnp.max(jnp.abs(residual / sizes(y))) > tolerance) & (count < max_steps) & ~stalled
 
     def step(state):
-        y, residual, merit, count, forcing, restarts, _ = state
+        y, residual, count, forcing, restarts, _ = state
+        size = sizes(y)
+        merit = 0.5 * jnp.sum((residual / size) ** 2)
         _, linear = jax.linearize(lambda point: function(point, args), y)
         direction, used = gmres(linear, -residual, preconditioner_at(y, args), forcing, restart=restart,
                                 max_steps=linear_steps)
@@ -83,10 +86,10 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
 
         def halve(search):
             length = 0.5 * search[0]
-            trial_residual, trial_merit = evaluate(y + length * direction)
+            trial_residual, trial_merit = evaluate(y + length * direction, size)
             return length, jnp.where(jnp.isfinite(trial_merit), trial_merit, jnp.inf), trial_residual
 
-        first_residual, first_merit = evaluate(y + direction)
+        first_residual, first_merit = evaluate(y + direction, size)
         length, trial_merit, trial_residual = jax.lax.while_loop(
             shorter, halve, (jnp.asarray(1.0), jnp.where(jnp.isfinite(first_merit), first_merit, jnp.inf),
                              first_residual))
@@ -95,12 +98,11 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         safeguard = 0.9 * forcing**2
         next_forcing = jnp.clip(jnp.where(safeguard > FORCING_LARGEST, jnp.maximum(0.9 * ratio**2, safeguard), 0.9 * ratio**2),
                                 FORCING_SMALLEST, FORCING_LARGEST)
-        return (jnp.where(lowered, y + length * direction, y), jnp.where(lowered, trial_residual, residual),
-                jnp.where(lowered, trial_merit, merit), count + 1, next_forcing, restarts + used, ~lowered)
+        return (jnp.where(lowered, y + length * direction, y), jnp.where(lowered, trial_residual, residual), count + 1,
+                next_forcing, restarts + used, ~lowered)
 
-    residual, merit = evaluate(y0)
-    state = (y0, residual, merit, jnp.asarray(0), jnp.asarray(FORCING_LARGEST), jnp.asarray(0), jnp.asarray(False))
-    y, _, _, count, _, restarts, _ = jax.lax.while_loop(busy, step, state)
+    state = (y0, function(y0, args), jnp.asarray(0), jnp.asarray(FORCING_LARGEST), jnp.asarray(0), jnp.asarray(False))
+    y, _, count, _, restarts, _ = jax.lax.while_loop(busy, step, state)
     return y, count, restarts
 
 

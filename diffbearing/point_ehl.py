@@ -50,7 +50,7 @@ class PointFilm(eqx.Module):
     """Solution [SI] on the half domain y ≥ 0: x [m] (nx), y [m] cell centres (ny), pressure [Pa]
     and film [m] (nx, ny), central film at x = 0 next to y = 0 [m], minimum film [m] and where it
     is (x, y [m]), whether Newton–Krylov converged (scaled residual below the tolerance, positive
-    film), that residual [-] (`finite_line_krylov.UniformLevel.error`)."""
+    film), that residual [-] (`finite_line_krylov.UniformLevel.residual_scale`)."""
 
     x: jax.Array
     y: jax.Array
@@ -105,7 +105,7 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
         viscosity_law: "roelands" or "barus"; density_law: "dowson_higginson" or
             "incompressible" (`line_ehl`).
 
-    Converged means the scaled residual (`finite_line_krylov.UniformLevel.error`) below
+    Converged means the scaled residual (`finite_line_krylov.UniformLevel.residual_scale`) below
     `tolerance` and a positive film on the finest grid."""
     require_float64()
     levels = krylov_levels(grid, FEWEST_CELLS)
