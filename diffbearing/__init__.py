@@ -61,6 +61,12 @@ from .load_distribution import (
     stribeck_max_ball_load as stribeck_max_ball_load,
 )
 from .newton import implicit_root as implicit_root, minimise_convex as minimise_convex, newton as newton
+from .operating_clearance import (
+    Mounting as Mounting,
+    OperatingClearance as OperatingClearance,
+    fit_pressure as fit_pressure,
+    operating_clearance_change as operating_clearance_change,
+)
 from .params import (
     BEARING_STEEL as BEARING_STEEL,
     SILICON_NITRIDE as SILICON_NITRIDE,

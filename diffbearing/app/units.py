@@ -21,14 +21,17 @@ SI_UNITS = {
     "inverse_pressure": "1/Pa",
     "stiffness": "N/m",
     "time": "s",
+    "temperature": "K",
+    "thermal_expansion": "1/K",
     "dimensionless": "",
 }
 
 
 @functools.cache
 def registry() -> pint.UnitRegistry:
-    """The one pint registry of diffbearing (rpm, deg, µm, ... all understood)."""
-    return pint.UnitRegistry()
+    """The one pint registry of diffbearing (rpm, deg, µm, ... all understood; "60 degC" is read as
+    333.15 K, a temperature, not a product with an offset unit)."""
+    return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 
 
 def to_si(value, dimension: str, key: str) -> float:

@@ -11,6 +11,7 @@ from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curva
 from ..formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .materials import material
+from .mounting import operating_clearance
 
 # ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
 ISO76_BALL_PRESSURE_LIMIT = 4.2e9  # Pa
@@ -22,8 +23,17 @@ BALL_KEYS = ("bearing.ball_diameter", "bearing.pitch_diameter", "bearing.balls",
 
 
 def _bearing(v, built) -> dict:
+    """The bearing; with `effects.mounting`, at its operating clearance (`mounting.operating_clearance`)."""
     ring = material(v)
-    return {"bearing": ball_bearing(
+    bearing = _catalogue_bearing(v, ring)
+    if built["mounting"] is None:
+        return {"bearing": bearing}
+    return {"bearing": _catalogue_bearing(v, ring, operating_clearance(v, bearing, built["mounting"]))}
+
+
+def _catalogue_bearing(v, ring, clearance=None):
+    """The scene's bearing; with `clearance` [m], at that diametral clearance instead of its own."""
+    return ball_bearing(
         kind=v["bearing.type"],
         ball_diameter=v["bearing.ball_diameter"], pitch_diameter=v["bearing.pitch_diameter"],
         balls=v["bearing.balls"],
@@ -31,11 +41,12 @@ def _bearing(v, built) -> dict:
         outer_groove_ratio=v.get("bearing.outer_groove_ratio"),
         inner_groove_radius=v.get("bearing.inner_groove_radius"),
         outer_groove_radius=v.get("bearing.outer_groove_radius"),
-        contact_angle=v.get("bearing.contact_angle"), radial_clearance=v.get("bearing.radial_clearance"),
+        contact_angle=v.get("bearing.contact_angle") if clearance is None else None,
+        radial_clearance=v.get("bearing.radial_clearance") if clearance is None else clearance,
         ball_material=material(v, "ball_", ring), ring_material=ring,
         bore=v.get("bearing.bore"), outer_diameter=v.get("bearing.outer_diameter"),
         dynamic_load_rating=v.get("bearing.dynamic_load_rating"),
-    )}
+    )
 
 
 def _operating(v, built) -> dict:
@@ -366,7 +377,7 @@ ADAPTER = register(Adapter(
                                         doc="Hertz constants of the ball contacts at their current angle or at α0"),
     },
     required={kind: BALL_KEYS for kind in BALL_BEARING_KINDS},
-    inputs=(InputBuilder(("bearing",), BALL_BEARING_KINDS, _bearing),
+    inputs=(InputBuilder(("bearing",), BALL_BEARING_KINDS, _bearing, after=("mounting",)),
             InputBuilder(("operating",), BALL_BEARING_KINDS, _operating)),
     blocks=(RACEWAY_CONTACT, EQUILIBRIUM, STIFFNESS),
     header=_header,

@@ -1,0 +1,96 @@
+"""Effect `mounting`: the equilibrium runs at the operating clearance the [mounting] table gives,
+its derivatives through the fit, and the errors a user meets."""
+
+import jax
+import numpy as np
+import pytest
+
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.app import cli
+
+from .helpers import BEARING_6411E, central_difference_jvp
+
+MOUNTED = BEARING_6411E + """bore = "55 mm"
+outer_diameter = "140 mm"
+
+[operating]
+inner_speed = "3000 rpm"
+force = ["8 kN", "0 N", "0 N"]
+
+[effects]
+stiffness = true
+mounting = true
+
+[mounting]
+shaft_interference = "15 um"
+housing_interference = "-5 um"
+shaft_roughness = "2 um"
+inner_ring_roughness = "1 um"
+inner_ring_temperature = "70 degC"
+outer_ring_temperature = "60 degC"
+shaft_temperature = "70 degC"
+housing_temperature = "328.15 K"
+housing_material = "cast_iron"
+"""
+
+
+def _scene(tmp_path, text, name="scene.toml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return str(path)
+
+
+@pytest.fixture(scope="module")
+def mounted(tmp_path_factory):
+    return run_model(build_model(load_scene(_scene(tmp_path_factory.mktemp("mounted"), MOUNTED))), progress=False)
+
+
+def test_mounted_bearing_is_the_bearing_at_its_operating_clearance(mounted, tmp_path):
+    """The same bearing given the operating clearance as its own, without [mounting]: the same
+    displacement, ball loads and stiffness to 1e-9 (relative)."""
+    running = float(mounted.values["mounting.operating_clearance"])
+    change = float(mounted.values["mounting.clearance_change"])
+    parts = sum(float(mounted.values[f"mounting.{part}"]) for part in ("shaft_fit", "housing_fit", "thermal",
+                                                                       "centrifugal"))
+    assert running == pytest.approx(28e-6 + change, rel=1e-12) and change == pytest.approx(parts, rel=1e-12)
+    assert change < 0  # the shaft fit and the hotter inner ring close the bearing
+    plain = MOUNTED.split("[effects]")[0].replace('radial_clearance = "0.028 mm"', f"radial_clearance = {running!r}")
+    reference = run_model(build_model(load_scene(_scene(tmp_path, plain + "[effects]\nstiffness = true\n"))),
+                          progress=False)
+    for key in ("displacement", "balls.inner.load", "stiffness"):
+        scale = np.max(np.abs(reference.values[key]))
+        np.testing.assert_allclose(mounted.values[key], reference.values[key], rtol=0, atol=1e-9 * scale, err_msg=key)
+
+
+def test_stiffness_against_shaft_interference_matches_central_differences(mounted):
+    """d K_xx / d(shaft interference) through the fit, the clearance and the equilibrium, against
+    a central difference (step 0.1 µm)."""
+    model = mounted.model
+    values = dict(model.scene.values)
+
+    def radial_stiffness(interference):
+        inputs = model.inputs_from_values(values | {"mounting.shaft_interference": interference})
+        return model.function()(inputs)["stiffness"][0, 0]
+
+    point = values["mounting.shaft_interference"]
+    _, slope = jax.jvp(radial_stiffness, (point,), (1.0,))
+    reference = central_difference_jvp(radial_stiffness, point, 1.0, 1e-7)
+    assert float(slope) > 0  # a tighter fit, less clearance, a stiffer bearing
+    np.testing.assert_allclose(slope, reference, rtol=1e-5)
+
+
+def test_mounting_table_without_the_effect_is_refused(tmp_path):
+    text = MOUNTED.replace("mounting = true\n", "")
+    with pytest.raises(ValueError, match="mounting.shaft_interference"):
+        build_model(load_scene(_scene(tmp_path, text)))
+
+
+@pytest.mark.parametrize("change, named", [
+    (('shaft_interference = "15 um"', 'shaft_interference = "200 um"'), "operating clearance is"),
+    (('bore = "55 mm"\n', ""), "bearing.bore"),
+    (('housing_material = "cast_iron"', 'housing_material = "wood"'), "mounting.housing_material"),
+])
+def test_bad_mounting_exits_2_naming_the_cause(capsys, tmp_path, change, named):
+    path = _scene(tmp_path, MOUNTED.replace(*change))
+    assert cli.main(["run", path]) == 2
+    assert named in capsys.readouterr().err
