@@ -8,7 +8,7 @@ import pytest
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
 
-from .helpers import BEARING_6411E, central_difference_jvp
+from .helpers import BEARING_6411E, central_difference_jvp, example_scene
 
 MOUNTED = BEARING_6411E + """bore = "55 mm"
 outer_diameter = "140 mm"
@@ -94,3 +94,26 @@ def test_bad_mounting_exits_2_naming_the_cause(capsys, tmp_path, change, named):
     path = _scene(tmp_path, MOUNTED.replace(*change))
     assert cli.main(["run", path]) == 2
     assert named in capsys.readouterr().err
+
+
+def test_mounted_cylindrical_roller_bearing_runs_preloaded_at_its_operating_clearance():
+    """A cylindrical roller bearing whose fit and hot inner ring close its 20 µm clearance to a
+    negative (preloaded) one: the same ring displacement and roller loads as the bearing given
+    that clearance, to 1e-9."""
+    base = [f"effects.{name}=false" for name in ("stiffness", "life")]
+    mounting = ["effects.mounting=true", 'bearing.bore="55 mm"', 'bearing.outer_diameter="160 mm"',
+                'mounting.shaft_interference="30 um"', 'mounting.inner_ring_temperature="40 degC"']
+    mounted = run_model(build_model(load_scene(example_scene("cylindrical_roller_bearing"), base + mounting)),
+                        progress=False)
+    running = float(mounted.values["mounting.operating_clearance"])
+    assert running < 0
+    given = run_model(build_model(load_scene(example_scene("cylindrical_roller_bearing"),
+                                             base + [f"bearing.radial_clearance={running!r}"])), progress=False)
+    for key in ("displacement", "rollers.inner.load", "rollers.inner.lamina_load"):
+        scale = np.max(np.abs(given.values[key]))
+        np.testing.assert_allclose(mounted.values[key], given.values[key], rtol=0, atol=1e-9 * scale, err_msg=key)
+
+
+def test_tapered_roller_bearing_mounting_is_refused(capsys):
+    assert cli.main(["run", "tapered_roller_bearing", "--set", "effects.mounting=true"]) == 2
+    assert "tapered roller bearing's clearance is its axial setting" in capsys.readouterr().err

@@ -11,7 +11,7 @@ from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curva
 from ..formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .materials import material
-from .mounting import operating_clearance
+from .mounting import ball_operating_clearance
 
 # ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
 ISO76_BALL_PRESSURE_LIMIT = 4.2e9  # Pa
@@ -28,7 +28,7 @@ def _bearing(v, built) -> dict:
     bearing = _catalogue_bearing(v, ring)
     if built["mounting"] is None:
         return {"bearing": bearing}
-    return {"bearing": _catalogue_bearing(v, ring, operating_clearance(v, bearing, built["mounting"]))}
+    return {"bearing": _catalogue_bearing(v, ring, ball_operating_clearance(v, bearing, built["mounting"]))}
 
 
 def _catalogue_bearing(v, ring, clearance=None):

@@ -25,6 +25,7 @@ from ..formatting import (element_table_lines, format_number, state_column, stif
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, convergence_checks, quantity, register
 from .ball import stiffness_against_sweep
 from .roller import contact_settings, profile_line
+from .mounting import roller_operating_clearance
 
 WHOLE_BEARING = ("operating.force",)  # the scene key of this layout (registry: a whole roller bearing)
 INFLUENCE_ROLLERS = ("most_loaded", "all")
@@ -62,6 +63,8 @@ def _raceways(v, built) -> dict:
         raise ValueError("missing required key 'bearing.contact_angle' (the cup angle α_o of a tapered roller bearing)")
     pitch, clearance, cup = (v["bearing.pitch_diameter"], v.get("bearing.radial_clearance", 0.0),
                              v.get("bearing.contact_angle", 0.0))
+    if built["mounting"] is not None:  # effects.mounting: the operating clearance
+        clearance = roller_operating_clearance(v, bearing, clearance, built["mounting"])
     if any(_traced(x) for x in (pitch, clearance, cup, bearing.cone_half_angle, bearing.large_diameter)):
         # a sweep's point: its corners were validated with concrete values (sweep.check_corners),
         # and `roller_raceways` writes bounds made of these values into its messages with float()
@@ -521,7 +524,7 @@ ADAPTER = register(Adapter(
     },
     # one contact (roller.py) or the whole bearing: the scene says which by giving one of these
     required={kind: (("contact.load", "operating.force"),) for kind in ROLLER_KINDS},
-    inputs=(InputBuilder(("raceways",), ROLLER_KINDS, _raceways, after=("bearing",), scene_keys=WHOLE_BEARING),
+    inputs=(InputBuilder(("raceways",), ROLLER_KINDS, _raceways, after=("bearing", "mounting"), scene_keys=WHOLE_BEARING),
             InputBuilder(("operating",), ROLLER_KINDS, _operating, after=("bearing",), scene_keys=WHOLE_BEARING),
             InputBuilder(("influence_rollers",), ROLLER_KINDS, _influence_rollers, scene_keys=WHOLE_BEARING)),
     blocks=(EQUILIBRIUM, STIFFNESS, INFLUENCE),
