@@ -1,8 +1,11 @@
-"""Test set-up: float64 for every test (docs/conventions.md, §Units and precision) and a compilation
-cache shared by the run's processes."""
+"""Test set-up: float64 for every test (docs/conventions.md, §Units and precision), a compilation
+cache shared by the run's processes, and each module's compiled programs released after it."""
 
+import gc
 import os
 import tempfile
+
+import pytest
 
 # Compiled XLA programs are cached on disk across the test processes (tests, notebook kernels,
 # CLI subprocesses) of one run; set before JAX initialises its backends.
@@ -12,3 +15,17 @@ import jax  # noqa: E402
 
 jax.config.update("jax_enable_x64", True)
 jax.config.update("jax_compilation_cache_dir", os.environ["JAX_COMPILATION_CACHE_DIR"])
+
+from diffbearing.app import registry  # noqa: E402
+
+
+@pytest.fixture(autouse=True, scope="module")
+def release_compiled_programs():
+    """After each test module, drop the compiled programs it left in this process (JAX's caches and
+    the scene layer's compiled models): each loaded XLA program holds memory maps of its own, and
+    one process running every module passed Linux's vm.max_map_count (65 530 maps) and crashed in
+    XLA (segmentation fault while compiling). The persistent compilation cache keeps them on disk."""
+    yield
+    registry._COMPILED.clear()
+    jax.clear_caches()
+    gc.collect()
