@@ -28,7 +28,7 @@ def _bearing(v, built) -> dict:
     bearing = _catalogue_bearing(v, ring)
     if built["mounting"] is None:
         return {"bearing": bearing}
-    return {"bearing": _catalogue_bearing(v, ring, ball_operating_clearance(v, bearing, built["mounting"]))}
+    return {"bearing": _catalogue_bearing(v, ring, ball_operating_clearance(radial_clearance(bearing), built["mounting"]))}
 
 
 def _catalogue_bearing(v, ring, clearance=None):

@@ -4,10 +4,12 @@ uses in place of the bearing's own clearance."""
 
 import jax
 
-from ...operating_clearance import RING_EXPANSION, SEAT_MATERIALS, Mounting, operating_clearance_change
+from ...operating_clearance import (RING_EXPANSION, SEAT_MATERIALS, Mounting, OperatingClearance,
+                                   operating_clearance_change)
 from ...params import BALL_BEARING_KINDS, radial_clearance
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from .materials import material
 
 TEMPERATURES = ("inner_ring", "outer_ring", "shaft", "housing")
 ROUGHNESSES = ("shaft", "inner_ring", "outer_ring", "housing")  # Rz of the shaft seat, ring bore, ring outside, housing bore
@@ -16,13 +18,21 @@ WHOLE_BEARING = ("operating.force",)  # a whole roller bearing's layout (as adap
 
 
 def _mounting(v, built) -> dict:
-    """The Mounting of the scene's [mounting] table, or None without `effects.mounting`."""
+    """The change of clearance (`OperatingClearance`) of the scene's [mounting] table, or None
+    without `effects.mounting`: computed once here, added to the clearance by the bearing's own
+    builder and reported by the blocks below."""
     if v.get(EFFECT_ON, False) is not True:
         return {"mounting": None}
+    if v["bearing.type"] == "tapered_roller":
+        raise ValueError("effects.mounting: ball and cylindrical roller bearings (a tapered roller bearing's clearance "
+                         "is its axial setting)")
+    if "bearing.bore" not in v or "bearing.outer_diameter" not in v:
+        raise ValueError("effects.mounting needs bearing.bore and bearing.outer_diameter (the rings' thickness "
+                         "for the fits)")
     shaft, shaft_expansion = SEAT_MATERIALS[v.get("mounting.shaft_material", "steel")]
     housing, housing_expansion = SEAT_MATERIALS[v.get("mounting.housing_material", "steel")]
     reference = v.get("mounting.reference_temperature", 293.15)
-    return {"mounting": Mounting(
+    mounting = Mounting(
         shaft_interference=v.get("mounting.shaft_interference", 0.0),
         housing_interference=v.get("mounting.housing_interference", 0.0),
         shaft_bore=v.get("mounting.shaft_bore", 0.0),
@@ -34,55 +44,28 @@ def _mounting(v, built) -> dict:
         shaft_expansion=v.get("mounting.shaft_expansion", shaft_expansion),
         housing_expansion=v.get("mounting.housing_expansion", housing_expansion),
         shaft=shaft, housing=housing,
-    )}
+    )
+    # the rings run from the bore to d_m − D and from d_m + D to the outside (D the ball, or the
+    # cylindrical roller, diameter)
+    pitch = v["bearing.pitch_diameter"]
+    element = v["bearing.ball_diameter"] if v["bearing.type"] in BALL_BEARING_KINDS else v["bearing.roller_diameter"]
+    return {"mounting": operating_clearance_change(
+        mounting, v["bearing.bore"], pitch - element, pitch + element, v["bearing.outer_diameter"], element,
+        material(v), v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))}
 
 
-def _seat_diameters(v):
-    """(bore, outside diameter) [m] of the bearing; ValueError where the scene lacks them."""
-    if "bearing.bore" not in v or "bearing.outer_diameter" not in v:
-        raise ValueError("effects.mounting needs bearing.bore and bearing.outer_diameter (the rings' thickness "
-                         "for the fits)")
-    return v["bearing.bore"], v["bearing.outer_diameter"]
-
-
-def clearance_change(v, mounting: Mounting, pitch, element, material, inner_speed, outer_speed):
-    """`operating_clearance_change` of a bearing whose rings run from the bore to d_m − D and from
-    d_m + D to the outside (D the ball, or the cylindrical roller, diameter)."""
-    bore, outside = _seat_diameters(v)
-    return operating_clearance_change(mounting, bore, pitch - element, pitch + element, outside, element, material,
-                                      inner_speed, outer_speed)
-
-
-def _speeds(v):
-    return v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0)
-
-
-def ball_operating_clearance(v, bearing, mounting: Mounting):
+def ball_operating_clearance(own, change: OperatingClearance):
     """The diametral clearance [m] a ball bearing runs with: its own changed by the mounting;
     ValueError where the fits and temperatures close it below zero (the ball model takes G_r ≥ 0)."""
-    own = radial_clearance(bearing)
-    change = clearance_change(v, mounting, bearing.pitch_diameter, bearing.ball_diameter, bearing.ring_material,
-                              *_speeds(v)).change
-    running = own + change
+    running = own + change.change
     if not isinstance(running, jax.core.Tracer) and float(running) < 0.0:  # a sweep's tracers are not checked
         raise ValueError(f"[mounting]: the operating clearance is {float(running) * 1e6:.3g} µm (the bearing's "
-                         f"{float(own) * 1e6:.3g} µm changed by {float(change) * 1e6:.3g} µm): the ball model takes "
-                         f"clearances ≥ 0; loosen the fits or give the bearing more clearance")
+                         f"{float(own) * 1e6:.3g} µm changed by {float(change.change) * 1e6:.3g} µm): the ball model "
+                         f"takes clearances ≥ 0; loosen the fits or give the bearing more clearance")
     return running
 
 
-def roller_operating_clearance(v, bearing, clearance, mounting: Mounting):
-    """The diametral clearance [m] a cylindrical roller bearing runs with: `clearance` changed by
-    the mounting (negative: preloaded); ValueError for a tapered roller bearing, whose clearance
-    is its axial setting."""
-    if bearing.kind != "cylindrical_roller":
-        raise ValueError("effects.mounting: ball and cylindrical roller bearings (a tapered roller bearing's clearance "
-                         "is its axial setting)")
-    return clearance + clearance_change(v, mounting, v["bearing.pitch_diameter"], bearing.large_diameter,
-                                        bearing.material, *_speeds(v)).change
-
-
-def _outputs(change, running) -> dict:
+def _outputs(change: OperatingClearance, running) -> dict:
     return {
         "mounting.clearance_change": change.change,
         "mounting.operating_clearance": running,
@@ -98,25 +81,11 @@ def _outputs(change, running) -> dict:
 
 
 def _ball_outputs(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, mounting, operating = inputs["bearing"], inputs["mounting"], inputs["operating"]
-    change = operating_clearance_change(
-        mounting, bearing.bore, bearing.pitch_diameter - bearing.ball_diameter,
-        bearing.pitch_diameter + bearing.ball_diameter, bearing.outer_diameter, bearing.ball_diameter,
-        bearing.ring_material, operating.inner_speed, operating.outer_speed)
-    return _outputs(change, radial_clearance(bearing))
+    return _outputs(inputs["mounting"], radial_clearance(inputs["bearing"]))
 
 
 def _roller_outputs(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, raceways, operating, seats = inputs["bearing"], inputs["raceways"], inputs["operating"], inputs["seats"]
-    pitch, roller = raceways.pitch_diameter, bearing.large_diameter
-    change = operating_clearance_change(inputs["mounting"], seats[0], pitch - roller, pitch + roller, seats[1], roller,
-                                        bearing.material, operating.inner_speed, operating.outer_speed)
-    return _outputs(change, raceways.diametral_clearance)
-
-
-def _seats(v, built) -> dict:
-    """(bore, outside diameter) [m] of a roller bearing with `effects.mounting`."""
-    return {"seats": None if built["mounting"] is None else _seat_diameters(v)}
+    return _outputs(inputs["mounting"], inputs["raceways"].diametral_clearance)
 
 
 def _checks(values: dict) -> tuple[list[str], list[str]]:
@@ -167,14 +136,13 @@ ADAPTER = register(Adapter(
         "mounting.housing_expansion": quantity("thermal_expansion", "linear expansion coefficient (default: the "
                                                                     "material's)"),
     },
-    inputs=(InputBuilder(("mounting",), BALL_BEARING_KINDS + ROLLER_KINDS, _mounting),
-            InputBuilder(("seats",), ROLLER_KINDS, _seats, after=("mounting",), scene_keys=WHOLE_BEARING)),
+    inputs=(InputBuilder(("mounting",), BALL_BEARING_KINDS + ROLLER_KINDS, _mounting),),
     blocks=(Block(
         name="mounting",
         bearing_types=BALL_BEARING_KINDS,
         enabled_by=("mounting", True),
         requires=(),
-        inputs=("bearing", "mounting", "operating"),
+        inputs=("bearing", "mounting"),
         outputs=OUTPUTS,
         compute=_ball_outputs,
         checks=_checks,
@@ -183,7 +151,7 @@ ADAPTER = register(Adapter(
         bearing_types=ROLLER_KINDS,
         enabled_by=("mounting", True),
         requires=(),
-        inputs=("bearing", "raceways", "mounting", "operating", "seats"),
+        inputs=("raceways", "mounting"),
         outputs=OUTPUTS,
         compute=_roller_outputs,
         checks=_checks,

@@ -25,7 +25,6 @@ from ..formatting import (element_table_lines, format_number, state_column, stif
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, convergence_checks, quantity, register
 from .ball import stiffness_against_sweep
 from .roller import contact_settings, profile_line
-from .mounting import roller_operating_clearance
 
 WHOLE_BEARING = ("operating.force",)  # the scene key of this layout (registry: a whole roller bearing)
 INFLUENCE_ROLLERS = ("most_loaded", "all")
@@ -64,7 +63,7 @@ def _raceways(v, built) -> dict:
     pitch, clearance, cup = (v["bearing.pitch_diameter"], v.get("bearing.radial_clearance", 0.0),
                              v.get("bearing.contact_angle", 0.0))
     if built["mounting"] is not None:  # effects.mounting: the operating clearance
-        clearance = roller_operating_clearance(v, bearing, clearance, built["mounting"])
+        clearance = clearance + built["mounting"].change
     if any(_traced(x) for x in (pitch, clearance, cup, bearing.cone_half_angle, bearing.large_diameter)):
         # a sweep's point: its corners were validated with concrete values (sweep.check_corners),
         # and `roller_raceways` writes bounds made of these values into its messages with float()
