@@ -460,9 +460,7 @@ def _scales(bearing: BallBearing, operating: Operating, model: BallModel, table)
     inverse_arm = 1.0 / inner_groove_radius_of_centres(bearing)
     weight = jnp.stack([1.0, 1.0, 1.0, inverse_arm, inverse_arm])
     applied = jnp.concatenate([operating.force, operating.moment])
-    # a characteristic contact load (K_n × (10 µm)^{3/2}) keeps the scale positive at zero load
-    characteristic = free_contact_constant(bearing, model, table) * DISPLACEMENT_SCALE**1.5
-    return DISPLACEMENT_SCALE * weight, weight, safe_norm(applied * weight) + characteristic
+    return DISPLACEMENT_SCALE * weight, weight, safe_norm(applied * weight) + characteristic_load(bearing, model, table)
 
 
 def _controls(operating: Operating):
@@ -481,16 +479,28 @@ def _displacement(y, unknown, operating):
     return unknown * y * free + offset
 
 
+def static_energy(displacement, bearing: BallBearing, combined):
+    """Elastic energy Σ_j (2/5) K_n δ_j^{5/2} [J] of the balls at the static split for an inner-ring
+    displacement Δ, with one load–deflection constant K_n [N/m^1.5] (both contacts in series,
+    `free_contact_constant`): convex in Δ, its gradient the ring force with K_n held fixed."""
+    centres = inner_groove_centres(bearing, displacement)
+    approach = jnp.linalg.norm(centres, axis=-1) - groove_curvature_centre_distance(bearing)
+    return 0.4 * combined * jnp.sum(positive_power(approach, 2.5))
+
+
+def characteristic_load(bearing: BallBearing, model: BallModel, table=None):
+    """K_n (10 µm)^{3/2} [N]: a load scale that stays positive at zero applied load."""
+    return free_contact_constant(bearing, model, table) * DISPLACEMENT_SCALE**1.5
+
+
 def _static_energy(y, args):
     """Scaled potential of the static problem with K_n(α₀): Σ (2/5) K_n δ^{5/2} − F·Δ (convex in Δ);
     a prescribed component contributes ½ y² (so its unknown stays 0)."""
     bearing, operating, combined, unknown, load_scale = args
     free, _ = _controls(operating)
     displacement = _displacement(y, unknown, operating)
-    centres = inner_groove_centres(bearing, displacement)
-    approach = jnp.linalg.norm(centres, axis=-1) - groove_curvature_centre_distance(bearing)
     applied = jnp.concatenate([operating.force, operating.moment]) * free
-    energy = 0.4 * combined * jnp.sum(positive_power(approach, 2.5)) - jnp.dot(applied, displacement)
+    energy = static_energy(displacement, bearing, combined) - jnp.dot(applied, displacement)
     return energy / (load_scale * DISPLACEMENT_SCALE) + 0.5 * jnp.sum((1.0 - free) * y**2)
 
 

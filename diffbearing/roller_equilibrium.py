@@ -418,8 +418,7 @@ def _scales(bearing: RollerBearing, raceways: RollerRaceways, operating: RollerO
     inverse_arm = 2.0 / raceways.pitch_diameter
     weight = jnp.stack([1.0, 1.0, 1.0, inverse_arm, inverse_arm])
     applied = jnp.concatenate([operating.force, operating.moment])
-    characteristic = bearing.roller_count * _roller_force_scale(bearing, setup) * (DISPLACEMENT_SCALE / ROLLER_SCALE)
-    return DISPLACEMENT_SCALE * weight, weight, safe_norm(applied * weight) + characteristic
+    return DISPLACEMENT_SCALE * weight, weight, safe_norm(applied * weight) + characteristic_load(bearing, setup)
 
 
 def _displacement(y, args):
@@ -433,16 +432,27 @@ def _applied(bearing, operating):
     return jnp.concatenate([operating.force, operating.moment]) * free
 
 
+def static_energy(displacement, bearing: RollerBearing, raceways: RollerRaceways, setup: LaminaSetup):
+    """Elastic energy Σ 2 ∫q(δ_k/2) [J] of the rollers midway (no speed) for an inner-ring
+    displacement Δ: convex in Δ, its gradient the static ring force."""
+    half = 0.5 * static_approach(displacement, bearing, raceways, setup)
+    # ∫₀^δ c s^{10/9} ds = (9/19) δ q(δ)
+    return 2.0 * jnp.sum(9.0 / 19.0 * half * _lamina_force(half, bearing, setup))
+
+
+def characteristic_load(bearing: RollerBearing, setup: LaminaSetup):
+    """Z × one roller's load at 10 µm approach, scaled linearly [N]: a load scale that stays
+    positive at zero applied load."""
+    return bearing.roller_count * _roller_force_scale(bearing, setup) * (DISPLACEMENT_SCALE / ROLLER_SCALE)
+
+
 def _static_energy(y, args):
     """Scaled potential Σ 2 ∫q(δ_k/2) − F·Δ of the rollers midway (convex in Δ); a prescribed
     component adds ½ y² (its unknown stays 0)."""
     bearing, raceways, operating, model, setup, unknown, weight, load_scale = args
     free, _ = _controls(bearing, operating)
     displacement = _displacement(y, args)
-    half = 0.5 * static_approach(displacement, bearing, raceways, setup)
-    # ∫₀^δ c s^{10/9} ds = (9/19) δ q(δ)
-    energy = 2.0 * jnp.sum(9.0 / 19.0 * half * _lamina_force(half, bearing, setup))
-    energy = energy - jnp.dot(_applied(bearing, operating), displacement)
+    energy = static_energy(displacement, bearing, raceways, setup) - jnp.dot(_applied(bearing, operating), displacement)
     return energy / (load_scale * DISPLACEMENT_SCALE) + 0.5 * jnp.sum((1.0 - free) * y**2)
 
 

@@ -1,0 +1,301 @@
+"""A rigid shaft on several bearings: its 5-DOF equilibrium, reactions and system stiffness.
+
+Frames (docs/theory.md §Shaft on several bearings). The shaft axis is z; the outer rings are fixed in
+the housing. The shaft's displacement u = [u_x, u_y, u_z, θ_x, θ_y] [m, rad] is that of its point
+z = 0 (small rotations). A point of the shaft at z moves by u + θ × (0, 0, z):
+
+    δ(z) = G(z) u,   G(z) = I + z (e_x e_θyᵀ − e_y e_θxᵀ)    (δ_x = u_x + z θ_y, δ_y = u_y − z θ_x)
+
+and a force F with moment M applied at z acts on the shaft at z = 0 as G(z)ᵀ [F, M] (its moment
+grows by (0, 0, z) × F; virtual work: [F, M]·δ(z) = (Gᵀ[F, M])·u). Bearing k sits at z_k. One
+mounted the other way round (orientation −1, "−z") is the same bearing turned by π about x: in its
+own frame y, z and θ_y change sign, P = diag(1, −1, −1, 1, −1) (P = Pᵀ = P⁻¹). Its inner ring may be
+pushed axially against its outer ring by an offset e_k in its own frame (preload by an axial
+offset: `bearing_set`). At u = 0 an angular-contact or roller bearing sits at its own model's
+reference (balls touching at α₀; rollers at their clearance), a deep-groove ball bearing in the
+middle of its axial play, c_k = −(f_i + f_o − 1) D_w sin α₀ from there. Its inner-ring
+displacement and the load it takes from the shaft are
+
+    Δ_k = P_k G(z_k) u + (e_k + c_k) ẑ,     F_shaft,k = G(z_k)ᵀ P_k F_k(Δ_k)
+
+with F_k the bearing's ring force (`ball_equilibrium.ring_force`, `roller_equilibrium.ring_force`:
+the load on the inner ring that holds it at Δ_k, the balls or rollers re-equilibrated, speed
+effects included). The shaft is in equilibrium where Σ_k F_shaft,k(u) = Σ_l G(z_l)ᵀ [F_l, M_l].
+
+Solution, as for one bearing: the start is the minimum of the convex static energy
+Σ_k E_k(Δ_k(u)) − F·u (each E_k with its contact constants at the free contact angle; no
+guess needed), then damped Newton on the exact residual (dense Jacobian through the bearings'
+implicit solves, regularised by 1e-12 of its diagonal so that a direction no bearing resists keeps
+the step finite), and the implicit derivative of the root (least squares: finite where the
+stiffness is singular). The system stiffness is `jax.jacfwd` of the shaft force; at another point
+z_p it is G(−z_p)ᵀ K G(−z_p).
+
+A bearing's ring speed is the shaft speed (the outer rings stand still); the quasi-static models
+depend on the speed's square only, so a turned bearing runs the same.
+"""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from . import ball_equilibrium, roller_equilibrium
+from .ball_equilibrium import BallModel
+from .newton import implicit_root, minimise_convex, newton
+from .numerics import require_float64, safe_norm
+from .params import BallBearing, Operating, _as_float, _is_concrete, check_range, groove_curvature_centre_distance
+from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways
+from .roller_geometry import RollerBearing
+
+DISPLACEMENT_SCALE = 1e-5  # m: unit of the scaled shaft unknowns (10 µm, 10 µm / arm rad)
+RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled shaft residual is below
+MAX_STEPS = 60
+STATIC_GRADIENT_TOLERANCE = 1e-8
+TURNED = np.array([1.0, -1.0, -1.0, 1.0, -1.0])  # P: a bearing turned by π about x
+
+
+class BallSupport(eqx.Module):
+    """A ball bearing on the shaft: at `position` z [m], `orientation` +1 ("+z": its own axial
+    direction along the shaft's +z) or −1 ("−z"), inner ring pushed by `offset` [m] along its own
+    axis against the outer ring (preload; 0: none)."""
+
+    bearing: BallBearing
+    position: jax.Array = eqx.field(converter=_as_float)
+    offset: jax.Array = eqx.field(converter=_as_float, default=0.0)
+    model: BallModel = eqx.field(static=True, default=BallModel())
+    orientation: int = eqx.field(static=True, default=1)
+
+    def __check_init__(self):
+        _check_orientation(self.orientation)
+
+
+class RollerSupport(eqx.Module):
+    """A roller bearing (cylindrical or tapered) on the shaft; fields as `BallSupport`."""
+
+    bearing: RollerBearing
+    raceways: RollerRaceways
+    position: jax.Array = eqx.field(converter=_as_float)
+    offset: jax.Array = eqx.field(converter=_as_float, default=0.0)
+    model: RollerModel = eqx.field(static=True, default=RollerModel())
+    orientation: int = eqx.field(static=True, default=1)
+
+    def __check_init__(self):
+        _check_orientation(self.orientation)
+        if self.bearing.kind == "cylindrical_roller" and _is_concrete(self.offset) and float(self.offset) != 0.0:
+            raise ValueError("offset: a cylindrical roller bearing takes no axial preload; it must be 0")
+
+
+def _check_orientation(orientation):
+    if orientation not in (1, -1):
+        raise ValueError(f"orientation must be +1 ('+z') or -1 ('-z'), got {orientation!r}")
+
+
+class ShaftLoads(eqx.Module):
+    """Loads on the shaft: at `positions` z (n,) [m], forces (n, 3) [N] and moments (n, 2) [N·m]."""
+
+    positions: jax.Array = eqx.field(converter=_as_float)
+    forces: jax.Array = eqx.field(converter=_as_float)
+    moments: jax.Array = eqx.field(converter=_as_float)
+
+    def __check_init__(self):
+        count = np.shape(self.positions)
+        if len(count) != 1 or np.shape(self.forces) != count + (3,) or np.shape(self.moments) != count + (2,):
+            raise ValueError(f"loads: positions (n,), forces (n, 3) and moments (n, 2), got shapes "
+                             f"{np.shape(self.positions)}, {np.shape(self.forces)}, {np.shape(self.moments)}")
+        check_range("loads.force", self.forces, unit=" N")
+        check_range("loads.moment", self.moments, unit=" N*m")
+
+
+class Shaft(eqx.Module):
+    """A rigid shaft on `supports` (BallSupport / RollerSupport), under `loads`, turning at
+    `speed` [rad/s] with the outer rings fixed."""
+
+    supports: tuple
+    loads: ShaftLoads
+    speed: jax.Array = eqx.field(converter=_as_float, default=0.0)
+
+    def __check_init__(self):
+        if not self.supports:
+            raise ValueError("bearings: the shaft needs at least one bearing")
+        for support in self.supports:
+            if not isinstance(support, (BallSupport, RollerSupport)):
+                raise ValueError(f"bearings: a support must be a BallSupport or RollerSupport, got {type(support)}")
+        if all(isinstance(s, RollerSupport) and s.bearing.kind == "cylindrical_roller" for s in self.supports):
+            raise ValueError("bearings: no bearing locates the shaft axially (cylindrical roller bearings carry no "
+                             "axial load); add a ball or tapered roller bearing")
+        check_range("operating.shaft_speed", self.speed, unit=" rad/s")
+
+
+def transfer(position):
+    """G(z) (5, 5): the displacement [δx, δy, δz, θx, θy] of the shaft point at z from that at 0."""
+    matrix = jnp.eye(5)
+    return matrix.at[0, 4].set(position).at[1, 3].set(-position)
+
+
+def _turn(support):
+    """P_k as its diagonal: TURNED for a bearing mounted "−z", else ones."""
+    return TURNED if support.orientation < 0 else np.ones(5)
+
+
+def _centring(support):
+    """c_k [m]: a deep-groove ball bearing sits in the middle of its axial play at u = 0,
+    −(f_i + f_o − 1) D_w sin α₀ from where its balls touch at α₀ (`ball_equilibrium`'s reference);
+    any other bearing at its own model's reference (0)."""
+    bearing = support.bearing
+    if isinstance(support, BallSupport) and bearing.kind == "deep_groove_ball":
+        return -groove_curvature_centre_distance(bearing) * jnp.sin(bearing.free_contact_angle)
+    return 0.0
+
+
+def support_displacement(shaft_displacement, support):
+    """Δ_k [m, rad]: the bearing's inner-ring displacement in its own frame (module docstring)."""
+    local = _turn(support) * (transfer(support.position) @ shaft_displacement)
+    return local.at[2].add(support.offset + _centring(support))
+
+
+def _operating(support, speed):
+    if isinstance(support, BallSupport):
+        return Operating(inner_speed=speed, outer_speed=0.0, force=jnp.zeros(3), moment=jnp.zeros(2))
+    return RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed)
+
+
+def support_force(local_displacement, support, speed, table=None):
+    """[Fx, Fy, Fz, Mx, My] [N, N·m] that holds the bearing's inner ring at Δ_k, in its own frame."""
+    operating = _operating(support, speed)
+    if isinstance(support, BallSupport):
+        return ball_equilibrium.ring_force(local_displacement, support.bearing, operating, support.model, table)
+    return roller_equilibrium.ring_force(local_displacement, support.bearing, support.raceways, operating,
+                                         support.model)
+
+
+def reaction(shaft_displacement, support, speed, table=None):
+    """G(z_k)ᵀ P_k F_k: the load the bearing takes from the shaft, moved to z = 0 [N, N·m]."""
+    local = support_force(support_displacement(shaft_displacement, support), support, speed, table)
+    return transfer(support.position).T @ (_turn(support) * local)
+
+
+def _tables(shaft: Shaft):
+    return tuple(ball_equilibrium.constant_table(s.bearing, s.model) if isinstance(s, BallSupport) else None
+                 for s in shaft.supports)
+
+
+def shaft_force(shaft_displacement, shaft: Shaft, tables=None):
+    """Σ_k of the bearings' loads on the shaft at displacement u, about z = 0 [N, N·m]; in
+    equilibrium it equals the applied load, and its Jacobian is the system stiffness."""
+    tables = _tables(shaft) if tables is None else tables
+    return sum(reaction(shaft_displacement, support, shaft.speed, table)
+               for support, table in zip(shaft.supports, tables))
+
+
+def applied_load(shaft: Shaft):
+    """Σ_l G(z_l)ᵀ [F_l, M_l] [N, N·m]: the loads on the shaft moved to z = 0."""
+    loads = shaft.loads
+    combined = jnp.concatenate([loads.forces, loads.moments], axis=-1)
+    return jnp.einsum("lij,li->j", jax.vmap(transfer)(loads.positions), combined)
+
+
+def _support_energy(shaft_displacement, support):
+    """E_k(Δ_k) [J] with the contact constants at the free contact angle (convex in u)."""
+    local = support_displacement(shaft_displacement, support)
+    if isinstance(support, BallSupport):
+        combined = ball_equilibrium.free_contact_constant(support.bearing, support.model)
+        return ball_equilibrium.static_energy(local, support.bearing, combined)
+    setup = roller_equilibrium.lamina_setup(support.bearing, support.raceways, support.model)
+    return roller_equilibrium.static_energy(local, support.bearing, support.raceways, setup)
+
+
+def _characteristic_load(support):
+    if isinstance(support, BallSupport):
+        return ball_equilibrium.characteristic_load(support.bearing, support.model)
+    setup = roller_equilibrium.lamina_setup(support.bearing, support.raceways, support.model)
+    return roller_equilibrium.characteristic_load(support.bearing, setup)
+
+
+def _pitch_radius(support):
+    bearing = support.bearing if isinstance(support, BallSupport) else support.raceways
+    return 0.5 * bearing.pitch_diameter
+
+
+def _scales(shaft: Shaft):
+    """Unknown scale s (u = s·y), residual weights w (moments to forces by an arm) and load scale [N].
+
+    The arm is the largest of the bearings' distances from z = 0 and pitch radii."""
+    arm = jnp.max(jnp.stack([jnp.maximum(jnp.abs(s.position), _pitch_radius(s)) for s in shaft.supports]))
+    weight = jnp.stack([1.0, 1.0, 1.0, 1.0 / arm, 1.0 / arm])
+    scale = safe_norm(applied_load(shaft) * weight) + sum(_characteristic_load(s) for s in shaft.supports)
+    return DISPLACEMENT_SCALE * weight, weight, scale
+
+
+def _static_energy(y, args):
+    """Scaled potential Σ_k E_k − F·u of the static problem (convex in u)."""
+    shaft, unknown, _, load_scale, _ = args
+    u = unknown * y
+    energy = sum(_support_energy(u, support) for support in shaft.supports) - jnp.dot(applied_load(shaft), u)
+    return energy / (load_scale * DISPLACEMENT_SCALE)
+
+
+def _residual(y, args):
+    """(Σ bearing loads − applied load) · w / load scale at u = s·y."""
+    shaft, unknown, weight, load_scale, tables = args
+    return (shaft_force(unknown * y, shaft, tables) - applied_load(shaft)) * weight / load_scale
+
+
+def _regularised_jacobian(y, args):
+    jacobian = jax.jacfwd(_residual)(y, args)
+    return jacobian + 1e-12 * (jnp.max(jnp.abs(jnp.diag(jacobian))) + 1.0) * jnp.eye(5)
+
+
+def _solve(residual, start, args):
+    y, steps = newton(residual, start, args, max_steps=MAX_STEPS, loop="while", jacobian=_regularised_jacobian,
+                      fallback=True, floor=1e-14)
+    return y, steps.astype(y.dtype)
+
+
+def _least_squares_tangent_solve(linear, rhs):
+    return jnp.linalg.lstsq(jax.jacfwd(linear)(rhs), rhs)[0]
+
+
+class ShaftEquilibrium(eqx.Module):
+    """The shaft in equilibrium: its displacement u at z = 0 [m, rad]; per bearing (tuples in the
+    order of `Shaft.supports`) the inner-ring displacement in its own frame [m, rad] and the load
+    it carries, [Fx, Fy, Fz, Mx, My] in its own frame [N, N·m]; whether it converged (scaled
+    residual below `RESIDUAL_TOLERANCE`), the residual [-] and the Newton steps."""
+
+    displacement: jax.Array
+    bearing_displacements: tuple
+    bearing_forces: tuple
+    converged: jax.Array
+    residual: jax.Array
+    static_steps: jax.Array
+    steps: jax.Array
+
+
+def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
+    """Shaft displacement u in equilibrium with the loads on it; needs no initial guess.
+
+    Differentiable in every array leaf of `shaft` (bearings, positions, offsets, loads, speed;
+    implicit adjoint, least squares where the system stiffness is singular).
+    """
+    require_float64()
+    unknown, weight, load_scale = _scales(shaft)
+    tables = _tables(shaft)
+    start, static_steps = minimise_convex(_static_energy, jnp.zeros(5), (shaft, unknown, weight, load_scale, None),
+                                          gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
+    args = (shaft, unknown, weight, load_scale, tables)
+    y, steps = implicit_root(_residual, jax.lax.stop_gradient(start), args, _solve, _least_squares_tangent_solve,
+                             has_aux=True)
+    u = unknown * y
+    locals_ = tuple(support_displacement(u, support) for support in shaft.supports)
+    forces = tuple(support_force(local, support, shaft.speed, table)
+                   for local, support, table in zip(locals_, shaft.supports, tables))
+    residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
+    return ShaftEquilibrium(u, locals_, forces, residual < RESIDUAL_TOLERANCE, residual, static_steps,
+                            steps.astype(static_steps.dtype))
+
+
+def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0):
+    """5×5 system stiffness [N/m, N/rad; N·m/m, N·m/rad] at the shaft point z = `at` [m]: the
+    Jacobian of the bearings' loads with respect to that point's displacement (exact, jacfwd)."""
+    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, _tables(shaft))
+    back = transfer(-jnp.asarray(at, dtype=float))
+    return back.T @ stiffness @ back
