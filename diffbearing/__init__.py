@@ -16,6 +16,12 @@ from .ball_equilibrium import (
     solve_equilibrium as solve_equilibrium,
     stiffness_matrix as stiffness_matrix,
 )
+from .bearing_set import (
+    bearing_set as bearing_set,
+    clamped_offset as clamped_offset,
+    preload_offset as preload_offset,
+    with_radial_clearance as with_radial_clearance,
+)
 from .cage_dynamics import CageOrbit as CageOrbit, DynamicsSettings as DynamicsSettings, simulate_cage as simulate_cage
 from .cage_forces import CageForces as CageForces, cage_forces as cage_forces, epicyclic_cage_speed as epicyclic_cage_speed
 from .cage_stability import CageStability as CageStability, cage_stability as cage_stability
@@ -47,6 +53,7 @@ from .life import (
     basic_rating_life as basic_rating_life,
     equivalent_dynamic_load as equivalent_dynamic_load,
     reference_rating_life as reference_rating_life,
+    system_life as system_life,
 )
 from .line_ehl import (
     LineFilm as LineFilm,
@@ -109,6 +116,16 @@ from .roller_life import (
     roller_reference_rating_life as roller_reference_rating_life,
 )
 from .roller_profile import RollerProfile as RollerProfile, crown_drop as crown_drop, roller_profile as roller_profile
+from .shaft_equilibrium import (
+    BallSupport as BallSupport,
+    RollerSupport as RollerSupport,
+    Shaft as Shaft,
+    ShaftEquilibrium as ShaftEquilibrium,
+    ShaftLoads as ShaftLoads,
+    shaft_force as shaft_force,
+    shaft_stiffness as shaft_stiffness,
+    solve_shaft as solve_shaft,
+)
 from .app.model import build_model as build_model, run_model as run_model
 from .app.scene import examples as examples, load_scene as load_scene
 from .app.sweep import run_sweep as run_sweep

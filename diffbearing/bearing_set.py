@@ -14,13 +14,17 @@ its own axis against its outer ring (the rings' face offset of a matched pair is
 no external load each bearing then carries the axial force it carries alone at δz = offset. A
 preload given as a force P is turned into that offset at standstill (`preload_offset`, the single
 bearing's axial solve), and from there the offset, not the force, is what the set holds: at
-speed or under load the preload force changes.
+speed or under load the preload force changes. Mounted with fits and temperatures that move the
+bearing's free contact angle from α₀ (as matched) to α₀' (`with_radial_clearance`), the rings stay
+where the set was clamped: the offset in the running bearing's own reference is
+e + (f_i + f_o − 1) D_w (sin α₀ − sin α₀') (`clamped_offset`).
 """
 
+import equinox as eqx
 import jax.numpy as jnp
 
 from .ball_equilibrium import BallModel, solve_equilibrium
-from .params import BallBearing, Operating, _is_concrete, check_range
+from .params import BallBearing, Operating, _is_concrete, check_range, groove_curvature_centre_distance
 from .shaft_equilibrium import BallSupport
 
 ARRANGEMENTS = {"back_to_back": (1, -1), "face_to_face": (-1, 1), "tandem": (1, 1)}
@@ -50,3 +54,17 @@ def bearing_set(bearing: BallBearing, arrangement: str, *, spacing, offset=0.0, 
     half = 0.5 * jnp.asarray(spacing, dtype=float)
     return tuple(BallSupport(bearing, position=side * half, offset=offset, model=model, orientation=orientation)
                  for side, orientation in zip((-1.0, 1.0), ARRANGEMENTS[arrangement]))
+
+
+def with_radial_clearance(bearing: BallBearing, clearance) -> BallBearing:
+    """The bearing at another diametral clearance G_r [m]: free contact angle
+    cos α₀ = 1 − G_r / (2 (f_i + f_o − 1) D_w) (Harris & Kotzalas vol. 1, ch. 2); differentiable."""
+    distance = groove_curvature_centre_distance(bearing)
+    return eqx.tree_at(lambda b: b.free_contact_angle, bearing, jnp.arccos(1.0 - clearance / (2.0 * distance)))
+
+
+def clamped_offset(matched: BallBearing, running: BallBearing, offset):
+    """The preload offset [m] in the running bearing's reference (module docstring): the matched
+    offset e plus (f_i + f_o − 1) D_w (sin α₀ − sin α₀'), α₀ as matched, α₀' as running."""
+    return offset + groove_curvature_centre_distance(running) * (jnp.sin(matched.free_contact_angle)
+                                                                - jnp.sin(running.free_contact_angle))

@@ -106,3 +106,13 @@ def reference_rating_life(bearing: BallBearing, rating, inner_loads, outer_loads
     rating_inner, rating_outer = raceway_ratings(bearing, rating)
     damage = (equivalent_inner / rating_inner) ** (10.0 / 3.0) + (equivalent_outer / rating_outer) ** (10.0 / 3.0)
     return damage ** (-0.9)
+
+
+SYSTEM_WEIBULL_SLOPE = 10.0 / 9.0  # e of ball bearings (Lundberg–Palmgren; ISO/TS 16281's raceway combination)
+
+
+def system_life(lives, slope=SYSTEM_WEIBULL_SLOPE):
+    """L10 of bearings that all must survive [the lives' unit]: L = (Σ_k L_k^{−e})^{−1/e}
+    (Lundberg & Palmgren's product of survival probabilities with Weibull slope e; Harris &
+    Kotzalas vol. 2, ch. 11). An unloaded bearing's infinite life adds nothing."""
+    return jnp.sum(jnp.asarray(lives) ** (-slope)) ** (-1.0 / slope)

@@ -15,9 +15,11 @@ named effect reaches is never called, so it is never traced or compiled.
 
 One bearing type may be modelled in more than one layout, told apart by the keys a scene holds: a
 roller type is one roller–raceway contact where the scene gives `contact.load`, the whole bearing
-where it gives `operating.force`. A block or input builder with `scene_keys` belongs to the layout
-of the scene that holds all of those keys; a block that requires a block of another layout is left
-out with it (`selectable`). Blocks and builders without `scene_keys` serve every layout.
+where it gives `operating.force`; a ball type is one bearing, or a matched set where the scene
+gives `bearing.arrangement`. A block or input builder with `scene_keys` belongs to the layout of
+the scene that holds all of those keys and none of those written "!key"; a block that requires a
+block of another layout is left out with it (`selectable`). Blocks and builders without
+`scene_keys` serve every layout.
 """
 
 import dataclasses
@@ -97,7 +99,7 @@ class Block:
 
     def in_layout(self, present) -> bool:
         """Whether a scene holding the keys `present` has this block's layout."""
-        return all(key in present for key in self.scene_keys)
+        return in_layout(self.scene_keys, present)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -114,7 +116,13 @@ class InputBuilder:
     scene_keys: tuple[str, ...] = ()
 
     def in_layout(self, present) -> bool:
-        return all(key in present for key in self.scene_keys)
+        return in_layout(self.scene_keys, present)
+
+
+def in_layout(scene_keys, present) -> bool:
+    """Whether a scene holding the keys `present` holds every key of `scene_keys` and none of those
+    written "!key" there."""
+    return all((key[1:] not in present) if key.startswith("!") else (key in present) for key in scene_keys)
 
 
 @dataclasses.dataclass(frozen=True)

@@ -25,13 +25,13 @@ BALL_KEYS = ("bearing.ball_diameter", "bearing.pitch_diameter", "bearing.balls",
 def _bearing(v, built) -> dict:
     """The bearing; with `effects.mounting`, at its operating clearance (`mounting.operating_clearance`)."""
     ring = material(v)
-    bearing = _catalogue_bearing(v, ring)
+    bearing = catalogue_bearing(v, ring)
     if built["mounting"] is None:
         return {"bearing": bearing}
-    return {"bearing": _catalogue_bearing(v, ring, ball_operating_clearance(radial_clearance(bearing), built["mounting"]))}
+    return {"bearing": catalogue_bearing(v, ring, ball_operating_clearance(radial_clearance(bearing), built["mounting"]))}
 
 
-def _catalogue_bearing(v, ring, clearance=None):
+def catalogue_bearing(v, ring, clearance=None):
     """The scene's bearing; with `clearance` [m], at that diametral clearance instead of its own."""
     return ball_bearing(
         kind=v["bearing.type"],
@@ -247,6 +247,7 @@ EQUILIBRIUM = Block(
     compute=_equilibrium,
     checks=_equilibrium_checks,
     plot=_azimuth_plot,
+    scene_keys=("!bearing.arrangement",),  # a matched set solves its own equilibrium (adapters/bearing_set.py)
 )
 
 
@@ -317,6 +318,8 @@ def _header(result) -> list[str]:
 
 def _report(result) -> list[str]:
     values = result.values
+    if "displacement" not in values:  # a set: adapters/bearing_set.py reports it
+        return []
     d = np.asarray(values["displacement"])
     lines = ["", "Inner-ring displacement (from the just-touching position at the free contact angle)",
              f"  δx = {d[0] * 1e6:.3f} µm, δy = {d[1] * 1e6:.3f} µm, δz = {d[2] * 1e6:.3f} µm, "
@@ -334,6 +337,8 @@ def _report(result) -> list[str]:
 
 
 def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
+    if "displacement" not in values:  # a set: adapters/bearing_set.py reports it
+        return []
     columns = [state_column("converged", values["converged"], ok="yes")]
     if "stiffness" in values:
         columns += [(f"{name} [N/µm]", [format_number(k[i, i] * 1e-6) for k in values["stiffness"]])

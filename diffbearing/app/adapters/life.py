@@ -2,11 +2,14 @@
 ISO/TS 16281 reference rating life from the solved load distribution (balls, or the rollers'
 laminae)."""
 
+import jax.numpy as jnp
+
 from ... import life, roller_life
 from ...params import BALL_BEARING_KINDS
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import column
 from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from .bearing_set import SET, SET_SIZE
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 
@@ -45,12 +48,26 @@ def _roller_life(inputs: dict, settings: dict, results: dict) -> dict:
     }
 
 
+def _set_life(inputs: dict, settings: dict, results: dict) -> dict:
+    """ISO/TS 16281 reference rating life of each bearing of a set from its ball loads, and of the set."""
+    bearing = inputs["bearing"]
+    rating = life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else \
+        bearing.dynamic_load_rating
+    lives = [life.reference_rating_life(bearing, rating, results[f"set.bearings.{number}.balls.inner.load"],
+                                        results[f"set.bearings.{number}.balls.outer.load"])
+             for number in range(SET_SIZE)]
+    return {"life.basic_dynamic_load_rating": rating,
+            **{f"set.bearings.{number}.L10r": value for number, value in enumerate(lives)},
+            "set.L10r": life.system_life(jnp.stack(lives))}
+
+
 def _load_rating(v, built) -> dict:
     return {"load_rating": v.get("bearing.dynamic_load_rating")}
 
 
 def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
-    return [column("L10r [1e6 rev]", values["life.L10r"])]
+    key = "life.L10r" if "life.L10r" in values else "set.L10r"
+    return [column("L10r [1e6 rev]", values[key])]
 
 
 _ROLLER_OUTPUTS = (
@@ -90,6 +107,20 @@ ADAPTER = register(Adapter(
         outputs=_ROLLER_OUTPUTS,
         compute=_roller_life,
         scene_keys=WHOLE_BEARING,
+    ), Block(
+        name="set_life",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("life", True),
+        requires=("bearing_set",),
+        inputs=("bearing",),
+        outputs=(
+            Output("life.basic_dynamic_load_rating", "N", "kN", "C_r used (the scene's, else ISO 281)"),
+            *(Output(f"set.bearings.{number}.L10r", "1e6 rev", "1e6 rev",
+                     f"ISO/TS 16281 reference rating life L10r, bearing {number}") for number in range(SET_SIZE)),
+            Output("set.L10r", "1e6 rev", "1e6 rev", "reference rating life of the set, (Σ L10r^(−10/9))^(−9/10)"),
+        ),
+        compute=_set_life,
+        scene_keys=SET,
     )),
     sweep_columns=_sweep_columns,
 ))

@@ -1,0 +1,120 @@
+"""Bearing sets through scenes (`bearing.arrangement`): a DB pair under axial load against the single
+bearing's scene, the preload as a force and as an offset, the set at its operating clearance, its
+life, and the errors a user meets."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.app import cli
+from diffbearing.bearing_set import preload_offset
+
+from .helpers import example_scene
+
+STATIC = ["effects.centrifugal=false", "effects.gyroscopic=false", "effects.stiffness=false"]
+
+
+def run(overrides=(), scene="spindle_pair"):
+    return run_model(build_model(load_scene(scene, list(STATIC) + list(overrides))), progress=False)
+
+
+def _scene_without(keys, folder) -> str:
+    """The packaged spindle_pair scene with the lines of `keys` (names within their tables) left out."""
+    text = Path(example_scene("spindle_pair")).read_text()
+    path = folder / "scene.toml"
+    path.write_text("\n".join(line for line in text.splitlines() if line.split("=")[0].strip() not in keys))
+    return str(path)
+
+
+def single(tmp_path, axial):
+    """The spindle_pair's bearing alone (no set keys) under an axial load [N]."""
+    path = _scene_without(("arrangement", "set_size", "width", "preload"), tmp_path)
+    return run_model(build_model(load_scene(path, list(STATIC) + [f'operating.force=["0 N", "0 N", "{axial!r} N"]'])),
+                     progress=False)
+
+
+def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
+    """Issue 26: the DB pair of the packaged example under a pure axial load of 1.2 kN; each
+    bearing's displacement and ball loads are the single bearing's under its own axial load, to
+    1e-9; with no load each carries the 500 N preload."""
+    pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'])
+    assert bool(pair.values["set.converged"]) and "balls.inner.load" not in pair.values
+    axial = [float(pair.values[f"set.bearings.{n}.force"][2]) for n in range(2)]
+    assert axial[0] - axial[1] == pytest.approx(1200.0, rel=1e-9)
+    for number, load in enumerate(axial):
+        alone = single(tmp_path, load)
+        np.testing.assert_allclose(pair.values[f"set.bearings.{number}.displacement"], alone.values["displacement"],
+                                   rtol=1e-9, atol=1e-9 * abs(float(alone.values["displacement"][2])))
+        np.testing.assert_allclose(pair.values[f"set.bearings.{number}.balls.inner.load"],
+                                   alone.values["balls.inner.load"], rtol=1e-9)
+    unloaded = run(['operating.force=["0 N", "0 N", "0 N"]'])
+    np.testing.assert_allclose([float(unloaded.values[f"set.bearings.{n}.force"][2]) for n in range(2)], [500.0, 500.0],
+                               rtol=1e-9)
+
+
+def test_preload_as_force_and_as_offset_agree(tmp_path):
+    """The 500 N preload is an offset of `preload_offset`; given that offset instead, the set reports
+    500 N (to 1e-9) and the same bearing loads."""
+    by_force = run()
+    offset = float(by_force.values["set.preload_offset"])
+    bearing = build_model(load_scene("spindle_pair")).inputs["bearing"]
+    assert offset == pytest.approx(float(preload_offset(bearing, 500.0)), rel=1e-12)
+    by_offset = run(["operating.preload_offset=" + repr(offset)], scene=_scene_without(("preload",), tmp_path))
+    assert float(by_offset.values["set.preload_force"]) == pytest.approx(500.0, rel=1e-9)
+    for n in range(2):
+        np.testing.assert_allclose(by_offset.values[f"set.bearings.{n}.force"], by_force.values[f"set.bearings.{n}.force"],
+                                   rtol=1e-9, atol=1e-9)
+
+
+def test_set_at_its_operating_clearance():
+    """Effect `mounting` on a set at standstill: with no fit and every temperature at the reference
+    it changes nothing (exact); an inner ring 10 K hotter than the outer closes the clearance and raises the
+    preload, and each bearing then carries what the single bearing carries at the running contact
+    angle, pushed by the matched offset plus the moved reference (f_i + f_o − 1) D_w (sin α₀ − sin α₀')."""
+    from diffbearing.ball_equilibrium import BallModel, ring_force
+    from diffbearing.params import Operating
+
+    at_rest = ['operating.force=["0 N", "0 N", "0 N"]', 'operating.inner_speed="0 rpm"']
+    plain = run(at_rest)
+    neutral = run(at_rest + ["effects.mounting=true"])
+    for n in range(2):
+        np.testing.assert_allclose(neutral.values[f"set.bearings.{n}.force"], plain.values[f"set.bearings.{n}.force"],
+                                   rtol=1e-12, atol=1e-9)
+    hot = at_rest + ["effects.mounting=true", 'mounting.inner_ring_temperature="30 degC"',
+                     'mounting.shaft_temperature="30 degC"']
+    warm = run(hot)
+    assert float(warm.values["mounting.clearance_change"]) < 0.0
+    carried = float(warm.values["set.bearings.0.force"][2])
+    assert carried > 1.5 * 500.0
+    model = build_model(load_scene("spindle_pair", list(STATIC) + hot))
+    running = model.inputs["bearing"]
+    catalogue = build_model(load_scene("spindle_pair", STATIC)).inputs["bearing"]
+    distance = (running.inner_groove_ratio + running.outer_groove_ratio - 1.0) * running.ball_diameter
+    push = float(warm.values["set.preload_offset"]) + distance * (np.sin(catalogue.free_contact_angle)
+                                                                 - np.sin(running.free_contact_angle))
+    alone = ring_force(np.array([0.0, 0.0, push, 0.0, 0.0]), running, Operating(0.0, 0.0, np.zeros(3), np.zeros(2)),
+                       BallModel())
+    assert carried == pytest.approx(float(alone[2]), rel=1e-9)
+
+
+def test_life_of_the_set():
+    """Effect `life` on a set: each bearing's ISO/TS 16281 L10r and the set's, (Σ L^(−10/9))^(−9/10)."""
+    result = run(["effects.life=true"])
+    lives = [float(result.values[f"set.bearings.{n}.L10r"]) for n in range(2)]
+    assert float(result.values["set.L10r"]) == pytest.approx(sum(v ** (-10 / 9) for v in lives) ** (-0.9), rel=1e-12)
+    assert float(result.values["set.L10r"]) < min(lives)
+
+
+@pytest.mark.parametrize("override, named", [
+    ('bearing.arrangement="tandem"', "tandem pair cannot be preloaded"),
+    ('operating.outer_speed="100 rpm"', "operating.outer_speed"),
+    ("bearing.set_size=3", "bearing.set_size"),
+    ('bearing.type="deep_groove_ball"', "angular_contact_ball"),
+    ('operating.preload_offset="5 um"', "one of preload and preload_offset"),
+])
+def test_bad_sets_are_refused(capsys, override, named):
+    code = cli.main(["run", "spindle_pair", "--set", override])
+    err = capsys.readouterr().err
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
