@@ -693,6 +693,18 @@ def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, m
     return jax.jacfwd(ring_force)(displacement, bearing, operating, model, constant_table(bearing, model))
 
 
+def validity_measures(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):
+    """(largest contact approach / D_w, largest |contact angle| [rad]) of the balls at Δ, for
+    `ball_validity.within_model`; without derivatives."""
+    table = constant_table(bearing, model)
+    centres = inner_groove_centres(bearing, displacement)
+    state = ball_state(bearing, operating, centres, equilibrium_positions(displacement, bearing, operating, model, table),
+                       model, table=table)
+    return jax.lax.stop_gradient((
+        ball_validity.largest_approach_ratio(state["inner_approach"], state["outer_approach"], bearing.ball_diameter),
+        ball_validity.largest_contact_angle(state["inner_angle"], state["outer_angle"])))
+
+
 class BallResults(eqx.Module):
     """Per-ball results at a displacement Δ, each (Z,) in SI: azimuth ψ [rad]; per contact (inner,
     outer) the normal load Q [N], contact angle α [rad], Hertz peak pressure [Pa] and semi-axes a, b

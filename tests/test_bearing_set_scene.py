@@ -54,6 +54,7 @@ def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
                                rtol=1e-9)
 
 
+@pytest.mark.slow
 def test_preload_as_force_and_as_offset_agree(tmp_path):
     """The 500 N preload is an offset of `preload_offset`; given that offset instead, the set reports
     500 N (to 1e-9) and the same bearing loads."""

@@ -62,6 +62,7 @@ def test_mounted_bearing_is_the_bearing_at_its_operating_clearance(mounted, tmp_
         np.testing.assert_allclose(mounted.values[key], reference.values[key], rtol=0, atol=1e-9 * scale, err_msg=key)
 
 
+@pytest.mark.slow
 def test_stiffness_against_shaft_interference_matches_central_differences(mounted):
     """d K_xx / d(shaft interference) through the fit, the clearance and the equilibrium, against
     a central difference (step 0.1 µm)."""

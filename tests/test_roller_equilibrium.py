@@ -183,6 +183,7 @@ def _assert_finite_gradient(function, point):
     assert np.all(np.isfinite(gradient)), gradient
 
 
+@pytest.mark.slow
 def test_radial_load_with_clearance_leaves_rollers_out_of_contact(solve, results):
     """50 µm clearance, 2 kN: rollers outside the load zone carry exact zeros, and the solution and its
     gradient with respect to the load are finite, with and without centrifugal force."""

@@ -9,12 +9,12 @@ level is switched by --set) is reported as a warning.
 
 import dataclasses
 import time
-from collections.abc import Mapping
 
 import jax
 import numpy as np
 
 from . import registry
+from .registry import Reads
 from .result import RunResult
 from .scene import Scene
 from .sweep import check_corners, run_sweep, sweep_axes
@@ -22,31 +22,6 @@ from .sweep import check_corners, run_sweep, sweep_axes
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
 # selects the adapters, and the effects and fidelity tables (checked by `resolve` and `read_by`)
 _SETTINGS = ("title", "bearing.type")
-
-
-class Reads(Mapping):
-    """The scene's {dotted key: SI value}, recording which keys the input builders ask for."""
-
-    def __init__(self, values: dict):
-        self._values = values
-        self.asked: set[str] = set()
-
-    def __getitem__(self, key):
-        self.asked.add(key)
-        return self._values[key]
-
-    def get(self, key, default=None):
-        self.asked.add(key)
-        return self._values.get(key, default)
-
-    def __contains__(self, key):
-        return key in self._values
-
-    def __iter__(self):
-        return iter(self._values)
-
-    def __len__(self):
-        return len(self._values)
 
 
 def build_inputs(bearing_type: str, blocks, values) -> dict:

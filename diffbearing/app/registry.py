@@ -23,7 +23,7 @@ block of another layout is left out with it (`selectable`). Blocks and builders 
 """
 
 import dataclasses
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 import jax
 import jax.numpy as jnp
@@ -35,9 +35,10 @@ from .stored_models import compile_stored
 @dataclasses.dataclass(frozen=True)
 class Key:
     """One scene key: `kind` is quantity | quantities | number | integer | integers | boolean |
-    choice | text; `dimension` names an entry of units.SI_UNITS; `choices` lists allowed values
-    (for choice; True/False may be among them); `length` fixes the size of a list; a fidelity key
-    lists in `read_by` the blocks that read it (given while none of them runs, it is refused)."""
+    choice | text | tables (an array of tables, each converted by `entry`); `dimension` names an
+    entry of units.SI_UNITS; `choices` lists allowed values (for choice; True/False may be among
+    them); `length` fixes the size of a list; a fidelity key lists in `read_by` the blocks that
+    read it (given while none of them runs, it is refused)."""
 
     kind: str
     dimension: str = "dimensionless"
@@ -45,6 +46,9 @@ class Key:
     length: int | None = None
     doc: str = ""
     read_by: tuple[str, ...] = ()
+    # kind "tables" (a TOML array of tables, [[name]]): (index, table, convert) → the table in SI, ValueError
+    # naming it; `convert(dotted, value)` is the schema's, for keys of other tables
+    entry: Callable[[int, dict, Callable], dict] | None = dataclasses.field(default=None, compare=False)
 
     def same_meaning(self, other: "Key") -> bool:
         return (self.kind, self.dimension, self.choices, self.length) == (
@@ -293,6 +297,31 @@ def evaluate(blocks, settings: dict) -> Callable[[dict], dict]:
         return results
 
     return run
+
+
+class Reads(Mapping):
+    """The scene's {dotted key: SI value}, recording which keys the input builders ask for."""
+
+    def __init__(self, values: dict):
+        self._values = values
+        self.asked: set[str] = set()
+
+    def __getitem__(self, key):
+        self.asked.add(key)
+        return self._values[key]
+
+    def get(self, key, default=None):
+        self.asked.add(key)
+        return self._values.get(key, default)
+
+    def __contains__(self, key):
+        return key in self._values
+
+    def __iter__(self):
+        return iter(self._values)
+
+    def __len__(self):
+        return len(self._values)
 
 
 _COMPILED: dict = {}

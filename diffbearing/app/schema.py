@@ -66,6 +66,10 @@ def convert(dotted: str, value):
             shown = ", ".join(repr(c).replace("'", '"').lower() if isinstance(c, bool) else f'"{c}"' for c in key.choices)
             raise ValueError(f"{dotted}: expected one of {shown}, got {value!r}")
         return value
+    if key.kind == "tables":
+        if not isinstance(value, list) or not value or not all(isinstance(item, dict) for item in value):
+            raise ValueError(f"{dotted}: expected one or more [[{dotted}]] tables, got {value!r}")
+        return [key.entry(index, item, convert) for index, item in enumerate(value)]
     if key.kind == "text":
         if not isinstance(value, str):
             raise ValueError(f"{dotted}: expected a string, got {value!r}")
@@ -92,6 +96,8 @@ def validate(document: dict) -> dict[str, object]:
                 flat[dotted] = convert(dotted, value)
         else:
             flat[table] = convert(table, content)
+    if "bearing.type" not in flat and "bearings" in flat:
+        flat["bearing.type"] = "shaft"  # [[bearings]]: a shaft on several bearings (adapters/shaft.py)
     if "bearing.type" not in flat:
         raise ValueError("missing required key 'bearing.type'")
     required_keys = [key for adapter in adapters_for(flat["bearing.type"])

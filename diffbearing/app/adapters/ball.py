@@ -157,17 +157,25 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     return out
 
 
+def validity_errors(approach, angle, subject: str) -> list[str]:
+    """Errors for a ball state outside the model (`ball_validity`): the largest approach / D_w and
+    |contact angle| [rad] of `subject` ("equilibrium", "bearing 1", ...)."""
+    errors = []
+    if float(approach) > ball_validity.MAX_APPROACH_FRACTION:
+        errors.append(f"{subject} outside the model: a contact approach of {float(approach) * 100:.3g} % of Dw passes "
+                      f"the limit of {ball_validity.MAX_APPROACH_FRACTION * 100:g} % of Dw (Hertz theory's small "
+                      "contacts)")
+    if float(angle) >= float(ball_validity.MAX_CONTACT_ANGLE):
+        errors.append(f"{subject} outside the model: a contact angle |α| = {np.degrees(float(angle)):.1f}° leaves "
+                      "(−90°, 90°) (a ball pushed through its raceway)")
+    return errors
+
+
 def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
     """Errors: a state outside the ball model (ball_validity) or a solver that did not converge;
     warnings: a peak pressure above the ISO 76 static limit."""
-    errors, warnings = [], []
-    approach, angle = float(values["validity.approach_ratio"]), float(values["validity.contact_angle"])
-    if approach > ball_validity.MAX_APPROACH_FRACTION:
-        errors.append(f"equilibrium outside the model: a contact approach of {approach * 100:.3g} % of Dw passes the "
-                      f"limit of {ball_validity.MAX_APPROACH_FRACTION * 100:g} % of Dw (Hertz theory's small contacts)")
-    if angle >= float(ball_validity.MAX_CONTACT_ANGLE):
-        errors.append(f"equilibrium outside the model: a contact angle |α| = {np.degrees(angle):.1f}° leaves "
-                      "(−90°, 90°) (a ball pushed through its raceway)")
+    warnings = []
+    errors = validity_errors(values["validity.approach_ratio"], values["validity.contact_angle"], "equilibrium")
     if not errors and not bool(values["converged"]):
         errors.append(f"equilibrium solver did not converge: largest scaled residual {float(values['residual']):.1e} "
                       f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})")

@@ -9,15 +9,13 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ... import ball_validity
-from ...ball_equilibrium import (BallModel, ball_results, ball_state, equilibrium_positions, inner_groove_centres,
-                                 ring_force)
+from ...ball_equilibrium import BallModel, ball_results, ring_force, validity_measures
 from ...bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_offset
 from ...params import BALL_BEARING_KINDS, Operating, _as_float
 from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 from ..formatting import format_number, stiffness_lines, swept_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
-from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing
+from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
 from .materials import material
 
 SET = ("bearing.arrangement",)  # the set's layout
@@ -99,13 +97,11 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
                 prefix + "balls.orbital_speed": balls.orbital_speed}
         for side in SIDES:
             out |= {f"{prefix}balls.{side}.{field}": getattr(balls, f"{side}_{field}") for field in BALL_FIELDS}
-        state = ball_state(bearing, operating, inner_groove_centres(bearing, local),
-                           equilibrium_positions(local, bearing, operating, model), model)
-        approach.append(ball_validity.largest_approach_ratio(state["inner_approach"], state["outer_approach"],
-                                                             bearing.ball_diameter))
-        angle.append(ball_validity.largest_contact_angle(state["inner_angle"], state["outer_angle"]))
-    out["set.validity.approach_ratio"] = jax.lax.stop_gradient(jnp.max(jnp.stack(approach)))
-    out["set.validity.contact_angle"] = jax.lax.stop_gradient(jnp.max(jnp.stack(angle)))
+        measures = validity_measures(local, bearing, operating, model)
+        approach.append(measures[0])
+        angle.append(measures[1])
+    out["set.validity.approach_ratio"] = jnp.max(jnp.stack(approach))
+    out["set.validity.contact_angle"] = jnp.max(jnp.stack(angle))
     if settings["effects"].get("stiffness", False) is True:
         out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft)
     return out
@@ -114,13 +110,8 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
 def _checks(values: dict) -> tuple[list[str], list[str]]:
     """Errors: a state outside the ball model or a shaft solve that did not converge; warnings: a
     peak pressure above the ISO 76 limit, a bearing of a preloaded pair that has lost its load."""
-    errors, warnings = [], []
-    approach, angle = float(values["set.validity.approach_ratio"]), float(values["set.validity.contact_angle"])
-    if approach > ball_validity.MAX_APPROACH_FRACTION:
-        errors.append(f"set outside the model: a contact approach of {approach * 100:.3g} % of Dw passes the limit of "
-                      f"{ball_validity.MAX_APPROACH_FRACTION * 100:g} % of Dw")
-    if angle >= float(ball_validity.MAX_CONTACT_ANGLE):
-        errors.append(f"set outside the model: a contact angle |α| = {np.degrees(angle):.1f}° leaves (−90°, 90°)")
+    warnings = []
+    errors = validity_errors(values["set.validity.approach_ratio"], values["set.validity.contact_angle"], "set")
     if not errors and not bool(values["set.converged"]):
         errors.append(f"shaft equilibrium of the set did not converge: largest scaled residual "
                       f"{float(values['set.residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})")

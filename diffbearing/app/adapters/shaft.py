@@ -1,0 +1,278 @@
+"""A rigid shaft on several ball bearings (`[[bearings]]`, `[[loads]]`, `[shaft]`): the shaft's 5-DOF
+equilibrium with all bearings together (`shaft_equilibrium`), each bearing's loads, the system
+stiffness at a point, each bearing's life and the system's. A scene with `[[bearings]]` is a shaft:
+each entry holds the keys of a `[bearing]` table (ball bearings) plus its `position` along the
+shaft, `orientation` ("+z" or "−z") and an optional axial `offset` (preload); the scene's
+`[material]` applies to all. Roller bearings on a shaft: from Python (`diffbearing.RollerSupport`)."""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from ... import life
+from ...ball_equilibrium import ball_results, validity_measures
+from ...params import BALL_BEARING_KINDS, Operating, _as_float
+from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, Shaft, ShaftLoads, shaft_stiffness, solve_shaft,
+                                  transfer)
+from ..formatting import format_number, stiffness_lines
+from ..registry import Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
+from ..units import to_si
+from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
+from .materials import material
+
+SHAFT = ("shaft",)
+PLACEMENT = ("position", "orientation", "offset")
+ORIENTATIONS = {"+z": 1, "-z": -1, "−z": -1}
+
+
+def _bearing_entry(index: int, table: dict, convert) -> dict:
+    """One [[bearings]] table in SI: its bearing keys as `bearing.<name>`, checked as a [bearing]
+    table's (`convert`, the schema's), and its placement."""
+    where = f"bearings[{index}]"
+    if "position" not in table:
+        raise ValueError(f"{where}: missing required key 'position' (the bearing's centre along the shaft)")
+    orientation = table.get("orientation", "+z")
+    if orientation not in ORIENTATIONS:
+        raise ValueError(f"{where}.orientation: expected \"+z\" or \"-z\", got {orientation!r}")
+    entry = {"position": to_si(table["position"], "length", f"{where}.position"),
+             "orientation": ORIENTATIONS[orientation],
+             "offset": to_si(table.get("offset", 0.0), "length", f"{where}.offset")}
+    for name, value in table.items():
+        if name in PLACEMENT:
+            continue
+        try:
+            entry[f"bearing.{name}"] = convert(f"bearing.{name}", value)
+        except ValueError as error:
+            raise ValueError(f"{where}: {error}") from None
+    if entry.get("bearing.type") not in BALL_BEARING_KINDS:
+        raise ValueError(f"{where}.type: a shaft scene takes ball bearings {BALL_BEARING_KINDS}, got "
+                         f"{entry.get('bearing.type')!r} (roller bearings on a shaft: diffbearing.RollerSupport in Python)")
+    return entry
+
+
+def _load_entry(index: int, table: dict, convert) -> dict:
+    where = f"loads[{index}]"
+    unknown = set(table) - {"position", "force", "moment"}
+    if unknown:
+        raise ValueError(f"{where}: unknown key {sorted(unknown)[0]!r} (a load has position, force, moment)")
+    if "position" not in table or "force" not in table and "moment" not in table:
+        raise ValueError(f"{where}: give its position and a force = [Fx, Fy, Fz] and/or a moment = [Mx, My]")
+    entry = {"position": to_si(table["position"], "length", f"{where}.position")}
+    for name, size, dimension in (("force", 3, "force"), ("moment", 2, "moment")):
+        value = table.get(name, [0.0] * size)
+        if not isinstance(value, list) or len(value) != size:
+            raise ValueError(f"{where}.{name}: expected a list of {size} {dimension} values, got {value!r}")
+        entry[name] = [to_si(item, dimension, f"{where}.{name}[{i}]") for i, item in enumerate(value)]
+    return entry
+
+
+class ShaftLayout(eqx.Module):
+    """The scene's shaft: its bearings (BallBearing each), their positions and offsets [m] and
+    orientations (±1), the loads, the shaft speed [rad/s] and the point of the stiffness [m]."""
+
+    bearings: tuple
+    positions: jax.Array = eqx.field(converter=_as_float)
+    offsets: jax.Array = eqx.field(converter=_as_float)
+    loads: ShaftLoads
+    speed: jax.Array = eqx.field(converter=_as_float)
+    stiffness_at: jax.Array = eqx.field(converter=_as_float)
+    orientations: tuple = eqx.field(static=True)
+
+
+def _layout(v, built) -> dict:
+    shared = {key: value for key, value in v.items() if key.startswith("material.")}
+    bearings = []
+    for index, entry in enumerate(v["bearings"]):
+        reads = Reads({**shared, **entry})
+        bearings.append(catalogue_bearing(reads, material(reads)))
+        unread = sorted(set(entry) - reads.asked - set(PLACEMENT))
+        if unread:
+            raise ValueError(f"bearings[{index}]: key {unread[0].removeprefix('bearing.')!r} is not read by a "
+                             "bearing on a shaft")
+    loads = v["loads"]
+    return {"shaft": ShaftLayout(
+        tuple(bearings), [entry["position"] for entry in v["bearings"]], [entry["offset"] for entry in v["bearings"]],
+        ShaftLoads(np.array([load["position"] for load in loads]), np.array([load["force"] for load in loads]),
+                   np.array([load["moment"] for load in loads])),
+        v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
+        tuple(entry["orientation"] for entry in v["bearings"]))}
+
+
+def _supports(layout: ShaftLayout, model):
+    return tuple(BallSupport(bearing, position, offset, model=model, orientation=orientation)
+                 for bearing, position, offset, orientation in zip(layout.bearings, layout.positions, layout.offsets,
+                                                                   layout.orientations))
+
+
+def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
+    layout, model = inputs["shaft"], ball_model(settings)
+    shaft = Shaft(_supports(layout, model), layout.loads, layout.speed)
+    solution = solve_shaft(shaft)
+    operating = Operating(layout.speed, 0.0, jnp.zeros(3), jnp.zeros(2))
+    per_bearing = [ball_results(local, support.bearing, operating, model)
+                   for support, local in zip(shaft.supports, solution.bearing_displacements)]
+    turns = [np.array([1.0, -1.0, -1.0, 1.0, -1.0]) if o < 0 else np.ones(5) for o in layout.orientations]
+    out = {
+        "shaft.displacement": solution.displacement,
+        "shaft.converged": solution.converged,
+        "shaft.residual": solution.residual,
+        "bearings.displacement": jnp.stack(solution.bearing_displacements),
+        "bearings.force": jnp.stack(solution.bearing_forces),
+        # the load each bearing takes from the shaft, in the shaft's frame at the bearing
+        "bearings.reaction": jnp.stack([turn * force for turn, force in zip(turns, solution.bearing_forces)]),
+        "bearings.max_ball_load": jnp.stack([jnp.max(balls.inner_load) for balls in per_bearing]),
+        "bearings.max_pressure": jnp.stack([jnp.maximum(jnp.max(balls.inner_max_pressure),
+                                                        jnp.max(balls.outer_max_pressure)) for balls in per_bearing]),
+        "bearings.validity": jnp.stack([jnp.stack(validity_measures(local, support.bearing, operating, model))
+                                        for support, local in zip(shaft.supports, solution.bearing_displacements)]),
+    }
+    if settings["effects"].get("stiffness", False) is True:
+        out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at)
+    if settings["effects"].get("life", False) is True:
+        lives = []
+        for bearing, balls in zip(layout.bearings, per_bearing):
+            rating = life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else \
+                bearing.dynamic_load_rating
+            lives.append(life.reference_rating_life(bearing, rating, balls.inner_load, balls.outer_load))
+        out["bearings.L10r"] = jnp.stack(lives)
+        out["shaft.L10r"] = life.system_life(jnp.stack(lives))
+    return out
+
+
+def _checks(values: dict) -> tuple[list[str], list[str]]:
+    errors = [line for number, (approach, angle) in enumerate(np.asarray(values["bearings.validity"]))
+              for line in validity_errors(approach, angle, f"bearing {number}")]
+    if not errors and not bool(values["shaft.converged"]):
+        errors.append(f"shaft equilibrium did not converge: largest scaled residual {float(values['shaft.residual']):.1e} "
+                      f"(tolerance {RESIDUAL_TOLERANCE:g})")
+    warnings = [f"bearing {number}: peak contact pressure {pressure / 1e9:.3g} GPa exceeds the ISO 76 static limit "
+                f"{ISO76_BALL_PRESSURE_LIMIT / 1e9:g} GPa"
+                for number, pressure in enumerate(np.asarray(values["bearings.max_pressure"]))
+                if pressure > ISO76_BALL_PRESSURE_LIMIT]
+    return errors, warnings
+
+
+def _plot(result, figure):
+    """The shaft's radial displacement along its length and the bearings' radial reactions."""
+    values, layout = result.values, result.model.inputs["shaft"]
+    positions = np.asarray(layout.positions)
+    span = np.linspace(min(positions.min(), np.asarray(layout.loads.positions).min()),
+                       max(positions.max(), np.asarray(layout.loads.positions).max()), 101)
+    u = np.asarray(values["shaft.displacement"])
+    moved = np.array([np.asarray(transfer(z)) @ u for z in span])
+    line, bars = figure.subplots(1, 2)
+    line.plot(span * 1e3, moved[:, 0] * 1e6, label="x")
+    line.plot(span * 1e3, moved[:, 1] * 1e6, label="y")
+    for z in positions:
+        line.axvline(z * 1e3, color="0.6", lw=0.8)
+    line.set(xlabel="position along the shaft [mm]", ylabel="radial displacement [µm]", title="shaft (rigid)")
+    reaction = np.asarray(values["bearings.reaction"])
+    numbers = np.arange(len(positions))
+    bars.bar(numbers - 0.2, np.hypot(reaction[:, 0], reaction[:, 1]) / 1e3, 0.4, label="radial")
+    bars.bar(numbers + 0.2, np.abs(reaction[:, 2]) / 1e3, 0.4, label="axial")
+    bars.set(xlabel="bearing", ylabel="load [kN]", title="bearing loads", xticks=numbers)
+    for axis in (line, bars):
+        axis.grid(alpha=0.3)
+        axis.legend()
+    figure.suptitle(result.model.scene.title)
+
+
+BLOCK = Block(
+    name="shaft",
+    bearing_types=SHAFT,
+    enabled_by=None,
+    requires=(),
+    inputs=("shaft",),
+    uses=("centrifugal", "gyroscopic", "stiffness", "life"),
+    outputs=(
+        Output("shaft.displacement", "m, rad", "", "shaft displacement at z = 0 [ux, uy, uz, θx, θy]", in_report=False),
+        Output("shaft.converged", "", "", "the shaft equilibrium converged", in_report=False),
+        Output("shaft.residual", "", "", "largest scaled residual of the shaft equilibrium", in_report=False),
+        Output("shaft.stiffness", "N/m, N/rad, N*m/m, N*m/rad", "", "5×5 system stiffness at shaft.stiffness_at (exact)",
+               effect="stiffness", in_report=False),
+        Output("shaft.L10r", "1e6 rev", "1e6 rev", "reference rating life of the shaft's bearings together, "
+               "(Σ L10r^(−10/9))^(−9/10)", effect="life"),
+        Output("bearings.displacement", "m, rad", "", "each bearing's inner-ring displacement in its own frame",
+               in_report=False),
+        Output("bearings.force", "N, N*m", "", "each bearing's load in its own frame [Fx, Fy, Fz, Mx, My]",
+               in_report=False),
+        Output("bearings.reaction", "N, N*m", "", "each bearing's load from the shaft, shaft frame, at the bearing",
+               in_report=False),
+        Output("bearings.max_ball_load", "N", "kN", "each bearing's largest ball load (inner contact)", in_report=False),
+        Output("bearings.max_pressure", "Pa", "GPa", "each bearing's peak Hertz pressure", in_report=False),
+        Output("bearings.validity", "-, rad", "", "each bearing's largest approach / Dw and |contact angle| "
+               "(model limits 1 %, 90°)", in_report=False),
+        Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
+               in_report=False),
+    ),
+    compute=_shaft,
+    checks=_checks,
+    plot=_plot,
+)
+
+
+def _header(result) -> list[str]:
+    scene, layout = result.model.scene, result.model.inputs["shaft"]
+    lines = [scene.title, f"scene: {scene.source}", "",
+             f"Shaft      rigid, {len(layout.bearings)} ball bearings, {float(layout.speed) * 30 / np.pi:.1f} r/min"]
+    for number, (bearing, z, orientation) in enumerate(zip(layout.bearings, np.asarray(layout.positions),
+                                                          layout.orientations)):
+        lines.append(f"  bearing {number}: {bearing.kind} at z = {z * 1e3:.2f} mm ({'+z' if orientation > 0 else '−z'}), "
+                     f"{bearing.ball_count} balls, Dw = {float(bearing.ball_diameter) * 1e3:.4f} mm, "
+                     f"α0 = {np.degrees(float(bearing.free_contact_angle)):.2f}°")
+    loads = layout.loads
+    for number, (z, force, moment) in enumerate(zip(np.asarray(loads.positions), np.asarray(loads.forces),
+                                                    np.asarray(loads.moments))):
+        lines.append(f"  load {number}: z = {z * 1e3:.2f} mm, F = [{', '.join(f'{f / 1e3:.3f}' for f in force)}] kN, "
+                     f"M = [{', '.join(f'{m:.1f}' for m in moment)}] N·m")
+    return lines
+
+
+def _report(result) -> list[str]:
+    values = result.values
+    u = np.asarray(values["shaft.displacement"])
+    lines = ["", "Shaft at z = 0",
+             f"  ux = {u[0] * 1e6:.3f} µm, uy = {u[1] * 1e6:.3f} µm, uz = {u[2] * 1e6:.3f} µm, "
+             f"θx = {u[3] * 1e3:.4f} mrad, θy = {u[4] * 1e3:.4f} mrad",
+             "", "Bearings (loads from the shaft, shaft frame)",
+             f"  {'#':<4}{'Fx [kN]':>10}{'Fy [kN]':>10}{'Fz [kN]':>10}{'Mx [N·m]':>10}{'My [N·m]':>10}{'Qmax [kN]':>11}"
+             f"{'p0 [GPa]':>10}" + (f"{'L10r [1e6 rev]':>16}" if "bearings.L10r" in values else "")]
+    for number, reaction in enumerate(np.asarray(values["bearings.reaction"])):
+        row = (f"  {number:<4}" + "".join(f"{f / 1e3:>10.4f}" for f in reaction[:3])
+               + "".join(f"{m:>10.2f}" for m in reaction[3:])
+               + f"{float(values['bearings.max_ball_load'][number]) / 1e3:>11.4f}"
+               + f"{float(values['bearings.max_pressure'][number]) / 1e9:>10.4f}")
+        if "bearings.L10r" in values:
+            row += f"{format_number(values['bearings.L10r'][number]):>16}"
+        lines.append(row)
+    if "shaft.stiffness" in values:
+        at = float(result.model.inputs["shaft"].stiffness_at)
+        lines += ["", f"System stiffness at the shaft point z = {at * 1e3:.2f} mm"]
+        lines += stiffness_lines(values["shaft.stiffness"], "the balls of every bearing")[1:]
+    state = "converged" if bool(values["shaft.converged"]) else "DID NOT CONVERGE"
+    return lines + ["", f"Shaft equilibrium: {state} (largest scaled residual {float(values['shaft.residual']):.1e})"]
+
+
+ADAPTER = register(Adapter(
+    name="shaft",
+    bearing_types=SHAFT,
+    keys={
+        "bearings": Key("tables", doc="[[bearings]]: a [bearing] table's keys (ball bearings) plus position, "
+                                      "orientation (\"+z\" or \"-z\") and offset (an axial preload push)",
+                        entry=_bearing_entry),
+        "loads": Key("tables", doc="[[loads]]: position, force = [Fx, Fy, Fz], moment = [Mx, My] on the shaft",
+                     entry=_load_entry),
+        "shaft.speed": quantity("angular_speed", "the shaft's (inner rings') speed; the outer rings stand still"),
+        "shaft.stiffness_at": quantity("length", "the shaft point of the system stiffness (default z = 0)"),
+        "effects.centrifugal": Key("boolean"),
+        "effects.gyroscopic": Key("boolean"),
+        "effects.stiffness": Key("boolean"),
+        "effects.life": Key("boolean"),
+    },
+    required={"shaft": ("bearings", "loads")},
+    inputs=(InputBuilder(("shaft",), SHAFT, _layout),),
+    blocks=(BLOCK,),
+    header=_header,
+    report=_report,
+))

@@ -1,0 +1,69 @@
+"""A shaft on several bearings through scenes ([[bearings]], [[loads]], [shaft]): one bearing on the
+shaft against the single-bearing scene, the system life, and the errors a user meets."""
+
+import numpy as np
+import pytest
+
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.app import cli
+
+from .helpers import BEARING_6411E
+
+ENTRY = BEARING_6411E.replace("[bearing]", "[[bearings]]") + 'dynamic_load_rating = "101 kN"\n'
+LOAD = ["4 kN", "1 kN", "2.5 kN"]
+
+
+def _run(tmp_path, text, name):
+    path = tmp_path / name
+    path.write_text(text)
+    return run_model(build_model(load_scene(str(path))), progress=False)
+
+
+def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
+    """Issue 26: the 6411E alone on a shaft (at z = 40 mm, loaded there, turned "-z" with the load
+    turned too) against the single-bearing scene: its displacement in its own frame, its load, its
+    largest ball load and its L10r to 1e-9; the shaft's life is that bearing's."""
+    shaft = _run(tmp_path, ENTRY + 'position = "40 mm"\norientation = "-z"\n[shaft]\nspeed = "3000 rpm"\n'
+                 f'[[loads]]\nposition = "40 mm"\nforce = ["{LOAD[0]}", "-{LOAD[1]}", "-{LOAD[2]}"]\n'
+                 '[effects]\nlife = true\n', "shaft.toml")
+    single = _run(tmp_path, BEARING_6411E + 'dynamic_load_rating = "101 kN"\n[operating]\ninner_speed = "3000 rpm"\n'
+                  f'force = ["{LOAD[0]}", "{LOAD[1]}", "{LOAD[2]}"]\n[effects]\nlife = true\n', "single.toml")
+    assert bool(shaft.values["shaft.converged"]) and bool(single.values["converged"])
+    scale = np.max(np.abs(single.values["displacement"]))
+    np.testing.assert_allclose(shaft.values["bearings.displacement"][0], single.values["displacement"], rtol=1e-9,
+                               atol=1e-9 * scale)
+    np.testing.assert_allclose(shaft.values["bearings.force"][0], single.values["force"], rtol=1e-9, atol=1e-9)
+    assert float(shaft.values["bearings.max_ball_load"][0]) == pytest.approx(
+        float(np.max(single.values["balls.inner.load"])), rel=1e-9)
+    assert float(shaft.values["bearings.L10r"][0]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-9)
+    assert float(shaft.values["shaft.L10r"]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-12)
+
+
+def test_gearbox_shaft_balances_its_load(capsys, tmp_path):
+    """The packaged gearbox_shaft: the bearings' reactions (shaft frame, at each bearing) balance
+    the gear's force and moment about z = 0 exactly; the system life is below each bearing's."""
+    result = run_model(build_model(load_scene("gearbox_shaft")), progress=False)
+    reaction = np.asarray(result.values["bearings.reaction"])
+    positions = np.array([-0.1, 0.1])
+    force = np.array([6e3, 2e3, 1.5e3])
+    np.testing.assert_allclose(reaction[:, :3].sum(axis=0), force, rtol=1e-9)
+    # moments about z = 0: each bearing's own moment plus z × its force; the gear's 90 N·m about y and 0.03 m × F
+    moment_x = reaction[:, 3].sum() - (positions * reaction[:, 1]).sum()
+    moment_y = reaction[:, 4].sum() + (positions * reaction[:, 0]).sum()
+    np.testing.assert_allclose([moment_x, moment_y], [-0.03 * force[1], 90.0 + 0.03 * force[0]], rtol=1e-9)
+    lives = np.asarray(result.values["bearings.L10r"])
+    assert float(result.values["shaft.L10r"]) == pytest.approx(np.sum(lives ** (-10 / 9)) ** (-0.9), rel=1e-12)
+
+
+@pytest.mark.parametrize("entry, named", [
+    ('orientation = "sideways"\nposition = "0 mm"\n', "bearings[0].orientation"),
+    ('position = "0 mm"\nfoo = 1\n', "bearings[0]: unknown key 'bearing.foo'"),
+    ("", "bearings[0]: missing required key 'position'"),
+    ('position = "0 mm"\nroller_length = "10 mm"\n', "bearings[0]: key 'roller_length' is not read"),
+])
+def test_bad_shafts_are_refused(capsys, tmp_path, entry, named):
+    path = tmp_path / "bad.toml"
+    path.write_text(ENTRY + entry + '[[loads]]\nposition = "0 mm"\nforce = ["1 kN", "0 N", "0 N"]\n')
+    code = cli.main(["run", str(path)])
+    err = capsys.readouterr().err
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
