@@ -19,6 +19,7 @@ from .ball_equilibrium import (
 from .bearing_set import (
     bearing_set as bearing_set,
     clamped_offset as clamped_offset,
+    preload_force as preload_force,
     preload_offset as preload_offset,
     with_radial_clearance as with_radial_clearance,
 )

@@ -23,21 +23,32 @@ e + (f_i + f_o − 1) D_w (sin α₀ − sin α₀') (`clamped_offset`).
 import equinox as eqx
 import jax.numpy as jnp
 
-from .ball_equilibrium import BallModel, solve_equilibrium
+from .ball_equilibrium import BallModel, ring_force, solve_equilibrium
 from .params import BallBearing, Operating, _is_concrete, check_range, groove_curvature_centre_distance
 from .shaft_equilibrium import BallSupport
 
 ARRANGEMENTS = {"back_to_back": (1, -1), "face_to_face": (-1, 1), "tandem": (1, 1)}
 
 
+def _at_standstill(model: BallModel) -> BallModel:
+    """`model` without speed effects (its Hertz options kept)."""
+    return BallModel(race_control=model.race_control, hertz_method=model.hertz_method,
+                     hertz_constants=model.hertz_constants)
+
+
 def preload_offset(bearing: BallBearing, preload, model: BallModel = BallModel()):
     """δz [m]: the axial displacement of one bearing under an axial force `preload` [N] at
     standstill (no speed effects, `model`'s Hertz options); differentiable in `preload`."""
     check_range("operating.preload", preload, low=0.0, low_open=False, unit=" N")
-    static = BallModel(race_control=model.race_control, hertz_method=model.hertz_method,
-                       hertz_constants=model.hertz_constants)
     operating = Operating(0.0, 0.0, jnp.stack([0.0, 0.0, jnp.asarray(preload, dtype=float)]), jnp.zeros(2))
-    return solve_equilibrium(bearing, operating, static).displacement[2]
+    return solve_equilibrium(bearing, operating, _at_standstill(model)).displacement[2]
+
+
+def preload_force(bearing: BallBearing, offset, model: BallModel = BallModel()):
+    """F_z [N]: the axial force of one bearing pushed axially by `offset` [m] at standstill (the
+    inverse of `preload_offset`)."""
+    at_rest = Operating(0.0, 0.0, jnp.zeros(3), jnp.zeros(2))
+    return ring_force(jnp.zeros(5).at[2].set(offset), bearing, at_rest, _at_standstill(model))[2]
 
 
 def bearing_set(bearing: BallBearing, arrangement: str, *, spacing, offset=0.0, model: BallModel = BallModel()

@@ -129,6 +129,8 @@ class OperatingClearance(eqx.Module):
     fit_pressure_inner: jnp.ndarray
     fit_pressure_outer: jnp.ndarray
     hoop_stress_inner: jnp.ndarray
+    shaft_interference: jnp.ndarray  # effective diametral interferences [m]: smoothed, at temperature
+    housing_interference: jnp.ndarray
 
     @property
     def change(self):
@@ -174,4 +176,6 @@ def operating_clearance_change(mounting: Mounting, bore, inner_raceway, outer_ra
         fit_pressure_inner=inner_pressure,
         fit_pressure_outer=outer_pressure,
         hoop_stress_inner=inner_pressure * (1.0 + ratio**2) / (1.0 - ratio**2),
+        shaft_interference=shaft_interference,
+        housing_interference=housing_interference,
     )

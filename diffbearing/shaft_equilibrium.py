@@ -123,7 +123,7 @@ class Shaft(eqx.Module):
         if all(isinstance(s, RollerSupport) and s.bearing.kind == "cylindrical_roller" for s in self.supports):
             raise ValueError("bearings: no bearing locates the shaft axially (cylindrical roller bearings carry no "
                              "axial load); add a ball or tapered roller bearing")
-        check_range("operating.shaft_speed", self.speed, unit=" rad/s")
+        check_range("shaft.speed", self.speed, unit=" rad/s")
 
 
 def transfer(position):

@@ -69,6 +69,7 @@ def test_preload_as_force_and_as_offset_agree(tmp_path):
                                    rtol=1e-9, atol=1e-9)
 
 
+@pytest.mark.slow
 def test_set_at_its_operating_clearance():
     """Effect `mounting` on a set at standstill: with no fit and every temperature at the reference
     it changes nothing (exact); an inner ring 10 K hotter than the outer closes the clearance and raises the
@@ -100,6 +101,7 @@ def test_set_at_its_operating_clearance():
     assert carried == pytest.approx(float(alone[2]), rel=1e-9)
 
 
+@pytest.mark.slow
 def test_life_of_the_set():
     """Effect `life` on a set: each bearing's ISO/TS 16281 L10r and the set's, (Σ L^(−10/9))^(−9/10)."""
     result = run(["effects.life=true"])

@@ -80,6 +80,23 @@ def test_stiffness_against_shaft_interference_matches_central_differences(mounte
     np.testing.assert_allclose(slope, reference, rtol=1e-5)
 
 
+def test_tolerance_classes_are_their_interferences(mounted, tmp_path):
+    """ISO 286 classes at `fit_value = "min"` (a k5 shaft on the 6411's bore: 2 µm; an M7 housing on
+    its 140 mm outside: −18 µm, loose; `bearing_fits`) give what those interferences give, to 1e-12; the
+    effective shaft interference is the given one less 0.8 ΣRz, at temperature (DIN 7190)."""
+    text = MOUNTED.replace('shaft_interference = "15 um"', 'shaft_tolerance = "k5"\nhousing_tolerance = "M7"\n'
+                                                          'fit_value = "min"').replace('housing_interference = "-5 um"', "")
+    by_class = run_model(build_model(load_scene(_scene(tmp_path, text, "classes.toml"))), progress=False)
+    given = MOUNTED.replace('shaft_interference = "15 um"', 'shaft_interference = "2 um"').replace(
+        'housing_interference = "-5 um"', 'housing_interference = "-18 um"')
+    by_value = run_model(build_model(load_scene(_scene(tmp_path, given, "values.toml"))), progress=False)
+    for key in ("mounting.clearance_change", "mounting.effective_shaft_interference", "balls.inner.load"):
+        np.testing.assert_allclose(by_class.values[key], by_value.values[key], rtol=1e-12, err_msg=key)
+    # 15 µm less 0.8 (2 + 1) µm of smoothing, plus d (α_shaft − α_ring) × 50 K: steel shaft, both at 70 °C
+    effective = 15e-6 - 0.8 * 3e-6 + 55e-3 * (11.7e-6 - 11.5e-6) * 50.0
+    assert float(mounted.values["mounting.effective_shaft_interference"]) == pytest.approx(effective, rel=1e-9)
+
+
 def test_mounting_table_without_the_effect_is_refused(tmp_path):
     text = MOUNTED.replace("mounting = true\n", "")
     with pytest.raises(ValueError, match="mounting.shaft_interference"):
@@ -90,6 +107,8 @@ def test_mounting_table_without_the_effect_is_refused(tmp_path):
     (('shaft_interference = "15 um"', 'shaft_interference = "200 um"'), "operating clearance is"),
     (('bore = "55 mm"\n', ""), "bearing.bore"),
     (('housing_material = "cast_iron"', 'housing_material = "wood"'), "mounting.housing_material"),
+    (('housing_material = "cast_iron"', 'housing_material = "cast_iron"\nshaft_tolerance = "k5"'), "not both"),
+    (('shaft_interference = "15 um"', 'shaft_tolerance = "k9"'), "mounting.shaft_tolerance"),
 ])
 def test_bad_mounting_exits_2_naming_the_cause(capsys, tmp_path, change, named):
     path = _scene(tmp_path, MOUNTED.replace(*change))

@@ -10,7 +10,7 @@ import pytest
 
 from diffbearing import roller_equilibrium as re
 from diffbearing.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix
-from diffbearing.bearing_set import bearing_set, preload_offset
+from diffbearing.bearing_set import bearing_set, preload_force, preload_offset
 from diffbearing.params import Operating, ball_bearing
 from diffbearing.roller_geometry import roller_bearing
 from diffbearing.roller_profile import roller_profile
@@ -83,6 +83,11 @@ def test_preloaded_pair_under_axial_load_is_each_bearing_alone(solve, offset, ar
         for load, local in zip(axial_loads, solution.bearing_displacements):
             alone = solve_equilibrium(ANGULAR, Operating(0.0, 0.0, np.array([0.0, 0.0, load]), np.zeros(2)))
             np.testing.assert_allclose(local, alone.displacement, rtol=1e-9, atol=1e-9 * float(alone.displacement[2]))
+
+
+def test_preload_force_inverts_preload_offset(offset):
+    """Exact identity: the axial force at the offset `preload_offset` gives for 1000 N is 1000 N."""
+    assert float(preload_force(ANGULAR, offset)) == pytest.approx(PRELOAD, rel=1e-9)
 
 
 def test_preload_is_lost_near_harris_factor(solve, offset):

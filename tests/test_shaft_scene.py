@@ -39,6 +39,7 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     assert float(shaft.values["shaft.L10r"]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-12)
 
 
+@pytest.mark.slow
 def test_gearbox_shaft_balances_its_load(capsys, tmp_path):
     """The packaged gearbox_shaft: the bearings' reactions (shaft frame, at each bearing) balance
     the gear's force and moment about z = 0 exactly; the system life is below each bearing's."""

@@ -9,9 +9,9 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ...ball_equilibrium import BallModel, ball_results, ring_force, validity_measures
-from ...bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_offset
-from ...params import BALL_BEARING_KINDS, Operating, _as_float
+from ...ball_equilibrium import BallModel, ball_results, validity_measures
+from ...bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_force, preload_offset
+from ...params import BALL_BEARING_KINDS, _as_float
 from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 from ..formatting import format_number, stiffness_lines, swept_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
@@ -59,21 +59,15 @@ def _layout(v, built) -> dict:
                                      v["bearing.arrangement"])}
 
 
-def _static(model: BallModel) -> BallModel:
-    return BallModel(race_control=model.race_control, hertz_method=model.hertz_method,
-                     hertz_constants=model.hertz_constants)
-
-
 def _offsets(bearing, layout: SetLayout, model: BallModel):
     """(offset as matched [m], offset in the running bearing's own reference [m] (`clamped_offset`:
     a mounting may have moved its free contact angle), preload at standstill [N])."""
     matched = eqx.tree_at(lambda b: b.free_contact_angle, bearing, layout.assembled_angle)
-    at_rest = Operating(0.0, 0.0, jnp.zeros(3), jnp.zeros(2))
     if layout.preload is not None:
         offset, preload = preload_offset(matched, layout.preload, model), layout.preload
     else:
         offset = jnp.asarray(0.0 if layout.offset is None else layout.offset)
-        preload = ring_force(jnp.zeros(5).at[2].set(offset), matched, at_rest, _static(model))[2]
+        preload = preload_force(matched, offset, model)
     return offset, clamped_offset(matched, bearing, offset), preload
 
 

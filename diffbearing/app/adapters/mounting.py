@@ -4,6 +4,7 @@ uses in place of the bearing's own clearance."""
 
 import jax
 
+from ... import bearing_fits
 from ...operating_clearance import (RING_EXPANSION, SEAT_MATERIALS, Mounting, OperatingClearance,
                                    operating_clearance_change)
 from ...params import BALL_BEARING_KINDS, radial_clearance
@@ -33,8 +34,8 @@ def _mounting(v, built) -> dict:
     housing, housing_expansion = SEAT_MATERIALS[v.get("mounting.housing_material", "steel")]
     reference = v.get("mounting.reference_temperature", 293.15)
     mounting = Mounting(
-        shaft_interference=v.get("mounting.shaft_interference", 0.0),
-        housing_interference=v.get("mounting.housing_interference", 0.0),
+        shaft_interference=_interference(v, "shaft", "bearing.bore", bearing_fits.shaft_interference),
+        housing_interference=_interference(v, "housing", "bearing.outer_diameter", bearing_fits.housing_interference),
         shaft_bore=v.get("mounting.shaft_bore", 0.0),
         housing_outer_diameter=v.get("mounting.housing_outer_diameter"),
         roughness=tuple(v.get(f"mounting.{part}_roughness", 0.0) for part in ROUGHNESSES),
@@ -52,6 +53,17 @@ def _mounting(v, built) -> dict:
     return {"mounting": operating_clearance_change(
         mounting, v["bearing.bore"], pitch - element, pitch + element, v["bearing.outer_diameter"], element,
         material(v), v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))}
+
+
+def _interference(v, seat: str, diameter: str, from_class):
+    """The scene's diametral interference of the `seat` ("shaft", "housing") [m]: given, or from
+    its ISO 286 class at `mounting.fit_value` (`bearing_fits`), or 0."""
+    given, tolerance = f"mounting.{seat}_interference", f"mounting.{seat}_tolerance"
+    if given in v and tolerance in v:
+        raise ValueError(f"[mounting]: give {given} or {tolerance}, not both")
+    if tolerance in v:
+        return from_class(v[tolerance], v[diameter], v.get("mounting.fit_value", "probable"))
+    return v.get(given, 0.0)
 
 
 def ball_operating_clearance(own, change: OperatingClearance):
@@ -77,6 +89,8 @@ def _outputs(change: OperatingClearance, running) -> dict:
         "mounting.fit_pressure_inner": change.fit_pressure_inner,
         "mounting.fit_pressure_outer": change.fit_pressure_outer,
         "mounting.hoop_stress_inner": change.hoop_stress_inner,
+        "mounting.effective_shaft_interference": change.shaft_interference,
+        "mounting.effective_housing_interference": change.housing_interference,
     }
 
 
@@ -105,6 +119,8 @@ OUTPUTS = (
     Output("mounting.fit_pressure_inner", "Pa", "MPa", "fit pressure, inner ring on the shaft"),
     Output("mounting.fit_pressure_outer", "Pa", "MPa", "fit pressure, outer ring in the housing"),
     Output("mounting.hoop_stress_inner", "Pa", "MPa", "hoop stress at the inner ring's bore"),
+    Output("mounting.effective_shaft_interference", "m", "um", "effective shaft interference (smoothed, at temperature)"),
+    Output("mounting.effective_housing_interference", "m", "um", "effective housing interference (smoothed, at temperature)"),
 )
 
 
@@ -119,6 +135,13 @@ ADAPTER = register(Adapter(
                                                           "(negative: a loose fit)"),
         "mounting.housing_interference": quantity("length", "diametral interference of the outer ring in the housing "
                                                             "(negative: a loose fit)"),
+        "mounting.shaft_tolerance": Key("text", doc="ISO 286 class of the shaft seat (g, h, js, k, m, n, p; grades 5–7), "
+                                                    "instead of shaft_interference; with the ring's ISO 492 Normal bore"),
+        "mounting.housing_tolerance": Key("text", doc="ISO 286 class of the housing seat (G, H, JS, K, M, N, P; grades 6, "
+                                                      "7), instead of housing_interference; with the ring's ISO 492 "
+                                                      "Normal outside"),
+        "mounting.fit_value": Key("choice", choices=bearing_fits.FIT_VALUES,
+                                  doc="which interference of the classes: probable (the mean, default), max or min"),
         "mounting.shaft_bore": quantity("length", "bore of a hollow shaft (default 0: solid)"),
         "mounting.housing_outer_diameter": quantity("length", "outside diameter of the housing (default: a large "
                                                               "housing)"),
