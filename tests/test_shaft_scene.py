@@ -33,7 +33,7 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     np.testing.assert_allclose(shaft.values["bearings.displacement"][0], single.values["displacement"], rtol=1e-9,
                                atol=1e-9 * scale)
     np.testing.assert_allclose(shaft.values["bearings.force"][0], single.values["force"], rtol=1e-9, atol=1e-9)
-    assert float(shaft.values["bearings.max_ball_load"][0]) == pytest.approx(
+    assert float(shaft.values["bearings.max_element_load"][0]) == pytest.approx(
         float(np.max(single.values["balls.inner.load"])), rel=1e-9)
     assert float(shaft.values["bearings.L10r"][0]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-9)
     assert float(shaft.values["shaft.L10r"]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-12)
@@ -68,3 +68,39 @@ def test_bad_shafts_are_refused(capsys, tmp_path, entry, named):
     code = cli.main(["run", str(path)])
     err = capsys.readouterr().err
     assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+
+
+CYLINDRICAL = """
+[[bearings]]
+type = "cylindrical_roller"
+position = "-100 mm"
+roller_diameter = "25.4 mm"
+roller_length = "14.7 mm"
+pitch_diameter = "106.6 mm"
+rollers = 12
+radial_clearance = "20 um"
+[bearings.profile]
+kind = "circular"
+flat_length = "12.7 mm"
+crown_radius = "50 mm"
+"""
+
+
+def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
+    """A cylindrical roller bearing (the packaged example's) and the 6411E on a shaft under a gear
+    load: the roller bearing's radial displacement and tilt, and its L10r, equal the whole roller
+    bearing scene's under the load and moment it carries on the shaft, to 1e-9."""
+    shaft = _run(tmp_path, CYLINDRICAL + ENTRY + 'position = "100 mm"\n[[loads]]\nposition = "20 mm"\n'
+                 'force = ["5 kN", "2 kN", "1 kN"]\n[effects]\nlife = true\n', "gearbox.toml")
+    assert bool(shaft.values["shaft.converged"])
+    force = [float(value) for value in shaft.values["bearings.force"][0]]
+    assert force[2] == 0.0  # no axial load on the cylindrical roller bearing
+    text = (CYLINDRICAL.replace("[[bearings]]", "[bearing]").replace("[bearings.profile]", "[profile]")
+            .replace('position = "-100 mm"\n', "")
+            + f'[operating]\nforce = ["{force[0]!r} N", "{force[1]!r} N", "0 N"]\n'
+            + f'moment = ["{force[3]!r} N*m", "{force[4]!r} N*m"]\n[effects]\ncontact = "slices"\nlife = true\n')
+    alone = _run(tmp_path, text, "roller.toml")
+    local = np.asarray(shaft.values["bearings.displacement"][0])
+    np.testing.assert_allclose(local[[0, 1, 3, 4]], np.asarray(alone.values["displacement"])[[0, 1, 3, 4]], rtol=1e-9,
+                               atol=1e-9 * np.max(np.abs(local[:2])))
+    assert float(shaft.values["bearings.L10r"][0]) == pytest.approx(float(alone.values["life.L10r"]), rel=1e-9)

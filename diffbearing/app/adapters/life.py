@@ -28,23 +28,30 @@ def _life(inputs: dict, settings: dict, results: dict) -> dict:
     }
 
 
-def _roller_life(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, raceways = inputs["bearing"], inputs["raceways"]
+def roller_bearing_life(bearing, raceways, inner_lamina_load, outer_lamina_load, given_rating=None):
+    """(C_r used [N], C_r by ISO 281 [N], ISO/TS 16281 L10r [10⁶ rev]) of a whole roller bearing from
+    its lamina loads per unit length (rollers × laminae) [N/m]."""
     count, diameter = bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter)
     angle, pitch = raceways.cup_angle, raceways.pitch_diameter
     computed = roller_life.roller_dynamic_load_rating(count, diameter, bearing.length, angle, pitch)
-    given = inputs["load_rating"]
-    rating = computed if given is None else given
-    load = roller_life.roller_equivalent_dynamic_load(inputs["operating"].force, angle)
-    width = bearing.length / results["rollers.inner.lamina_load"].shape[-1]
+    rating = computed if given_rating is None else given_rating
+    width = bearing.length / inner_lamina_load.shape[-1]
+    return rating, computed, roller_life.roller_reference_rating_life(rating, count, diameter, angle, pitch,
+                                                                      inner_lamina_load * width,
+                                                                      outer_lamina_load * width)
+
+
+def _roller_life(inputs: dict, settings: dict, results: dict) -> dict:
+    rating, computed, reference = roller_bearing_life(inputs["bearing"], inputs["raceways"],
+                                                      results["rollers.inner.lamina_load"],
+                                                      results["rollers.outer.lamina_load"], inputs["load_rating"])
+    load = roller_life.roller_equivalent_dynamic_load(inputs["operating"].force, inputs["raceways"].cup_angle)
     return {
         "life.basic_dynamic_load_rating": rating,
         "life.iso281_load_rating": computed,
         "life.equivalent_load": load,
         "life.L10": roller_life.roller_basic_rating_life(rating, load),
-        "life.L10r": roller_life.roller_reference_rating_life(rating, count, diameter, angle, pitch,
-                                                              results["rollers.inner.lamina_load"] * width,
-                                                              results["rollers.outer.lamina_load"] * width),
+        "life.L10r": reference,
     }
 
 

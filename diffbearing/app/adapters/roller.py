@@ -25,7 +25,8 @@ SINGLE_CONTACT = ("contact.load",)  # the scene key of this layout (registry: on
 DEFAULT_CONTACT_TOLERANCE = 1e-11
 
 
-def _bearing(v, built) -> dict:
+def scene_roller_bearing(v, built) -> dict:
+    """{"bearing": the RollerBearing} of a scene's [bearing] and [profile] values (SI)."""
     length = v["bearing.roller_length"]
     kind = v.get("profile.kind", "straight")
     parameters = {name: v.get(f"profile.{name}") for name in ("flat_length", "crown_radius", "design_load", "k1", "k2", "zm")}
@@ -299,7 +300,7 @@ ADAPTER = register(Adapter(
     required={"cylindrical_roller": ("bearing.roller_diameter", "bearing.roller_length"),
               "tapered_roller": ("bearing.roller_small_diameter", "bearing.roller_large_diameter",
                                  "bearing.roller_length")},
-    inputs=(InputBuilder(("bearing",), ROLLER_KINDS, _bearing),
+    inputs=(InputBuilder(("bearing",), ROLLER_KINDS, scene_roller_bearing),
             InputBuilder(("operating",), ROLLER_KINDS, _loading, scene_keys=SINGLE_CONTACT)),
     blocks=(ROLLER_GEOMETRY, _contact_block("slices"), _contact_block("influence")),
     header=_header,

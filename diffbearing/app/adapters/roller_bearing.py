@@ -54,7 +54,9 @@ def _traced(value) -> bool:
     return isinstance(value, jax.core.Tracer)
 
 
-def _raceways(v, built) -> dict:
+def scene_raceways(v, built) -> dict:
+    """{"raceways": RollerRaceways} of a whole roller bearing (`built` holds its "bearing" and
+    "mounting"); ValueError names a missing or bad key."""
     bearing = built["bearing"]
     if "bearing.pitch_diameter" not in v:
         raise ValueError("missing required key 'bearing.pitch_diameter' (the pitch diameter d_m of a roller bearing)")
@@ -523,7 +525,7 @@ ADAPTER = register(Adapter(
     },
     # one contact (roller.py) or the whole bearing: the scene says which by giving one of these
     required={kind: (("contact.load", "operating.force"),) for kind in ROLLER_KINDS},
-    inputs=(InputBuilder(("raceways",), ROLLER_KINDS, _raceways, after=("bearing", "mounting"), scene_keys=WHOLE_BEARING),
+    inputs=(InputBuilder(("raceways",), ROLLER_KINDS, scene_raceways, after=("bearing", "mounting"), scene_keys=WHOLE_BEARING),
             InputBuilder(("operating",), ROLLER_KINDS, _operating, after=("bearing",), scene_keys=WHOLE_BEARING),
             InputBuilder(("influence_rollers",), ROLLER_KINDS, _influence_rollers, scene_keys=WHOLE_BEARING)),
     blocks=(EQUILIBRIUM, STIFFNESS, INFLUENCE),

@@ -1,9 +1,10 @@
-"""A rigid shaft on several ball bearings (`[[bearings]]`, `[[loads]]`, `[shaft]`): the shaft's 5-DOF
+"""A rigid shaft on several bearings (`[[bearings]]`, `[[loads]]`, `[shaft]`): the shaft's 5-DOF
 equilibrium with all bearings together (`shaft_equilibrium`), each bearing's loads, the system
 stiffness at a point, each bearing's life and the system's. A scene with `[[bearings]]` is a shaft:
-each entry holds the keys of a `[bearing]` table (ball bearings) plus its `position` along the
-shaft, `orientation` ("+z" or "−z") and an optional axial `offset` (preload); the scene's
-`[material]` applies to all. Roller bearings on a shaft: from Python (`diffbearing.RollerSupport`)."""
+each entry holds the keys of a `[bearing]` table (ball, cylindrical or tapered roller bearings; a
+roller bearing's crowning as its own `profile` sub-table) plus its `position` along the shaft,
+`orientation` ("+z" or "−z") and an optional axial `offset` (preload); the scene's `[material]`
+applies to all."""
 
 import equinox as eqx
 import jax
@@ -12,14 +13,19 @@ import numpy as np
 
 from ... import life
 from ...ball_equilibrium import ball_results, validity_measures
-from ...params import BALL_BEARING_KINDS, Operating, _as_float
-from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, Shaft, ShaftLoads, shaft_stiffness, solve_shaft,
-                                  transfer)
+from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
+from ...roller_equilibrium import RollerOperating, roller_results
+from ...roller_geometry import ROLLER_KINDS
+from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport, Shaft, ShaftLoads, shaft_stiffness,
+                                  solve_shaft, transfer)
 from ..formatting import format_number, stiffness_lines
 from ..registry import Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
 from ..units import to_si
 from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
+from .life import roller_bearing_life
 from .materials import material
+from .roller import scene_roller_bearing
+from .roller_bearing import roller_model, scene_raceways
 
 SHAFT = ("shaft",)
 PLACEMENT = ("position", "orientation", "offset")
@@ -41,13 +47,15 @@ def _bearing_entry(index: int, table: dict, convert) -> dict:
     for name, value in table.items():
         if name in PLACEMENT:
             continue
-        try:
-            entry[f"bearing.{name}"] = convert(f"bearing.{name}", value)
-        except ValueError as error:
-            raise ValueError(f"{where}: {error}") from None
-    if entry.get("bearing.type") not in BALL_BEARING_KINDS:
-        raise ValueError(f"{where}.type: a shaft scene takes ball bearings {BALL_BEARING_KINDS}, got "
-                         f"{entry.get('bearing.type')!r} (roller bearings on a shaft: diffbearing.RollerSupport in Python)")
+        keys = ({f"profile.{key}": item for key, item in value.items()} if name == "profile" and isinstance(value, dict)
+                else {f"bearing.{name}": value})
+        for dotted, item in keys.items():
+            try:
+                entry[dotted] = convert(dotted, item)
+            except ValueError as error:
+                raise ValueError(f"{where}: {error}") from None
+    if entry.get("bearing.type") not in BALL_BEARING_KINDS + ROLLER_KINDS:
+        raise ValueError(f"{where}.type: one of {BALL_BEARING_KINDS + ROLLER_KINDS}, got {entry.get('bearing.type')!r}")
     return entry
 
 
@@ -68,8 +76,9 @@ def _load_entry(index: int, table: dict, convert) -> dict:
 
 
 class ShaftLayout(eqx.Module):
-    """The scene's shaft: its bearings (BallBearing each), their positions and offsets [m] and
-    orientations (±1), the loads, the shaft speed [rad/s] and the point of the stiffness [m]."""
+    """The scene's shaft: its bearings (a BallBearing, or a (RollerBearing, RollerRaceways) pair,
+    each), their positions and offsets [m] and orientations (±1), the loads, the shaft speed
+    [rad/s] and the point of the stiffness [m]."""
 
     bearings: tuple
     positions: jax.Array = eqx.field(converter=_as_float)
@@ -85,7 +94,11 @@ def _layout(v, built) -> dict:
     bearings = []
     for index, entry in enumerate(v["bearings"]):
         reads = Reads({**shared, **entry})
-        bearings.append(catalogue_bearing(reads, material(reads)))
+        if entry["bearing.type"] in BALL_BEARING_KINDS:
+            bearings.append(catalogue_bearing(reads, material(reads)))
+        else:
+            roller = scene_roller_bearing(reads, {})["bearing"]
+            bearings.append((roller, scene_raceways(reads, {"bearing": roller, "mounting": None})["raceways"]))
         unread = sorted(set(entry) - reads.asked - set(PLACEMENT))
         if unread:
             raise ValueError(f"bearings[{index}]: key {unread[0].removeprefix('bearing.')!r} is not read by a "
@@ -99,18 +112,45 @@ def _layout(v, built) -> dict:
         tuple(entry["orientation"] for entry in v["bearings"]))}
 
 
-def _supports(layout: ShaftLayout, model):
-    return tuple(BallSupport(bearing, position, offset, model=model, orientation=orientation)
+def _supports(layout: ShaftLayout, settings: dict):
+    return tuple(BallSupport(bearing, position, offset, model=ball_model(settings), orientation=orientation)
+                 if isinstance(bearing, BallBearing) else
+                 RollerSupport(*bearing, position, offset, model=roller_model(settings), orientation=orientation)
                  for bearing, position, offset, orientation in zip(layout.bearings, layout.positions, layout.offsets,
                                                                    layout.orientations))
 
 
+def _results(support, local, speed):
+    """The bearing's per-element results at its displacement: BallResults or RollerResults."""
+    if isinstance(support, BallSupport):
+        return ball_results(local, support.bearing, Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)), support.model)
+    return roller_results(local, support.bearing, support.raceways,
+                          RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed), support.model)
+
+
+def _validity(support, local, speed):
+    """(largest approach / D_w, largest |contact angle|) of a ball bearing; zeros for a roller bearing."""
+    if isinstance(support, BallSupport):
+        return jnp.stack(validity_measures(local, support.bearing, Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)),
+                                           support.model))
+    return jnp.zeros(2)
+
+
+def _life(support, elements):
+    if isinstance(support, BallSupport):
+        bearing = support.bearing
+        rating = life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else \
+            bearing.dynamic_load_rating
+        return life.reference_rating_life(bearing, rating, elements.inner_load, elements.outer_load)
+    return roller_bearing_life(support.bearing, support.raceways, elements.inner_lamina_load,
+                               elements.outer_lamina_load)[2]
+
+
 def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
-    layout, model = inputs["shaft"], ball_model(settings)
-    shaft = Shaft(_supports(layout, model), layout.loads, layout.speed)
+    layout = inputs["shaft"]
+    shaft = Shaft(_supports(layout, settings), layout.loads, layout.speed)
     solution = solve_shaft(shaft)
-    operating = Operating(layout.speed, 0.0, jnp.zeros(3), jnp.zeros(2))
-    per_bearing = [ball_results(local, support.bearing, operating, model)
+    per_bearing = [_results(support, local, layout.speed)
                    for support, local in zip(shaft.supports, solution.bearing_displacements)]
     turns = [np.array([1.0, -1.0, -1.0, 1.0, -1.0]) if o < 0 else np.ones(5) for o in layout.orientations]
     out = {
@@ -121,20 +161,17 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
         "bearings.force": jnp.stack(solution.bearing_forces),
         # the load each bearing takes from the shaft, in the shaft's frame at the bearing
         "bearings.reaction": jnp.stack([turn * force for turn, force in zip(turns, solution.bearing_forces)]),
-        "bearings.max_ball_load": jnp.stack([jnp.max(balls.inner_load) for balls in per_bearing]),
-        "bearings.max_pressure": jnp.stack([jnp.maximum(jnp.max(balls.inner_max_pressure),
-                                                        jnp.max(balls.outer_max_pressure)) for balls in per_bearing]),
-        "bearings.validity": jnp.stack([jnp.stack(validity_measures(local, support.bearing, operating, model))
+        "bearings.max_element_load": jnp.stack([jnp.max(elements.inner_load) for elements in per_bearing]),
+        "bearings.max_pressure": jnp.stack([jnp.maximum(jnp.max(elements.inner_max_pressure),
+                                                        jnp.max(elements.outer_max_pressure))
+                                            for elements in per_bearing]),
+        "bearings.validity": jnp.stack([_validity(support, local, layout.speed)
                                         for support, local in zip(shaft.supports, solution.bearing_displacements)]),
     }
     if settings["effects"].get("stiffness", False) is True:
         out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at)
     if settings["effects"].get("life", False) is True:
-        lives = []
-        for bearing, balls in zip(layout.bearings, per_bearing):
-            rating = life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else \
-                bearing.dynamic_load_rating
-            lives.append(life.reference_rating_life(bearing, rating, balls.inner_load, balls.outer_load))
+        lives = [_life(support, elements) for support, elements in zip(shaft.supports, per_bearing)]
         out["bearings.L10r"] = jnp.stack(lives)
         out["shaft.L10r"] = life.system_life(jnp.stack(lives))
     return out
@@ -199,8 +236,10 @@ BLOCK = Block(
                in_report=False),
         Output("bearings.reaction", "N, N*m", "", "each bearing's load from the shaft, shaft frame, at the bearing",
                in_report=False),
-        Output("bearings.max_ball_load", "N", "kN", "each bearing's largest ball load (inner contact)", in_report=False),
-        Output("bearings.max_pressure", "Pa", "GPa", "each bearing's peak Hertz pressure", in_report=False),
+        Output("bearings.max_element_load", "N", "kN", "each bearing's largest ball or roller load (inner contact)",
+               in_report=False),
+        Output("bearings.max_pressure", "Pa", "GPa", "each bearing's peak Hertz pressure (rollers: of their laminae)",
+               in_report=False),
         Output("bearings.validity", "-, rad", "", "each bearing's largest approach / Dw and |contact angle| "
                "(model limits 1 %, 90°)", in_report=False),
         Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
@@ -215,12 +254,19 @@ BLOCK = Block(
 def _header(result) -> list[str]:
     scene, layout = result.model.scene, result.model.inputs["shaft"]
     lines = [scene.title, f"scene: {scene.source}", "",
-             f"Shaft      rigid, {len(layout.bearings)} ball bearings, {float(layout.speed) * 30 / np.pi:.1f} r/min"]
+             f"Shaft      rigid, {len(layout.bearings)} bearings, {float(layout.speed) * 30 / np.pi:.1f} r/min"]
     for number, (bearing, z, orientation) in enumerate(zip(layout.bearings, np.asarray(layout.positions),
                                                           layout.orientations)):
-        lines.append(f"  bearing {number}: {bearing.kind} at z = {z * 1e3:.2f} mm ({'+z' if orientation > 0 else '−z'}), "
-                     f"{bearing.ball_count} balls, Dw = {float(bearing.ball_diameter) * 1e3:.4f} mm, "
-                     f"α0 = {np.degrees(float(bearing.free_contact_angle)):.2f}°")
+        where = f"  bearing {number}: at z = {z * 1e3:.2f} mm ({'+z' if orientation > 0 else '−z'}), "
+        if isinstance(bearing, BallBearing):
+            lines.append(where + f"{bearing.kind}, {bearing.ball_count} balls, Dw = "
+                                 f"{float(bearing.ball_diameter) * 1e3:.4f} mm, α0 = "
+                                 f"{np.degrees(float(bearing.free_contact_angle)):.2f}°")
+        else:
+            roller, raceways = bearing
+            lines.append(where + f"{roller.kind}, {roller.roller_count} rollers of "
+                                 f"{float(roller.large_diameter) * 1e3:.4g} × {float(roller.length) * 1e3:.4g} mm, "
+                                 f"dm = {float(raceways.pitch_diameter) * 1e3:.4g} mm")
     loads = layout.loads
     for number, (z, force, moment) in enumerate(zip(np.asarray(loads.positions), np.asarray(loads.forces),
                                                     np.asarray(loads.moments))):
@@ -235,13 +281,13 @@ def _report(result) -> list[str]:
     lines = ["", "Shaft at z = 0",
              f"  ux = {u[0] * 1e6:.3f} µm, uy = {u[1] * 1e6:.3f} µm, uz = {u[2] * 1e6:.3f} µm, "
              f"θx = {u[3] * 1e3:.4f} mrad, θy = {u[4] * 1e3:.4f} mrad",
-             "", "Bearings (loads from the shaft, shaft frame)",
+             "", "Bearings (loads from the shaft, shaft frame; Qmax the largest ball or roller load)",
              f"  {'#':<4}{'Fx [kN]':>10}{'Fy [kN]':>10}{'Fz [kN]':>10}{'Mx [N·m]':>10}{'My [N·m]':>10}{'Qmax [kN]':>11}"
              f"{'p0 [GPa]':>10}" + (f"{'L10r [1e6 rev]':>16}" if "bearings.L10r" in values else "")]
     for number, reaction in enumerate(np.asarray(values["bearings.reaction"])):
         row = (f"  {number:<4}" + "".join(f"{f / 1e3:>10.4f}" for f in reaction[:3])
                + "".join(f"{m:>10.2f}" for m in reaction[3:])
-               + f"{float(values['bearings.max_ball_load'][number]) / 1e3:>11.4f}"
+               + f"{float(values['bearings.max_element_load'][number]) / 1e3:>11.4f}"
                + f"{float(values['bearings.max_pressure'][number]) / 1e9:>10.4f}")
         if "bearings.L10r" in values:
             row += f"{format_number(values['bearings.L10r'][number]):>16}"
@@ -258,8 +304,9 @@ ADAPTER = register(Adapter(
     name="shaft",
     bearing_types=SHAFT,
     keys={
-        "bearings": Key("tables", doc="[[bearings]]: a [bearing] table's keys (ball bearings) plus position, "
-                                      "orientation (\"+z\" or \"-z\") and offset (an axial preload push)",
+        "bearings": Key("tables", doc="[[bearings]]: a [bearing] table's keys (and a roller bearing's profile "
+                                      "sub-table) plus position, orientation (\"+z\" or \"-z\") and offset (an axial "
+                                      "preload push)",
                         entry=_bearing_entry),
         "loads": Key("tables", doc="[[loads]]: position, force = [Fx, Fy, Fz], moment = [Mx, My] on the shaft",
                      entry=_load_entry),
