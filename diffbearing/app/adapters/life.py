@@ -28,6 +28,16 @@ def _life(inputs: dict, settings: dict, results: dict) -> dict:
     }
 
 
+def ball_load_rating(bearing):
+    """C_r [N] used for a ball bearing: its own, else ISO 281's from the geometry."""
+    return life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else bearing.dynamic_load_rating
+
+
+def ball_bearing_life(bearing, inner_loads, outer_loads):
+    """ISO/TS 16281 L10r [10⁶ rev] of a ball bearing from its ball loads [N] (`ball_load_rating`)."""
+    return life.reference_rating_life(bearing, ball_load_rating(bearing), inner_loads, outer_loads)
+
+
 def roller_bearing_life(bearing, raceways, inner_lamina_load, outer_lamina_load, given_rating=None):
     """(C_r used [N], C_r by ISO 281 [N], ISO/TS 16281 L10r [10⁶ rev]) of a whole roller bearing from
     its lamina loads per unit length (rollers × laminae) [N/m]."""
@@ -58,12 +68,9 @@ def _roller_life(inputs: dict, settings: dict, results: dict) -> dict:
 def _set_life(inputs: dict, settings: dict, results: dict) -> dict:
     """ISO/TS 16281 reference rating life of each bearing of a set from its ball loads, and of the set."""
     bearing = inputs["bearing"]
-    rating = life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else \
-        bearing.dynamic_load_rating
-    lives = [life.reference_rating_life(bearing, rating, results[f"set.bearings.{number}.balls.inner.load"],
-                                        results[f"set.bearings.{number}.balls.outer.load"])
-             for number in range(SET_SIZE)]
-    return {"life.basic_dynamic_load_rating": rating,
+    lives = [ball_bearing_life(bearing, results[f"set.bearings.{number}.balls.inner.load"],
+                               results[f"set.bearings.{number}.balls.outer.load"]) for number in range(SET_SIZE)]
+    return {"life.basic_dynamic_load_rating": ball_load_rating(bearing),
             **{f"set.bearings.{number}.L10r": value for number, value in enumerate(lives)},
             "set.L10r": life.system_life(jnp.stack(lives))}
 

@@ -16,13 +16,13 @@ from ...ball_equilibrium import ball_results, validity_measures
 from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
 from ...roller_equilibrium import RollerOperating, roller_results
 from ...roller_geometry import ROLLER_KINDS
-from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport, Shaft, ShaftLoads, shaft_stiffness,
-                                  solve_shaft, transfer)
+from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, TURNED, BallSupport, RollerSupport, Shaft, ShaftLoads,
+                                  shaft_stiffness, solve_shaft, transfer)
 from ..formatting import format_number, stiffness_lines
 from ..registry import Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
 from ..units import to_si
 from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
-from .life import roller_bearing_life
+from .life import ball_bearing_life, roller_bearing_life
 from .materials import material
 from .roller import scene_roller_bearing
 from .roller_bearing import roller_model, scene_raceways
@@ -138,10 +138,7 @@ def _validity(support, local, speed):
 
 def _life(support, elements):
     if isinstance(support, BallSupport):
-        bearing = support.bearing
-        rating = life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else \
-            bearing.dynamic_load_rating
-        return life.reference_rating_life(bearing, rating, elements.inner_load, elements.outer_load)
+        return ball_bearing_life(support.bearing, elements.inner_load, elements.outer_load)
     return roller_bearing_life(support.bearing, support.raceways, elements.inner_lamina_load,
                                elements.outer_lamina_load)[2]
 
@@ -152,7 +149,7 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     solution = solve_shaft(shaft)
     per_bearing = [_results(support, local, layout.speed)
                    for support, local in zip(shaft.supports, solution.bearing_displacements)]
-    turns = [np.array([1.0, -1.0, -1.0, 1.0, -1.0]) if o < 0 else np.ones(5) for o in layout.orientations]
+    turns = [TURNED if orientation < 0 else np.ones(5) for orientation in layout.orientations]
     out = {
         "shaft.displacement": solution.displacement,
         "shaft.converged": solution.converged,
