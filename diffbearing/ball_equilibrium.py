@@ -7,7 +7,7 @@ ball j (azimuth ψ_j from +x), with the outer groove curvature centre as origin,
 first and radial (outward) second:
 
     inner groove curvature centre  A = (B D_w sin α₀ + δz + R_i (θx sin ψ − θy cos ψ),
-                                        B D_w cos α₀ + δx cos ψ + δy sin ψ)
+                                        B D_w cos α₀ + ι/2 + δx cos ψ + δy sin ψ)
     B D_w = (f_i + f_o − 1) D_w,  R_i = d_m/2 + (f_i − 1/2) D_w cos α₀
     ball centre X:  δ_o = |X| − (f_o − ½)D_w,  δ_i = |A − X| − (f_i − ½)D_w
     tan α_o = X₁/X₂,  tan α_i = (A₁ − X₁)/(A₂ − X₂),  Q = K(α) max(δ, 0)^{3/2}  (Hertz, exact K(α))
@@ -131,7 +131,8 @@ def inner_groove_centres(bearing: BallBearing, displacement):
     arm = inner_groove_radius_of_centres(bearing)
     dx, dy, dz, tx, ty = (displacement[i] for i in range(5))
     axial = distance * jnp.sin(bearing.free_contact_angle) + dz + arm * (tx * jnp.sin(psi) - ty * jnp.cos(psi))
-    radial = distance * jnp.cos(bearing.free_contact_angle) + dx * jnp.cos(psi) + dy * jnp.sin(psi)
+    radial = (distance * jnp.cos(bearing.free_contact_angle) + 0.5 * bearing.interference + dx * jnp.cos(psi)
+              + dy * jnp.sin(psi))
     return jnp.stack([axial, radial], axis=-1)
 
 

@@ -24,7 +24,8 @@ import equinox as eqx
 import jax.numpy as jnp
 
 from .ball_equilibrium import BallModel, ring_force, solve_equilibrium
-from .params import BallBearing, Operating, _is_concrete, check_range, groove_curvature_centre_distance
+from .params import (BallBearing, Operating, _is_concrete, check_range, contact_angle_and_interference,
+                     groove_curvature_centre_distance)
 from .shaft_equilibrium import BallSupport
 
 ARRANGEMENTS = {"back_to_back": (1, -1), "face_to_face": (-1, 1), "tandem": (1, 1)}
@@ -68,10 +69,10 @@ def bearing_set(bearing: BallBearing, arrangement: str, *, spacing, offset=0.0, 
 
 
 def with_radial_clearance(bearing: BallBearing, clearance) -> BallBearing:
-    """The bearing at another diametral clearance G_r [m]: free contact angle
-    cos α₀ = 1 − G_r / (2 (f_i + f_o − 1) D_w) (Harris & Kotzalas vol. 1, ch. 2); differentiable."""
-    distance = groove_curvature_centre_distance(bearing)
-    return eqx.tree_at(lambda b: b.free_contact_angle, bearing, jnp.arccos(1.0 - clearance / (2.0 * distance)))
+    """The bearing at another diametral clearance G_r [m] (`params.contact_angle_and_interference`:
+    a negative one an interference); differentiable."""
+    angle, interference = contact_angle_and_interference(clearance, groove_curvature_centre_distance(bearing))
+    return eqx.tree_at(lambda b: (b.free_contact_angle, b.interference), bearing, (angle, interference))
 
 
 def clamped_offset(matched: BallBearing, running: BallBearing, offset):

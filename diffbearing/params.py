@@ -145,8 +145,13 @@ class BallBearing(eqx.Module):
     bore: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
     outer_diameter: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
     dynamic_load_rating: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
+    # A negative clearance (preloaded bearing): the diametral interference ι = −G_r ≥ 0 [m]; the
+    # free contact angle is then 0 and every ball is squeezed by ι/2 at Δ = 0.
+    interference: np.ndarray = eqx.field(converter=_as_float, default=0.0)
 
     def __check_init__(self):
+        check_range("bearing.radial_clearance", -self.interference if _is_concrete(self.interference) else None,
+                    high=0.0, high_open=False, unit=" m", why="the interference of a negative clearance")
         if self.kind not in BALL_BEARING_KINDS:
             raise ValueError(f"bearing.type must be one of {BALL_BEARING_KINDS}, got {self.kind!r}")
         if not isinstance(self.ball_count, int) or isinstance(self.ball_count, bool) or self.ball_count < 3:
@@ -177,9 +182,21 @@ def groove_curvature_centre_distance(bearing: BallBearing):
 
 
 def radial_clearance(bearing: BallBearing):
-    """Diametral radial clearance G_r = 2 B D_w (1 − cos α₀) [m] (Harris & Kotzalas vol. 1, ch. 2;
-    docs/theory.md §Groove geometry and clearance)."""
-    return 2.0 * groove_curvature_centre_distance(bearing) * (1.0 - jnp.cos(bearing.free_contact_angle))
+    """Diametral radial clearance G_r = 2 B D_w (1 − cos α₀) − ι [m] (Harris & Kotzalas vol. 1, ch. 2;
+    docs/theory.md §Groove geometry and clearance); negative for a bearing with interference ι."""
+    return 2.0 * groove_curvature_centre_distance(bearing) * (1.0 - jnp.cos(bearing.free_contact_angle)) \
+        - bearing.interference
+
+
+def contact_angle_and_interference(clearance, distance):
+    """(α₀ [rad], ι [m]) of a diametral clearance G_r [m] with groove centre distance B D_w [m]:
+    cos α₀ = 1 − G_r/(2 B D_w) for G_r ≥ 0; α₀ = 0 and ι = −G_r for a negative one. The arccos is
+    taken of a harmless stand-in where G_r ≤ 0 (double `where`), so that its infinite slope at
+    G_r = 0 leaves no NaN in the derivative of a preloaded bearing."""
+    opened = clearance > 0.0
+    safe = jnp.where(opened, clearance, distance)
+    return (jnp.where(opened, jnp.arccos(1.0 - safe / (2.0 * distance)), 0.0),
+            jnp.where(opened, 0.0, -clearance))
 
 
 def ball_bearing(
@@ -221,15 +238,17 @@ def ball_bearing(
         check_range("bearing.inner_groove_ratio", fi, low=0.5, high=1.0, high_open=False)
         check_range("bearing.outer_groove_ratio", fo, low=0.5, high=1.0, high_open=False)
         distance = (fi + fo - 1.0) * ball_diameter
-        if _is_concrete(distance):
-            check_range("bearing.radial_clearance", radial_clearance, low=0.0, high=2.0 * float(distance),
-                        low_open=False, unit=" m", why="2 (f_i + f_o − 1) D_w")
-        contact_angle = jnp.arccos(1.0 - radial_clearance / (2.0 * distance))
+        if _is_concrete(distance, pitch_diameter):
+            check_range("bearing.radial_clearance", radial_clearance, low=-0.01 * float(pitch_diameter),
+                        high=2.0 * float(distance), low_open=False, unit=" m",
+                        why="2 (f_i + f_o − 1) D_w; negative for a preloaded bearing, above −1 % of d_m")
+        contact_angle, interference = contact_angle_and_interference(radial_clearance, distance)
     return BallBearing(
         ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, inner_groove_ratio=fi,
         outer_groove_ratio=fo, free_contact_angle=contact_angle, ball_material=ball_material,
         ring_material=ring_material, ball_count=balls, kind=kind, bore=bore,
         outer_diameter=outer_diameter, dynamic_load_rating=dynamic_load_rating,
+        interference=0.0 if radial_clearance is None else interference,
     )
 
 

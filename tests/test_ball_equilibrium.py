@@ -10,6 +10,8 @@ from diffbearing.ball_equilibrium import (BallModel, ball_results, ring_force, s
 from diffbearing.params import Operating, ball_bearing
 from diffbearing import build_model, load_scene
 
+from .helpers import assert_jvp_matches_central_difference
+
 RPM = np.pi / 30
 SPEED = BallModel(centrifugal=True, gyroscopic=True)
 
@@ -294,3 +296,33 @@ def test_stiffness_derivative_matches_central_difference(aero_bearing):
         step = jnp.zeros(2).at[k].set(h)
         central = (value(point + step) - value(point - step)) / (2 * h)
         np.testing.assert_allclose(derivative[k], central, rtol=1e-5)
+
+
+def test_negative_clearance_squeezes_every_ball_by_half_the_interference():
+    """A 6411E with G_r = −10 µm (preloaded): at zero load the ring stays centred and every ball
+    carries K_n(0) (5 µm)^{3/2} (Hertz, both contacts in series at α = 0), to 1e-10; the radial
+    stiffness is positive where a zero-clearance bearing has none; d Q/d G_r against a central
+    difference."""
+    from diffbearing.ball_equilibrium import free_contact_constant
+    from diffbearing.params import radial_clearance
+
+    def preloaded(clearance):
+        return ball_bearing(ball_diameter=26.9875e-3, pitch_diameter=97.5e-3, balls=7, kind="deep_groove_ball",
+                            inner_groove_radius=13.9e-3, outer_groove_radius=14.17e-3, radial_clearance=clearance)
+
+    bearing = preloaded(-10e-6)
+    assert float(bearing.free_contact_angle) == 0.0 and float(radial_clearance(bearing)) == pytest.approx(-10e-6)
+    at_rest = Operating(0.0, 0.0, np.zeros(3), np.zeros(2))
+    solution = solve_equilibrium(bearing, at_rest)
+    assert bool(solution.converged) and float(jnp.max(jnp.abs(solution.displacement))) < 1e-15
+    loads = ball_results(solution.displacement, bearing, at_rest).inner_load
+    expected = float(free_contact_constant(bearing, BallModel())) * (5e-6) ** 1.5
+    np.testing.assert_allclose(loads, expected, rtol=1e-10)  # the solve's Chebyshev table of K(α): 2e-12
+    assert float(stiffness_matrix(solution.displacement, bearing, at_rest)[0, 0]) > 0.0
+
+    def largest_load(clearance):
+        bearing = preloaded(clearance)
+        return jnp.max(ball_results(solve_equilibrium(bearing, at_rest).displacement, bearing, at_rest).inner_load)
+
+    assert_jvp_matches_central_difference(jax.jit(largest_load), jnp.asarray(-10e-6), jnp.asarray(1.0), 1e-8,
+                                          rtol=1e-6)

@@ -371,7 +371,8 @@ ADAPTER = register(Adapter(
         "bearing.outer_groove_ratio": Key("number"),
         "bearing.contact_angle": quantity("angle", "ball bearings: the free contact angle; tapered roller bearings: "
                                                     "the cup angle α_o"),
-        "bearing.radial_clearance": quantity("length", "diametral clearance (ball and roller bearings)"),
+        "bearing.radial_clearance": quantity("length", "diametral clearance (ball and roller bearings); negative: "
+                                                       "preloaded, down to −1 % of d_m"),
         "bearing.dynamic_load_rating": quantity("force"),
         "operating.inner_speed": quantity("angular_speed"),
         "operating.outer_speed": quantity("angular_speed"),

@@ -1,8 +1,6 @@
 """Bearings as mounted (effect `mounting`, [mounting] table): the operating clearance left by the
 fits, the temperatures and the rings' speed (`operating_clearance`), which the equilibrium then
-uses in place of the bearing's own clearance."""
-
-import jax
+uses in place of the bearing's own clearance (negative: a preloaded bearing)."""
 
 from ... import bearing_fits
 from ...operating_clearance import (RING_EXPANSION, SEAT_MATERIALS, Mounting, OperatingClearance,
@@ -67,14 +65,9 @@ def _interference(v, seat: str, diameter: str, from_class):
 
 
 def ball_operating_clearance(own, change: OperatingClearance):
-    """The diametral clearance [m] a ball bearing runs with: its own changed by the mounting;
-    ValueError where the fits and temperatures close it below zero (the ball model takes G_r ≥ 0)."""
-    running = own + change.change
-    if not isinstance(running, jax.core.Tracer) and float(running) < 0.0:  # a sweep's tracers are not checked
-        raise ValueError(f"[mounting]: the operating clearance is {float(running) * 1e6:.3g} µm (the bearing's "
-                         f"{float(own) * 1e6:.3g} µm changed by {float(change.change) * 1e6:.3g} µm): the ball model "
-                         f"takes clearances ≥ 0; loosen the fits or give the bearing more clearance")
-    return running
+    """The diametral clearance [m] a ball bearing runs with: its own changed by the mounting
+    (negative: preloaded, `params.contact_angle_and_interference`)."""
+    return own + change.change
 
 
 def _outputs(change: OperatingClearance, running) -> dict:
