@@ -3,7 +3,8 @@
 A scene is TOML. A quantity is a unit string ("28 mm", "1500 rpm") or a bare SI number. The keys
 a scene may hold are those the adapters declare; an unknown key, a wrong dimension or a missing
 required key raises ValueError naming the dotted key. `validate` returns a copy with every
-quantity in SI.
+quantity in SI. A scene with `[[bearings]]` tables and no `bearing.type` is a shaft on several
+bearings: its type is "shaft" (adapters/shaft.py).
 """
 
 import difflib
