@@ -21,7 +21,6 @@ from .bearing_set import (
     clamped_offset as clamped_offset,
     preload_force as preload_force,
     preload_offset as preload_offset,
-    with_radial_clearance as with_radial_clearance,
 )
 from .cage_dynamics import CageOrbit as CageOrbit, DynamicsSettings as DynamicsSettings, simulate_cage as simulate_cage
 from .cage_forces import CageForces as CageForces, cage_forces as cage_forces, epicyclic_cage_speed as epicyclic_cage_speed
@@ -87,6 +86,7 @@ from .params import (
     ball_cage as ball_cage,
     iso_vg_oil as iso_vg_oil,
     radial_clearance as radial_clearance,
+    with_radial_clearance as with_radial_clearance,
 )
 from .raceway_contact import (
     contact_constants as contact_constants,

@@ -78,7 +78,7 @@ import jax.numpy as jnp
 from . import ball_validity, hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
 from .params import BallBearing, Operating, groove_curvature_centre_distance
-from .newton import implicit_root, minimise_convex, newton
+from .newton import implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from .raceway_contact import (ContactConstantTable, ball_raceway_modulus, contact_constant_table, contact_constants,
                               inner_curvature, outer_curvature, table_constants)
 
@@ -620,12 +620,6 @@ def _ring_solve(residual, start, args):
     return y, (positions, steps.astype(y.dtype))
 
 
-def _least_squares_tangent_solve(linear, rhs):
-    """Solves the linearised exact ring residual for the implicit derivative: its 5×5 Jacobian
-    (`jax.jacfwd` of the linear map) by least squares, finite at a singular stiffness (pseudo-inverse)."""
-    return jnp.linalg.lstsq(jax.jacfwd(linear)(rhs), rhs)[0]
-
-
 class Equilibrium(eqx.Module):
     """Solution of the ring problem: displacement Δ [m, rad] and how it was reached."""
 
@@ -662,7 +656,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     static_y = jax.lax.stop_gradient(static_y)
     args = (bearing, operating, model, table, unknown, weight, load_scale)
     # the exact ring residual defines the implicit derivative
-    y, (positions, steps) = implicit_root(_ring_residual, static_y, args, _ring_solve, _least_squares_tangent_solve,
+    y, (positions, steps) = implicit_root(_ring_residual, static_y, args, _ring_solve, least_squares_tangent_solve,
                                   has_aux=True)
     displacement = _displacement(y, unknown, operating)
     centres = inner_groove_centres(bearing, displacement)
@@ -694,24 +688,12 @@ def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, m
     return jax.jacfwd(ring_force)(displacement, bearing, operating, model, constant_table(bearing, model))
 
 
-def validity_measures(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):
-    """(largest contact approach / D_w, largest |contact angle| [rad]) of the balls at Δ, for
-    `ball_validity.within_model`; without derivatives."""
-    table = constant_table(bearing, model)
-    centres = inner_groove_centres(bearing, displacement)
-    state = ball_state(bearing, operating, centres, equilibrium_positions(displacement, bearing, operating, model, table),
-                       model, table=table)
-    return jax.lax.stop_gradient((
-        ball_validity.largest_approach_ratio(state["inner_approach"], state["outer_approach"], bearing.ball_diameter),
-        ball_validity.largest_contact_angle(state["inner_angle"], state["outer_angle"])))
-
-
 class BallResults(eqx.Module):
     """Per-ball results at a displacement Δ, each (Z,) in SI: azimuth ψ [rad]; per contact (inner,
     outer) the normal load Q [N], contact angle α [rad], Hertz peak pressure [Pa] and semi-axes a, b
     [m] (a across rolling); orbital speed ω_m and spin speed ω_R [rad/s] (`kinematics.ball_speeds`);
     centrifugal force F_c [N] and gyroscopic moment M_g [N·m], None where the model leaves that
-    effect out."""
+    effect out; the contact approaches δ_i, δ_o [m] (negative: open), for `ball_validity`."""
 
     azimuth: jax.Array
     inner_load: jax.Array
@@ -728,6 +710,8 @@ class BallResults(eqx.Module):
     spin_speed: jax.Array
     centrifugal_force: jax.Array | None
     gyroscopic_moment: jax.Array | None
+    inner_approach: jax.Array
+    outer_approach: jax.Array
 
 
 def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()
@@ -747,4 +731,5 @@ def ball_results(displacement, bearing: BallBearing, operating: Operating, model
         state["outer_load"], state["outer_angle"], outer.max_pressure, outer.semi_major_axis, outer.semi_minor_axis,
         state["orbital_speed"], state["spin_speed"],
         state["centrifugal_force"] if model.centrifugal else None,
-        state["gyroscopic_moment"] if model.gyroscopic else None)
+        state["gyroscopic_moment"] if model.gyroscopic else None,
+        state["inner_approach"], state["outer_approach"])

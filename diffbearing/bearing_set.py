@@ -15,17 +15,17 @@ no external load each bearing then carries the axial force it carries alone at �
 preload given as a force P is turned into that offset at standstill (`preload_offset`, the single
 bearing's axial solve), and from there the offset, not the force, is what the set holds: at
 speed or under load the preload force changes. Mounted with fits and temperatures that move the
-bearing's free contact angle from α₀ (as matched) to α₀' (`with_radial_clearance`), the rings stay
+bearing's free contact angle from α₀ (as matched) to α₀' (`params.with_radial_clearance`), the rings stay
 where the set was clamped: the offset in the running bearing's own reference is
 e + (f_i + f_o − 1) D_w (sin α₀ − sin α₀') (`clamped_offset`).
 """
 
-import equinox as eqx
+import dataclasses
+
 import jax.numpy as jnp
 
 from .ball_equilibrium import BallModel, ring_force, solve_equilibrium
-from .params import (BallBearing, Operating, _is_concrete, check_range, contact_angle_and_interference,
-                     groove_curvature_centre_distance)
+from .params import BallBearing, Operating, _is_concrete, check_range, groove_curvature_centre_distance
 from .shaft_equilibrium import BallSupport
 
 ARRANGEMENTS = {"back_to_back": (1, -1), "face_to_face": (-1, 1), "tandem": (1, 1)}
@@ -33,8 +33,7 @@ ARRANGEMENTS = {"back_to_back": (1, -1), "face_to_face": (-1, 1), "tandem": (1, 
 
 def _at_standstill(model: BallModel) -> BallModel:
     """`model` without speed effects (its Hertz options kept)."""
-    return BallModel(race_control=model.race_control, hertz_method=model.hertz_method,
-                     hertz_constants=model.hertz_constants)
+    return dataclasses.replace(model, centrifugal=False, gyroscopic=False)
 
 
 def preload_offset(bearing: BallBearing, preload, model: BallModel = BallModel()):
@@ -66,13 +65,6 @@ def bearing_set(bearing: BallBearing, arrangement: str, *, spacing, offset=0.0, 
     half = 0.5 * jnp.asarray(spacing, dtype=float)
     return tuple(BallSupport(bearing, position=side * half, offset=offset, model=model, orientation=orientation)
                  for side, orientation in zip((-1.0, 1.0), ARRANGEMENTS[arrangement]))
-
-
-def with_radial_clearance(bearing: BallBearing, clearance) -> BallBearing:
-    """The bearing at another diametral clearance G_r [m] (`params.contact_angle_and_interference`:
-    a negative one an interference); differentiable."""
-    angle, interference = contact_angle_and_interference(clearance, groove_curvature_centre_distance(bearing))
-    return eqx.tree_at(lambda b: (b.free_contact_angle, b.interference), bearing, (angle, interference))
 
 
 def clamped_offset(matched: BallBearing, running: BallBearing, offset):

@@ -188,6 +188,12 @@ def dense_tangent_solve(linear, rhs):
     return jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs)
 
 
+def least_squares_tangent_solve(linear, rhs):
+    """x with linear(x) = rhs by least squares on the dense matrix of the linear map: finite where
+    it is singular (a stiffness with a direction nothing resists: the pseudo-inverse)."""
+    return jnp.linalg.lstsq(jax.jacfwd(linear)(rhs), rhs)[0]
+
+
 def implicit_root(residual, guess, args, solve, tangent_solve=dense_tangent_solve, has_aux=False):
     """The root y* of residual(y, args) = 0 that `solve(residual, guess, args)` finds, with its
     implicit derivative dy* = −(∂F/∂y)⁻¹ (∂F/∂args) d args (implicit function theorem; forward and

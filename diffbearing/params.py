@@ -188,6 +188,22 @@ def radial_clearance(bearing: BallBearing):
         - bearing.interference
 
 
+def _check_clearance(clearance, distance, pitch_diameter):
+    if _is_concrete(distance, pitch_diameter):
+        check_range("bearing.radial_clearance", clearance, low=-0.01 * float(pitch_diameter),
+                    high=2.0 * float(distance), low_open=False, unit=" m",
+                    why="2 (f_i + f_o − 1) D_w; negative for a preloaded bearing, above −1 % of d_m")
+
+
+def with_radial_clearance(bearing: BallBearing, clearance) -> BallBearing:
+    """The bearing at another diametral clearance G_r [m] (`contact_angle_and_interference`: a
+    negative one an interference); differentiable. ValueError outside `ball_bearing`'s range."""
+    distance = groove_curvature_centre_distance(bearing)
+    _check_clearance(clearance, distance, bearing.pitch_diameter)
+    angle, interference = contact_angle_and_interference(clearance, distance)
+    return eqx.tree_at(lambda b: (b.free_contact_angle, b.interference), bearing, (angle, interference))
+
+
 def contact_angle_and_interference(clearance, distance):
     """(α₀ [rad], ι [m]) of a diametral clearance G_r [m] with groove centre distance B D_w [m]:
     cos α₀ = 1 − G_r/(2 B D_w) for G_r ≥ 0; α₀ = 0 and ι = −G_r for a negative one. The arccos is
@@ -238,10 +254,7 @@ def ball_bearing(
         check_range("bearing.inner_groove_ratio", fi, low=0.5, high=1.0, high_open=False)
         check_range("bearing.outer_groove_ratio", fo, low=0.5, high=1.0, high_open=False)
         distance = (fi + fo - 1.0) * ball_diameter
-        if _is_concrete(distance, pitch_diameter):
-            check_range("bearing.radial_clearance", radial_clearance, low=-0.01 * float(pitch_diameter),
-                        high=2.0 * float(distance), low_open=False, unit=" m",
-                        why="2 (f_i + f_o − 1) D_w; negative for a preloaded bearing, above −1 % of d_m")
+        _check_clearance(radial_clearance, distance, pitch_diameter)
         contact_angle, interference = contact_angle_and_interference(radial_clearance, distance)
     return BallBearing(
         ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, inner_groove_ratio=fi,

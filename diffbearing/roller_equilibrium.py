@@ -70,7 +70,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from .hertz import line_contact
-from .newton import implicit_root, minimise_convex, newton
+from .newton import implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from .numerics import require_float64, safe_norm
 from .params import _as_float, _is_concrete, check_range
 from .roller_contact import PALMGREN_STEEL_MODULUS
@@ -475,11 +475,6 @@ def _ring_solve(residual, start, args):
     return y, steps.astype(y.dtype)
 
 
-def _least_squares_tangent_solve(linear, rhs):
-    """The linearised ring residual solved by least squares: finite at a singular stiffness."""
-    return jnp.linalg.lstsq(jax.jacfwd(linear)(rhs), rhs)[0]
-
-
 class RollerEquilibrium(eqx.Module):
     """Solution of the ring problem: displacement Δ [m, rad], the force [Fx, Fy, Fz, Mx, My] the
     rollers exert (the applied load; the moments under imposed misalignment), whether it
@@ -512,7 +507,7 @@ def solve_roller_equilibrium(bearing: RollerBearing, raceways: RollerRaceways, o
     setup = lamina_setup(bearing, raceways, model)
     unknown, weight, load_scale = _scales(bearing, raceways, operating, setup)
     args = (bearing, raceways, operating, model, setup, unknown, weight, load_scale)
-    y, steps = implicit_root(_ring_residual, jnp.zeros(5), args, _ring_solve, _least_squares_tangent_solve,
+    y, steps = implicit_root(_ring_residual, jnp.zeros(5), args, _ring_solve, least_squares_tangent_solve,
                              has_aux=True)
     displacement = _displacement(y, args)
     states = roller_states(displacement, bearing, raceways, operating, model, setup)

@@ -41,7 +41,7 @@ import numpy as np
 
 from . import ball_equilibrium, roller_equilibrium
 from .ball_equilibrium import BallModel
-from .newton import implicit_root, minimise_convex, newton
+from .newton import implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from .numerics import require_float64, safe_norm
 from .params import BallBearing, Operating, _as_float, _is_concrete, check_range, groove_curvature_centre_distance
 from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways
@@ -132,8 +132,9 @@ def transfer(position):
     return matrix.at[0, 4].set(position).at[1, 3].set(-position)
 
 
-def _turn(support):
-    """P_k as its diagonal: TURNED for a bearing mounted "−z", else ones."""
+def turned(support):
+    """P_k as its diagonal: TURNED for a bearing mounted "−z", else ones (it turns the bearing's
+    own frame into the shaft's and back)."""
     return TURNED if support.orientation < 0 else np.ones(5)
 
 
@@ -149,7 +150,7 @@ def _centring(support):
 
 def support_displacement(shaft_displacement, support):
     """Δ_k [m, rad]: the bearing's inner-ring displacement in its own frame (module docstring)."""
-    local = _turn(support) * (transfer(support.position) @ shaft_displacement)
+    local = turned(support) * (transfer(support.position) @ shaft_displacement)
     return local.at[2].add(support.offset + _centring(support))
 
 
@@ -171,7 +172,7 @@ def support_force(local_displacement, support, speed, table=None):
 def reaction(shaft_displacement, support, speed, table=None):
     """G(z_k)ᵀ P_k F_k: the load the bearing takes from the shaft, moved to z = 0 [N, N·m]."""
     local = support_force(support_displacement(shaft_displacement, support), support, speed, table)
-    return transfer(support.position).T @ (_turn(support) * local)
+    return transfer(support.position).T @ (turned(support) * local)
 
 
 def _tables(shaft: Shaft):
@@ -251,10 +252,6 @@ def _solve(residual, start, args):
     return y, steps.astype(y.dtype)
 
 
-def _least_squares_tangent_solve(linear, rhs):
-    return jnp.linalg.lstsq(jax.jacfwd(linear)(rhs), rhs)[0]
-
-
 class ShaftEquilibrium(eqx.Module):
     """The shaft in equilibrium: its displacement u at z = 0 [m, rad]; per bearing (tuples in the
     order of `Shaft.supports`) the inner-ring displacement in its own frame [m, rad] and the load
@@ -282,7 +279,7 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     start, static_steps = minimise_convex(_static_energy, jnp.zeros(5), (shaft, unknown, weight, load_scale, None),
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (shaft, unknown, weight, load_scale, tables)
-    y, steps = implicit_root(_residual, jax.lax.stop_gradient(start), args, _solve, _least_squares_tangent_solve,
+    y, steps = implicit_root(_residual, jax.lax.stop_gradient(start), args, _solve, least_squares_tangent_solve,
                              has_aux=True)
     u = unknown * y
     locals_ = tuple(support_displacement(u, support) for support in shaft.supports)

@@ -6,7 +6,8 @@ import numpy as np
 
 from ... import ball_equilibrium, ball_validity, hertz
 from ...kinematics import RACE_CONTROLS
-from ...params import BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance
+from ...params import (BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance,
+                       with_radial_clearance)
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
 from ..formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
@@ -28,11 +29,12 @@ def _bearing(v, built) -> dict:
     bearing = catalogue_bearing(v, ring)
     if built["mounting"] is None:
         return {"bearing": bearing}
-    return {"bearing": catalogue_bearing(v, ring, ball_operating_clearance(radial_clearance(bearing), built["mounting"]))}
+    return {"bearing": with_radial_clearance(bearing, ball_operating_clearance(radial_clearance(bearing),
+                                                                               built["mounting"]))}
 
 
-def catalogue_bearing(v, ring, clearance=None):
-    """The scene's bearing; with `clearance` [m], at that diametral clearance instead of its own."""
+def catalogue_bearing(v, ring):
+    """The scene's bearing as its [bearing] table gives it (SI values), rings of `ring`."""
     return ball_bearing(
         kind=v["bearing.type"],
         ball_diameter=v["bearing.ball_diameter"], pitch_diameter=v["bearing.pitch_diameter"],
@@ -41,8 +43,7 @@ def catalogue_bearing(v, ring, clearance=None):
         outer_groove_ratio=v.get("bearing.outer_groove_ratio"),
         inner_groove_radius=v.get("bearing.inner_groove_radius"),
         outer_groove_radius=v.get("bearing.outer_groove_radius"),
-        contact_angle=v.get("bearing.contact_angle") if clearance is None else None,
-        radial_clearance=v.get("bearing.radial_clearance") if clearance is None else clearance,
+        contact_angle=v.get("bearing.contact_angle"), radial_clearance=v.get("bearing.radial_clearance"),
         ball_material=material(v, "ball_", ring), ring_material=ring,
         bore=v.get("bearing.bore"), outer_diameter=v.get("bearing.outer_diameter"),
         dynamic_load_rating=v.get("bearing.dynamic_load_rating"),

@@ -9,7 +9,8 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ...ball_equilibrium import BallModel, ball_results, validity_measures
+from ... import ball_validity
+from ...ball_equilibrium import ball_results
 from ...bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_force, preload_offset
 from ...params import BALL_BEARING_KINDS, _as_float
 from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
@@ -59,7 +60,7 @@ def _layout(v, built) -> dict:
                                      v["bearing.arrangement"])}
 
 
-def _offsets(bearing, layout: SetLayout, model: BallModel):
+def _offsets(bearing, layout: SetLayout, model):
     """(offset as matched [m], offset in the running bearing's own reference [m] (`clamped_offset`:
     a mounting may have moved its free contact angle), preload at standstill [N])."""
     matched = eqx.tree_at(lambda b: b.free_contact_angle, bearing, layout.assembled_angle)
@@ -91,11 +92,11 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
                 prefix + "balls.orbital_speed": balls.orbital_speed}
         for side in SIDES:
             out |= {f"{prefix}balls.{side}.{field}": getattr(balls, f"{side}_{field}") for field in BALL_FIELDS}
-        measures = validity_measures(local, bearing, operating, model)
-        approach.append(measures[0])
-        angle.append(measures[1])
-    out["set.validity.approach_ratio"] = jnp.max(jnp.stack(approach))
-    out["set.validity.contact_angle"] = jnp.max(jnp.stack(angle))
+        approach.append(ball_validity.largest_approach_ratio(balls.inner_approach, balls.outer_approach,
+                                                             bearing.ball_diameter))
+        angle.append(ball_validity.largest_contact_angle(balls.inner_contact_angle, balls.outer_contact_angle))
+    out["set.validity.approach_ratio"] = jax.lax.stop_gradient(jnp.max(jnp.stack(approach)))
+    out["set.validity.contact_angle"] = jax.lax.stop_gradient(jnp.max(jnp.stack(angle)))
     if settings["effects"].get("stiffness", False) is True:
         out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft)
     return out
@@ -206,8 +207,6 @@ SET_BLOCK = Block(
 
 def _report(result) -> list[str]:
     values = result.values
-    if "set.displacement" not in values:
-        return []
     u = np.asarray(values["set.displacement"])
     layout = result.model.inputs["bearing_set"]
     lines = ["", f"Set: {layout.arrangement.replace('_', '-')} pair, bearing centres {float(layout.spacing) * 1e3:.2f} mm "
@@ -233,8 +232,6 @@ def _report(result) -> list[str]:
 
 
 def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
-    if "set.displacement" not in values:
-        return []
     columns = [("set", ["converged" if flag else "NO" for flag in values["set.converged"]])]
     for number in range(SET_SIZE):
         columns.append((f"Fa{number} [kN]", [format_number(f[2] / 1e3) for f in values[f"set.bearings.{number}.force"]]))

@@ -12,12 +12,13 @@ import jax.numpy as jnp
 import numpy as np
 
 from ... import life
-from ...ball_equilibrium import ball_results, validity_measures
+from ... import ball_validity
+from ...ball_equilibrium import ball_results
 from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
 from ...roller_equilibrium import RollerOperating, roller_results
 from ...roller_geometry import ROLLER_KINDS
-from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, TURNED, BallSupport, RollerSupport, Shaft, ShaftLoads,
-                                  shaft_stiffness, solve_shaft, transfer)
+from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport, Shaft, ShaftLoads,
+                                  shaft_stiffness, solve_shaft, transfer, turned)
 from ..formatting import format_number, stiffness_lines
 from ..registry import Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
 from ..units import to_si
@@ -128,11 +129,14 @@ def _results(support, local, speed):
                           RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed), support.model)
 
 
-def _validity(support, local, speed):
-    """(largest approach / D_w, largest |contact angle|) of a ball bearing; zeros for a roller bearing."""
+def _validity(support, elements):
+    """(largest approach / D_w, largest |contact angle|) of a ball bearing (`ball_validity`), from
+    its results; zeros for a roller bearing."""
     if isinstance(support, BallSupport):
-        return jnp.stack(validity_measures(local, support.bearing, Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)),
-                                           support.model))
+        return jax.lax.stop_gradient(jnp.stack([
+            ball_validity.largest_approach_ratio(elements.inner_approach, elements.outer_approach,
+                                                 support.bearing.ball_diameter),
+            ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle)]))
     return jnp.zeros(2)
 
 
@@ -149,7 +153,6 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     solution = solve_shaft(shaft)
     per_bearing = [_results(support, local, layout.speed)
                    for support, local in zip(shaft.supports, solution.bearing_displacements)]
-    turns = [TURNED if orientation < 0 else np.ones(5) for orientation in layout.orientations]
     out = {
         "shaft.displacement": solution.displacement,
         "shaft.converged": solution.converged,
@@ -157,13 +160,14 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
         "bearings.displacement": jnp.stack(solution.bearing_displacements),
         "bearings.force": jnp.stack(solution.bearing_forces),
         # the load each bearing takes from the shaft, in the shaft's frame at the bearing
-        "bearings.reaction": jnp.stack([turn * force for turn, force in zip(turns, solution.bearing_forces)]),
+        "bearings.reaction": jnp.stack([turned(support) * force
+                                        for support, force in zip(shaft.supports, solution.bearing_forces)]),
         "bearings.max_element_load": jnp.stack([jnp.max(elements.inner_load) for elements in per_bearing]),
         "bearings.max_pressure": jnp.stack([jnp.maximum(jnp.max(elements.inner_max_pressure),
                                                         jnp.max(elements.outer_max_pressure))
                                             for elements in per_bearing]),
-        "bearings.validity": jnp.stack([_validity(support, local, layout.speed)
-                                        for support, local in zip(shaft.supports, solution.bearing_displacements)]),
+        "bearings.validity": jnp.stack([_validity(support, elements)
+                                        for support, elements in zip(shaft.supports, per_bearing)]),
     }
     if settings["effects"].get("stiffness", False) is True:
         out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at)
