@@ -121,3 +121,16 @@ def test_bad_sets_are_refused(capsys, override, named):
     code = cli.main(["run", "spindle_pair", "--set", override])
     err = capsys.readouterr().err
     assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+
+
+@pytest.mark.slow
+def test_preload_offset_is_the_matched_bearings_when_the_fit_closes_the_clearance():
+    """A shaft fit that closes the pair's 37.9 µm clearance below zero (the running bearings carry an
+    interference): the 500 N preload still becomes the offset of the bearings as matched, to 1e-12."""
+    at_rest = ['operating.force=["0 N", "0 N", "0 N"]', 'operating.inner_speed="0 rpm"']
+    plain = run(at_rest)
+    tight = run(at_rest + ["effects.mounting=true", 'mounting.shaft_interference="80 um"'])
+    assert float(tight.values["mounting.operating_clearance"]) < 0.0
+    assert float(tight.values["set.preload_offset"]) == pytest.approx(float(plain.values["set.preload_offset"]),
+                                                                      rel=1e-12)
+    assert bool(tight.values["set.converged"])

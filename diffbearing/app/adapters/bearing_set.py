@@ -12,7 +12,7 @@ import numpy as np
 from ... import ball_validity
 from ...ball_equilibrium import ball_results
 from ...bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_force, preload_offset
-from ...params import BALL_BEARING_KINDS, _as_float
+from ...params import BALL_BEARING_KINDS, _as_float, radial_clearance, with_radial_clearance
 from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 from ..formatting import format_number, stiffness_lines, swept_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
@@ -27,11 +27,11 @@ BALL_FIELDS = ("load", "contact_angle", "max_pressure")
 
 class SetLayout(eqx.Module):
     """The set as the scene gives it: arrangement, centre distance of the two bearings [m], preload
-    as a force [N] or an offset [m] (one of them, or neither), and the free contact angle [rad] the
-    bearings were matched at (before any mounting changed it)."""
+    as a force [N] or an offset [m] (one of them, or neither), and the diametral clearance [m] the
+    bearings were matched with (before any mounting changed it)."""
 
     spacing: jax.Array = eqx.field(converter=_as_float)
-    assembled_angle: jax.Array = eqx.field(converter=_as_float)
+    matched_clearance: jax.Array = eqx.field(converter=_as_float)
     preload: jax.Array | None = None
     offset: jax.Array | None = None
     arrangement: str = eqx.field(static=True, default="back_to_back")
@@ -55,15 +55,15 @@ def _layout(v, built) -> dict:
     if v["bearing.arrangement"] == "tandem" and (preload is not None or offset is not None):
         raise ValueError("operating.preload: a tandem pair cannot be preloaded by itself (both bearings face the same "
                          "way); use back_to_back or face_to_face")
-    assembled = catalogue_bearing(v, material(v)).free_contact_angle
-    return {"bearing_set": SetLayout(v["bearing.width"] + v.get("bearing.spacer", 0.0), assembled, preload, offset,
+    matched = radial_clearance(catalogue_bearing(v, material(v)))
+    return {"bearing_set": SetLayout(v["bearing.width"] + v.get("bearing.spacer", 0.0), matched, preload, offset,
                                      v["bearing.arrangement"])}
 
 
 def _offsets(bearing, layout: SetLayout, model):
     """(offset as matched [m], offset in the running bearing's own reference [m] (`clamped_offset`:
     a mounting may have moved its free contact angle), preload at standstill [N])."""
-    matched = eqx.tree_at(lambda b: b.free_contact_angle, bearing, layout.assembled_angle)
+    matched = with_radial_clearance(bearing, layout.matched_clearance)
     if layout.preload is not None:
         offset, preload = preload_offset(matched, layout.preload, model), layout.preload
     else:
