@@ -86,8 +86,19 @@ def test_preloaded_pair_under_axial_load_is_each_bearing_alone(solve, offset, ar
 
 
 def test_preload_force_inverts_preload_offset(offset):
-    """Exact identity: the axial force at the offset `preload_offset` gives for 1000 N is 1000 N."""
+    """Exact identity: the axial force at the offset `preload_offset` gives for 1000 N is 1000 N;
+    d offset / d P (implicit, through the single bearing's solve) against a central difference."""
     assert float(preload_force(ANGULAR, offset)) == pytest.approx(PRELOAD, rel=1e-9)
+    assert_jvp_matches_central_difference(jax.jit(lambda load: preload_offset(ANGULAR, load)), jnp.asarray(PRELOAD),
+                                          jnp.asarray(1.0), 1e-2, rtol=1e-6)
+
+
+def test_system_life_derivative():
+    """d L_sys / d L_k of (Σ L^(−10/9))^(−9/10) against a central difference."""
+    from diffbearing.life import system_life
+
+    assert_jvp_matches_central_difference(system_life, jnp.array([300.0, 7000.0]), jnp.array([1.0, -2.0]), 1e-3,
+                                          rtol=1e-8)
 
 
 def test_preload_is_lost_near_harris_factor(solve, offset):
