@@ -74,6 +74,12 @@ from .operating_clearance import (
     fit_pressure as fit_pressure,
     operating_clearance_change as operating_clearance_change,
 )
+from .overrolling import (
+    OverrollingFrequencies as OverrollingFrequencies,
+    ball_bearing_frequencies as ball_bearing_frequencies,
+    nominal_frequencies as nominal_frequencies,
+    roller_bearing_frequencies as roller_bearing_frequencies,
+)
 from .params import (
     BEARING_STEEL as BEARING_STEEL,
     SILICON_NITRIDE as SILICON_NITRIDE,

@@ -1,0 +1,106 @@
+"""Overrolling frequencies (effect `frequencies`): cage, ball or roller pass over the outer and inner
+raceways and element spin at the operating contact angles (`diffbearing.overrolling`), in Hz and per
+revolution; for ball bearings beside the textbook values at the nominal contact angle (0 for a deep-groove
+bearing, the free contact angle α0 for an angular-contact one)."""
+
+import functools
+
+from ... import overrolling, roller_equilibrium
+from ...params import BALL_BEARING_KINDS
+from ...roller_geometry import ROLLER_KINDS, roller_diameter
+from ..registry import Adapter, Block, Key, Output, register
+from .ball import ball_model
+from .roller_bearing import WHOLE_BEARING
+
+FIELDS = (("cage", "cage FTF", "cage (fundamental train) frequency FTF"),
+          ("ball_pass_outer", "ball pass, outer raceway BPFO", "ball (roller) pass frequency, outer raceway BPFO"),
+          ("ball_pass_inner", "ball pass, inner raceway BPFI", "ball (roller) pass frequency, inner raceway BPFI"),
+          ("ball_spin", "ball spin BSF", "ball (roller) spin frequency BSF, rolling relative to the cage"))
+
+
+def _keyed(frequencies: overrolling.OverrollingFrequencies, prefix: str) -> dict:
+    return {f"{prefix}.{field}": getattr(frequencies, field) for field, _, _ in FIELDS}
+
+
+def _ball_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    at_speeds = functools.partial(overrolling.ball_bearing_frequencies, ball_count=bearing.ball_count,
+                                  ball_diameter=bearing.ball_diameter, pitch_diameter=bearing.pitch_diameter,
+                                  contact_angle_inner=results["balls.inner.contact_angle"],
+                                  contact_angle_outer=results["balls.outer.contact_angle"],
+                                  inner_load=results["balls.inner.load"], race_control=ball_model(settings).race_control)
+    nominal_angle = 0.0 if bearing.kind == "deep_groove_ball" else bearing.free_contact_angle
+    nominal = overrolling.nominal_frequencies(operating.inner_speed, operating.outer_speed, bearing.ball_count,
+                                              bearing.ball_diameter, bearing.pitch_diameter, nominal_angle)
+    return (_keyed(at_speeds(operating.inner_speed, operating.outer_speed), "frequencies")
+            | _keyed(overrolling.per_revolution(at_speeds, operating.inner_speed, operating.outer_speed),
+                     "frequencies.orders")
+            | _keyed(nominal, "frequencies.nominal"))
+
+
+def _roller_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, raceways, operating = inputs["bearing"], inputs["raceways"], inputs["operating"]
+    angles = roller_equilibrium.directions(bearing, raceways)
+    at_speeds = functools.partial(overrolling.roller_bearing_frequencies, roller_count=bearing.roller_count,
+                                  roller_diameter=roller_diameter(bearing, 0.0), pitch_diameter=raceways.pitch_diameter,
+                                  cone_angle=angles.cone_angle, cup_angle=angles.cup_angle)
+    return (_keyed(at_speeds(operating.inner_speed, operating.outer_speed), "frequencies")
+            | _keyed(overrolling.per_revolution(at_speeds, operating.inner_speed, operating.outer_speed),
+                     "frequencies.orders"))
+
+
+def _outputs(nominal: bool) -> tuple[Output, ...]:
+    outputs = [Output(f"frequencies.{field}", "Hz", "Hz", text, in_report=False) for field, _, text in FIELDS]
+    outputs += [Output(f"frequencies.orders.{field}", "", "", f"{text}, per revolution of the inner ring relative "
+                                                                "to the outer", in_report=False) for field, _, text in FIELDS]
+    if nominal:
+        outputs += [Output(f"frequencies.nominal.{field}", "Hz", "Hz", f"{text}, textbook closed form at the "
+                                                                        "nominal angle (deep groove 0, else α0)", in_report=False)
+                    for field, _, text in FIELDS]
+    return tuple(outputs)
+
+
+def _report(result) -> list[str]:
+    values = result.values
+    nominal = "frequencies.nominal.cage" in values
+    title = "Overrolling frequencies at the operating contact angles"
+    if nominal:
+        angle = "0°" if result.model.inputs["bearing"].kind == "deep_groove_ball" else "the free contact angle α0"
+        title += f" (nominal: textbook, at {angle})"
+    lines = ["", title, f"  {'':<40}{'[Hz]':>12}{'[per rev]':>12}"
+             + (f"{'nominal [Hz]':>14}{'difference':>12}" if nominal else "")]
+    for field, label, _ in FIELDS:
+        value, order = float(values[f"frequencies.{field}"]), float(values[f"frequencies.orders.{field}"])
+        line = f"  {label:<40}{value:>12.4f}{order:>12.5f}"
+        if nominal:
+            reference = float(values[f"frequencies.nominal.{field}"])
+            difference = f"{(value - reference) / reference * 100:+.3f} %" if reference else "–"
+            line += f"{reference:>14.4f}{difference:>12}"
+        lines.append(line)
+    return lines
+
+
+ADAPTER = register(Adapter(
+    name="frequencies",
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    keys={"effects.frequencies": Key("boolean", doc="overrolling frequencies FTF, BPFO, BPFI, BSF")},
+    blocks=(Block(
+        name="frequencies",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("frequencies", True),
+        requires=("equilibrium",),
+        inputs=("bearing", "operating"),
+        outputs=_outputs(nominal=True),
+        compute=_ball_frequencies,
+    ), Block(
+        name="roller_frequencies",
+        bearing_types=ROLLER_KINDS,
+        enabled_by=("frequencies", True),
+        requires=(),
+        inputs=("bearing", "raceways", "operating"),
+        outputs=_outputs(nominal=False),
+        compute=_roller_frequencies,
+        scene_keys=WHOLE_BEARING,
+    )),
+    report=_report,
+))
