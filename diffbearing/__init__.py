@@ -67,6 +67,7 @@ from .load_distribution import (
     sjovall_integrals as sjovall_integrals,
     stribeck_max_ball_load as stribeck_max_ball_load,
 )
+from .minimum_load import minimum_load as minimum_load
 from .newton import implicit_root as implicit_root, minimise_convex as minimise_convex, newton as newton
 from .operating_clearance import (
     Mounting as Mounting,
@@ -132,6 +133,13 @@ from .shaft_equilibrium import (
     shaft_force as shaft_force,
     shaft_stiffness as shaft_stiffness,
     solve_shaft as solve_shaft,
+)
+from .static_safety import (
+    ball_equivalent_static_load as ball_equivalent_static_load,
+    ball_static_load_rating as ball_static_load_rating,
+    pressure_safety as pressure_safety,
+    roller_equivalent_static_load as roller_equivalent_static_load,
+    roller_static_load_rating as roller_static_load_rating,
 )
 from .app.model import build_model as build_model, run_model as run_model
 from .app.scene import examples as examples, load_scene as load_scene

@@ -20,4 +20,6 @@ torque), touching its physics module, its adapter and nothing else (plus tests a
 4. Regenerate the key and output reference: `python -m diffbearing.app.reference > docs/reference.md`.
 """
 
-from . import materials, lubricant, mounting, ball, bearing_set, shaft, life, roller, roller_bearing, film, cage, frequencies  # noqa: F401  (each registers its adapter)
+from . import (  # noqa: F401  (each registers its adapter)
+    materials, lubricant, mounting, ball, bearing_set, shaft, life, roller, roller_bearing, film, cage, frequencies, safety,
+)

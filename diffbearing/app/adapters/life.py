@@ -38,13 +38,20 @@ def ball_bearing_life(bearing, inner_loads, outer_loads):
     return life.reference_rating_life(bearing, ball_load_rating(bearing), inner_loads, outer_loads)
 
 
+def roller_load_ratings(bearing, raceways, given_rating=None):
+    """(C_r used [N], C_r by ISO 281 [N]) of a whole roller bearing: the scene's, else ISO 281's."""
+    diameter = 0.5 * (bearing.small_diameter + bearing.large_diameter)
+    computed = roller_life.roller_dynamic_load_rating(bearing.roller_count, diameter, bearing.length,
+                                                      raceways.cup_angle, raceways.pitch_diameter)
+    return (computed if given_rating is None else given_rating), computed
+
+
 def roller_bearing_life(bearing, raceways, inner_lamina_load, outer_lamina_load, given_rating=None):
     """(C_r used [N], C_r by ISO 281 [N], ISO/TS 16281 L10r [10⁶ rev]) of a whole roller bearing from
     its lamina loads per unit length (rollers × laminae) [N/m]."""
     count, diameter = bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter)
     angle, pitch = raceways.cup_angle, raceways.pitch_diameter
-    computed = roller_life.roller_dynamic_load_rating(count, diameter, bearing.length, angle, pitch)
-    rating = computed if given_rating is None else given_rating
+    rating, computed = roller_load_ratings(bearing, raceways, given_rating)
     width = bearing.length / inner_lamina_load.shape[-1]
     return rating, computed, roller_life.roller_reference_rating_life(rating, count, diameter, angle, pitch,
                                                                       inner_lamina_load * width,

@@ -1,0 +1,110 @@
+"""Static safety and minimum load (effect `safety`): ISO 76 C₀, P₀ and s₀ = C₀/P₀ beside the safety
+of the largest computed contact pressure against ISO 76's permissible stress
+(`diffbearing.static_safety`), and the requisite minimum load (`diffbearing.minimum_load`) as a
+warning for a turning bearing."""
+
+import jax.numpy as jnp
+
+from ... import life, roller_life, static_safety
+from ...minimum_load import minimum_load
+from ...params import BALL_BEARING_KINDS
+from ...roller_geometry import ROLLER_KINDS
+from ..registry import Adapter, Block, Key, Output, register
+from .life import ball_load_rating, roller_load_ratings
+from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+
+
+def _outputs(exponent: str, minimum: str) -> tuple[Output, ...]:
+    return (
+        Output("safety.static_load_rating", "N", "kN", "ISO 76 static load rating C0"),
+        Output("safety.equivalent_static_load", "N", "kN", "ISO 76 equivalent static load P0"),
+        Output("safety.iso76", "", "", "ISO 76 static safety s0 = C0/P0"),
+        Output("safety.max_pressure", "Pa", "GPa", "largest contact pressure p_max"),
+        Output("safety.pressure_limit", "Pa", "GPa", "ISO 76 permissible pressure p_limit"),
+        Output("safety.static", "", "", f"static safety (p_limit/p_max)^{exponent}"),
+        Output("safety.equivalent_load", "N", "kN", "ISO 281 equivalent dynamic load P", in_report=False),
+        Output("safety.minimum_load", "N", "kN", f"requisite minimum load P_min = {minimum} C_r"),
+        Output("safety.speed", "rad/s", "rpm", "relative ring speed (for the minimum-load check)", in_report=False),
+    )
+
+
+def _speed(operating):
+    return jnp.abs(operating.inner_speed - operating.outer_speed)
+
+
+def _ball_safety(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    angle = life.nominal_contact_angle(bearing)
+    force = results["force"][:3]
+    rating = static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
+                                                   angle)
+    load = static_safety.ball_equivalent_static_load(force, angle, radial_contact=bearing.kind == "deep_groove_ball")
+    pressure = jnp.maximum(jnp.max(results["balls.inner.max_pressure"]), jnp.max(results["balls.outer.max_pressure"]))
+    return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
+            "safety.max_pressure": pressure, "safety.pressure_limit": static_safety.BALL_PRESSURE_LIMIT,
+            "safety.static": static_safety.pressure_safety(pressure, static_safety.BALL_PRESSURE_LIMIT,
+                                                           static_safety.POINT_CONTACT_EXPONENT),
+            "safety.equivalent_load": life.equivalent_dynamic_load(bearing, force),
+            "safety.minimum_load": minimum_load(ball_load_rating(bearing), "ball"),
+            "safety.speed": _speed(operating)}
+
+
+def _roller_safety(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, raceways, operating = inputs["bearing"], inputs["raceways"], inputs["operating"]
+    angle, force = raceways.cup_angle, results["force"][:3]
+    diameter = 0.5 * (bearing.small_diameter + bearing.large_diameter)
+    rating = static_safety.roller_static_load_rating(bearing.roller_count, diameter, bearing.length,
+                                                     raceways.pitch_diameter, angle)
+    load = static_safety.roller_equivalent_static_load(force, angle)
+    pressure = jnp.maximum(jnp.max(results["rollers.inner.max_pressure"]), jnp.max(results["rollers.outer.max_pressure"]))
+    dynamic_rating, _ = roller_load_ratings(bearing, raceways, inputs["load_rating"])
+    return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
+            "safety.max_pressure": pressure, "safety.pressure_limit": static_safety.ROLLER_PRESSURE_LIMIT,
+            "safety.static": static_safety.pressure_safety(pressure, static_safety.ROLLER_PRESSURE_LIMIT,
+                                                           static_safety.LINE_CONTACT_EXPONENT),
+            "safety.equivalent_load": roller_life.roller_equivalent_dynamic_load(force, angle),
+            "safety.minimum_load": minimum_load(dynamic_rating, "roller"),
+            "safety.speed": _speed(operating)}
+
+
+def _checks(values: dict) -> tuple[list[str], list[str]]:
+    """Warnings: a static safety below 1, and a turning bearing loaded below its minimum load."""
+    warnings = []
+    for key, name in (("safety.iso76", "ISO 76 static safety s0 = C0/P0"),
+                      ("safety.static", "static safety from the contact pressure")):
+        if float(values[key]) < 1.0:
+            warnings.append(f"{name} is {float(values[key]):.3g}, below 1: the load passes the static rating "
+                            "(permanent deformation beyond 1e-4 Dw)")
+    load, minimum = float(values["safety.equivalent_load"]), float(values["safety.minimum_load"])
+    if float(values["safety.speed"]) > 0.0 and load < minimum:
+        warnings.append(f"equivalent load {load / 1e3:.3g} kN is below the minimum load {minimum / 1e3:.3g} kN "
+                        "(0.01 C_r for ball, 0.02 C_r for roller bearings): the rolling elements may skid at speed")
+    return [], warnings
+
+
+ADAPTER = register(Adapter(
+    name="safety",
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    keys={"effects.safety": Key("boolean", doc="ISO 76 static load rating and safety, static safety from the "
+                                                "contact pressure, minimum-load check")},
+    blocks=(Block(
+        name="safety",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("safety", True),
+        requires=("equilibrium",),
+        inputs=("bearing", "operating"),
+        outputs=_outputs("3", "0.01"),
+        compute=_ball_safety,
+        checks=_checks,
+    ), Block(
+        name="roller_safety",
+        bearing_types=ROLLER_KINDS,
+        enabled_by=("safety", True),
+        requires=(EQUILIBRIUM_BLOCK,),
+        inputs=("bearing", "raceways", "operating", "load_rating"),
+        outputs=_outputs("2", "0.02"),
+        compute=_roller_safety,
+        checks=_checks,
+        scene_keys=WHOLE_BEARING,
+    )),
+))
