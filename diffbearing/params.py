@@ -110,6 +110,9 @@ def wooster_pressure_viscosity(viscosity):
 
 ISO_VG_GRADES = (32, 46, 68, 100, 150, 220)
 MINERAL_OIL_DENSITY = 870.0  # kg/m³ at 40 °C, typical paraffinic mineral oil
+# Kinematic viscosity at 100 °C [mm²/s] of typical paraffinic mineral oils of each grade, viscosity
+# index about 100 (suppliers' data sheets of hydraulic and gear oils); ISO 3448 fixes only ν₄₀.
+ISO_VG_VISCOSITY_100 = {32: 5.4, 46: 6.7, 68: 8.6, 100: 11.1, 150: 14.7, 220: 19.0}
 
 
 def iso_vg_oil(grade: int) -> Lubricant:

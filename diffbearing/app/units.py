@@ -17,6 +17,7 @@ SI_UNITS = {
     "angular_speed": "rad/s",
     "pressure": "Pa",
     "viscosity": "Pa*s",
+    "kinematic_viscosity": "m^2/s",
     "density": "kg/m^3",
     "inverse_pressure": "1/Pa",
     "stiffness": "N/m",

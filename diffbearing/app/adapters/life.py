@@ -4,8 +4,8 @@ laminae)."""
 
 import jax.numpy as jnp
 
-from ... import life, roller_life
-from ...params import BALL_BEARING_KINDS
+from ... import life, life_modification, roller_life, static_safety
+from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import column
 from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
@@ -86,6 +86,107 @@ def _load_rating(v, built) -> dict:
     return {"load_rating": v.get("bearing.dynamic_load_rating")}
 
 
+# --- modified life a_ISO (ISO 281 §9.3) ----------------------------------------------------------
+
+MODIFIED = ("lubricant.cleanliness",)  # the scene key that asks for a_ISO (with effects.life)
+SUPPLIES = tuple(life_modification.CONTAMINATION_CONSTANTS)
+CLEANLINESS = tuple(dict.fromkeys(level for table in life_modification.CONTAMINATION_CONSTANTS.values()
+                                  for level in table)) + ("custom",)
+
+
+def _contamination(v, built) -> dict:
+    """The e_C of the scene: (c₁, c₂) of ISO 281 Annex A for the supply and cleanliness, or a given factor."""
+    level = v["lubricant.cleanliness"]
+    if level == "custom":
+        if "lubricant.contamination_factor" not in v:
+            raise ValueError("lubricant.cleanliness = \"custom\" needs lubricant.contamination_factor (e_C, 0 to 1)")
+        check_range("lubricant.contamination_factor", v["lubricant.contamination_factor"], low=0.0, high=1.0,
+                    low_open=False, high_open=False)
+        return {"contamination": {"factor": v["lubricant.contamination_factor"]}}
+    if "lubricant.contamination_factor" in v:
+        raise ValueError("lubricant.contamination_factor is read only with lubricant.cleanliness = \"custom\"")
+    tables = life_modification.CONTAMINATION_CONSTANTS
+    default = "grease" if level in tables["grease"] else None
+    supply = v.get("lubricant.supply", default)
+    if supply is None:
+        raise ValueError(f"lubricant.supply: the oil cleanliness {level} needs the supply, one of "
+                         f"{', '.join(s for s in SUPPLIES if s != 'grease')}")
+    if level not in tables[supply]:
+        raise ValueError(f"lubricant.cleanliness: with lubricant.supply = {supply!r} one of "
+                         f"{', '.join(tables[supply])} or custom, got {level!r}")
+    return {"contamination": {"constants": tables[supply][level]}}
+
+
+def _fatigue_load_limit(v, built) -> dict:
+    return {"fatigue_load_limit": v.get("bearing.fatigue_load_limit")}
+
+
+def _modified(rolling_element, pitch, static_rating, rating, load, reference_life, inputs, operating) -> dict:
+    """κ, e_C, C_u, a_ISO and the modified lives of ISO 281 §9.3 (L10m) and ISO/TS 16281 (L10rm,
+    a_ISO at the reference equivalent load P_ref = C_r L10r^(−1/p))."""
+    lubricant = inputs["lubricant"]
+    viscosity = lubricant.viscosity / lubricant.density
+    reference = life_modification.reference_viscosity(operating.inner_speed - operating.outer_speed, pitch)
+    kappa = viscosity / reference
+    contamination = inputs["contamination"]
+    factor = (contamination["factor"] if "factor" in contamination
+              else life_modification.contamination_factor(kappa, pitch, contamination["constants"]))
+    given = inputs["fatigue_load_limit"]
+    limit = life_modification.fatigue_load_limit(static_rating, pitch, rolling_element) if given is None else given
+    exponent = 3.0 if rolling_element == "ball" else 10.0 / 3.0
+    reference_load = rating * reference_life ** (-1.0 / exponent)
+    a_iso = life_modification.life_modification_factor(kappa, factor * limit / load, rolling_element)
+    a_reference = life_modification.life_modification_factor(kappa, factor * limit / reference_load, rolling_element)
+    return {"life.kinematic_viscosity": viscosity, "life.reference_viscosity": reference, "life.viscosity_ratio": kappa,
+            "life.contamination_factor": factor, "life.fatigue_load_limit": limit, "life.a_iso": a_iso,
+            "life.L10m": a_iso * (rating / load) ** exponent, "life.reference_equivalent_load": reference_load,
+            "life.a_iso_reference": a_reference, "life.L10rm": a_reference * reference_life}
+
+
+def _ball_modified(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing = inputs["bearing"]
+    angle = life.nominal_contact_angle(bearing)
+    static_rating = static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter,
+                                                          bearing.pitch_diameter, angle)
+    return _modified("ball", bearing.pitch_diameter, static_rating, results["life.basic_dynamic_load_rating"],
+                     results["life.equivalent_load"], results["life.L10r"], inputs, inputs["operating"])
+
+
+def _roller_modified(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, raceways = inputs["bearing"], inputs["raceways"]
+    static_rating = static_safety.roller_static_load_rating(
+        bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter), bearing.length,
+        raceways.pitch_diameter, raceways.cup_angle)
+    return _modified("roller", raceways.pitch_diameter, static_rating, results["life.basic_dynamic_load_rating"],
+                     results["life.equivalent_load"], results["life.L10r"], inputs, inputs["operating"])
+
+
+def _modified_checks(values: dict) -> tuple[list[str], list[str]]:
+    warnings = []
+    kappa = float(values["life.viscosity_ratio"])
+    if kappa < life_modification.KAPPA_RANGE[0]:
+        warnings.append(f"viscosity ratio κ = {kappa:.3g} is below 0.1, outside ISO 281's a_ISO: a_ISO is taken at "
+                        "κ = 0.1")
+    if float(values["life.a_iso"]) >= life_modification.A_ISO_CAP:
+        warnings.append("a_ISO reaches ISO 281's cap of 50 (load at or below the fatigue load limit)")
+    return [], warnings
+
+
+_MODIFIED_OUTPUTS = (
+    Output("life.kinematic_viscosity", "m^2/s", "mm^2/s", "kinematic viscosity ν at the operating temperature"),
+    Output("life.reference_viscosity", "m^2/s", "mm^2/s", "rated viscosity ν1 (ISO 281 eqs. 28–29)"),
+    Output("life.viscosity_ratio", "", "", "viscosity ratio κ = ν/ν1"),
+    Output("life.contamination_factor", "", "", "contamination factor e_C (ISO 281 Annex A)"),
+    Output("life.fatigue_load_limit", "N", "kN", "fatigue load limit C_u (the scene's, else Annex B)"),
+    Output("life.a_iso", "", "", "life modification factor a_ISO at P"),
+    Output("life.L10m", "1e6 rev", "1e6 rev", "modified rating life L10m = a_ISO L10"),
+    Output("life.reference_equivalent_load", "N", "kN", "P_ref = C_r L10r^(−1/p) of the load distribution",
+           in_report=False),
+    Output("life.a_iso_reference", "", "", "a_ISO at P_ref (ISO/TS 16281)"),
+    Output("life.L10rm", "1e6 rev", "1e6 rev", "modified reference life L10rm = a_ISO(P_ref) L10r"),
+)
+
+
 def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
     key = "life.L10r" if "life.L10r" in values else "set.L10r"
     return [column("L10r [1e6 rev]", values[key])]
@@ -103,8 +204,18 @@ ADAPTER = register(Adapter(
     name="life",
     bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
     keys={"effects.life": Key("boolean"),
-          "bearing.dynamic_load_rating": quantity("force", "basic dynamic load rating C_r (else ISO 281 from the geometry)")},
-    inputs=(InputBuilder(("load_rating",), ROLLER_KINDS, _load_rating, scene_keys=WHOLE_BEARING),),
+          "bearing.dynamic_load_rating": quantity("force", "basic dynamic load rating C_r (else ISO 281 from the geometry)"),
+          "bearing.fatigue_load_limit": quantity("force", "fatigue load limit C_u (else ISO 281 Annex B from C0)"),
+          "lubricant.cleanliness": Key("choice", choices=CLEANLINESS,
+                                       doc="ISO 281 Annex A cleanliness: an ISO 4406 code for oil, a level for "
+                                           "grease, or custom (then lubricant.contamination_factor); with "
+                                           "effects.life, a_ISO and the modified lives"),
+          "lubricant.supply": Key("choice", choices=SUPPLIES, doc="circulating oil with filters, oil bath, or grease "
+                                                                  "(the e_C table of ISO 281 Annex A)"),
+          "lubricant.contamination_factor": Key("number", doc="e_C given directly (lubricant.cleanliness = custom)")},
+    inputs=(InputBuilder(("load_rating",), ROLLER_KINDS, _load_rating, scene_keys=WHOLE_BEARING),
+            InputBuilder(("contamination",), BALL_BEARING_KINDS + ROLLER_KINDS, _contamination, scene_keys=MODIFIED),
+            InputBuilder(("fatigue_load_limit",), BALL_BEARING_KINDS + ROLLER_KINDS, _fatigue_load_limit)),
     blocks=(Block(
         name="life",
         bearing_types=BALL_BEARING_KINDS,
@@ -142,6 +253,26 @@ ADAPTER = register(Adapter(
         ),
         compute=_set_life,
         scene_keys=SET,
+    ), Block(
+        name="modified_life",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("life", True),
+        requires=("life",),
+        inputs=("bearing", "operating", "lubricant", "contamination", "fatigue_load_limit"),
+        outputs=_MODIFIED_OUTPUTS,
+        compute=_ball_modified,
+        checks=_modified_checks,
+        scene_keys=MODIFIED,
+    ), Block(
+        name="roller_modified_life",
+        bearing_types=ROLLER_KINDS,
+        enabled_by=("life", True),
+        requires=("roller_life",),
+        inputs=("bearing", "raceways", "operating", "lubricant", "contamination", "fatigue_load_limit"),
+        outputs=_MODIFIED_OUTPUTS,
+        compute=_roller_modified,
+        checks=_modified_checks,
+        scene_keys=WHOLE_BEARING + MODIFIED,
     )),
     sweep_columns=_sweep_columns,
 ))
