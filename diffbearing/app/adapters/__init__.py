@@ -22,4 +22,5 @@ torque), touching its physics module, its adapter and nothing else (plus tests a
 
 from . import (  # noqa: F401  (each registers its adapter)
     materials, lubricant, mounting, ball, bearing_set, shaft, life, roller, roller_bearing, film, cage, frequencies, safety,
+    friction,
 )

@@ -1,0 +1,105 @@
+"""Friction torque and power loss (effect friction = "palmgren"): Palmgren's viscous and
+load-dependent moments (`diffbearing.friction_torque`) from the loads the elements carry, the
+lubricant's viscosity at its temperature and the speed."""
+
+import jax.numpy as jnp
+
+from ... import friction_torque, life, static_safety
+from ...life_modification import CONTAMINATION_CONSTANTS
+from ...params import BALL_BEARING_KINDS, check_range
+from ...roller_geometry import ROLLER_KINDS
+from ..registry import Adapter, Block, InputBuilder, Key, Output, register
+from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+
+FRICTION_MODELS = ("palmgren",)
+SUPPLIES = tuple(CONTAMINATION_CONSTANTS)  # the same key as the life adapter's
+DEFAULT_SUPPLY = "oil_bath"
+
+
+def _constants(v, built) -> dict:
+    """f₀ of the bearing's kind and lubrication, or the scene's; the scene's f₁ or None."""
+    f0_grease, f0_oil, _, _ = friction_torque.PALMGREN_CONSTANTS[built["bearing"].kind]
+    supply = v.get("lubricant.supply", DEFAULT_SUPPLY)
+    f0 = v.get("friction.f0", f0_grease if supply == "grease" else f0_oil)
+    check_range("friction.f0", f0, low=0.0, high=100.0, why="Palmgren's f0 of catalogues, about 1 to 15")
+    f1 = v.get("friction.f1")
+    if f1 is not None:
+        check_range("friction.f1", f1, low=0.0, high=0.01, why="Palmgren's f1 of catalogues, about 1e-4 to 1e-3")
+    return {"friction_constants": {"f0": f0, "f1": f1}}
+
+
+def _torques(kind, constants, lubricant, operating, pitch, radial, axial, static_load, static_rating, angle=0.0):
+    speed = operating.inner_speed - operating.outer_speed
+    f1 = constants["f1"]
+    if f1 is None:
+        _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
+        f1 = friction_torque.speed_factor(coefficient, exponent, static_load, static_rating)
+    load = friction_torque.friction_load(kind, radial, axial, angle)
+    viscous = friction_torque.viscous_torque(constants["f0"], lubricant.viscosity / lubricant.density, speed, pitch)
+    loaded = friction_torque.load_torque(f1, load, pitch)
+    return {"friction.f0": jnp.asarray(constants["f0"], float), "friction.f1": jnp.asarray(f1, float),
+            "friction.load": load, "friction.viscous_torque": viscous, "friction.load_torque": loaded,
+            "friction.torque": viscous + loaded, "friction.power": friction_torque.friction_power(viscous + loaded, speed)}
+
+
+def _split(force):
+    return jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
+
+
+def _ball_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing = inputs["bearing"]
+    angle = life.nominal_contact_angle(bearing)
+    force = results["force"][:3]
+    static_rating = static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter,
+                                                          bearing.pitch_diameter, angle)
+    static_load = static_safety.ball_equivalent_static_load(force, angle, radial_contact=bearing.kind == "deep_groove_ball")
+    return _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], inputs["operating"],
+                    bearing.pitch_diameter, *_split(force), static_load, static_rating)
+
+
+def _roller_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, raceways = inputs["bearing"], inputs["raceways"]
+    force = results["force"][:3]
+    return _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], inputs["operating"],
+                    raceways.pitch_diameter, *_split(force), None, None, raceways.cup_angle)
+
+
+OUTPUTS = (
+    Output("friction.torque", "N*m", "N*mm", "friction torque M = M0 + M1 (Palmgren)"),
+    Output("friction.viscous_torque", "N*m", "N*mm", "viscous moment M0"),
+    Output("friction.load_torque", "N*m", "N*mm", "load-dependent moment M1 = f1 P1 dm"),
+    Output("friction.power", "W", "W", "power loss M ω"),
+    Output("friction.f0", "", "", "Palmgren f0 (the scene's, else HR 1's)"),
+    Output("friction.f1", "", "", "Palmgren f1 (the scene's, else HR 1's)"),
+    Output("friction.load", "N", "kN", "load P1 of the moment M1"),
+)
+
+ADAPTER = register(Adapter(
+    name="friction",
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    keys={"effects.friction": Key("choice", choices=FRICTION_MODELS, doc="friction torque and power loss"),
+          "friction.f0": Key("number", doc="Palmgren's f0 of the bearing's series and lubrication (default: HR 1's "
+                                           "62 / 72-B / 2..-E / 302 series)"),
+          "friction.f1": Key("number", doc="Palmgren's f1 (default: HR 1's, a (P0/C0)^b for ball bearings)"),
+          "lubricant.supply": Key("choice", choices=SUPPLIES, doc="circulating oil with filters, oil bath, or grease "
+                                                                  "(the e_C table of ISO 281 Annex A)")},
+    inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),),
+    blocks=(Block(
+        name="friction",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("friction", "palmgren"),
+        requires=("equilibrium",),
+        inputs=("bearing", "operating", "lubricant", "friction_constants"),
+        outputs=OUTPUTS,
+        compute=_ball_friction,
+    ), Block(
+        name="roller_friction",
+        bearing_types=ROLLER_KINDS,
+        enabled_by=("friction", "palmgren"),
+        requires=(EQUILIBRIUM_BLOCK,),
+        inputs=("bearing", "raceways", "operating", "lubricant", "friction_constants"),
+        outputs=OUTPUTS,
+        compute=_roller_friction,
+        scene_keys=WHOLE_BEARING,
+    )),
+))

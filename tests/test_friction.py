@@ -1,0 +1,111 @@
+"""Effect friction = "palmgren": Palmgren's moments in their catalogue units, the default constants
+against the Timken Engineering Manual's table, the power loss against Schaeffler's, the loads P₁ of
+HR 1 through scenes, and derivatives of the torque through the solved bearing."""
+
+import equinox as eqx
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+from diffbearing import build_model, friction_torque, load_scene, run_model, static_safety
+
+from .helpers import assert_jvp_matches_central_difference, example_scene
+
+RPM = np.pi / 30.0
+
+
+@pytest.mark.parametrize("viscosity, rpm", [(20.0, 3000.0), (20.0, 50.0)])
+def test_viscous_moment_in_catalogue_units(viscosity, rpm):
+    """M₀ = 10⁻⁷ f₀ (ν n)^{2/3} d_m³ N·mm for ν n ≥ 2000, 160·10⁻⁷ f₀ d_m³ below (ν mm²/s, n r/min,
+    d_m mm; Schaeffler HR 1, Timken Engineering Manual p. 184): 66.209 N·mm and 6.912 N·mm for f₀ = 2,
+    d_m = 60 mm."""
+    torque = float(friction_torque.viscous_torque(2.0, viscosity * 1e-6, rpm * RPM, 60e-3)) * 1e3
+    product = viscosity * rpm
+    want = 1e-7 * 2.0 * product ** (2 / 3) * 60.0**3 if product >= 2000 else 160e-7 * 2.0 * 60.0**3
+    assert torque == pytest.approx(want, rel=1e-12)
+    assert torque == pytest.approx(66.209 if product >= 2000 else 6.912, abs=1e-3)
+
+
+def test_default_constants_are_timkens_reference_values():
+    """Timken's Table 114 gives f₀ and f₁ at ISO 15312's reference conditions (oil, P₀ = 0.05 C₀):
+    deep groove 02 series f₀ 2, f₁ 0.00020; cylindrical 02 series f₀ 2, f₁ 0.0003 — HR 1's oil-bath
+    f₀ and its f₁ = 0.0009 (P₀/C₀)^0.5 at 0.05, within Timken's rounding (1 %)."""
+    f0_grease, f0_oil, a, b = friction_torque.PALMGREN_CONSTANTS["deep_groove_ball"]
+    assert f0_oil == 2.0 and friction_torque.speed_factor(a, b, 0.05, 1.0) == pytest.approx(0.00020, rel=0.01)
+    _, f0_oil, a, b = friction_torque.PALMGREN_CONSTANTS["cylindrical_roller"]
+    assert f0_oil == 2.0 and friction_torque.speed_factor(a, b, 0.05, 1.0) == pytest.approx(0.0003, rel=1e-12)
+
+
+def test_power_is_schaeffers():
+    """N = M ω equals HR 1's N_R = M_R n / 9550 [W, N·mm, r/min] within the rounding of 9550 (1e-4)."""
+    assert float(friction_torque.friction_power(0.1, 3000 * RPM)) == pytest.approx(100.0 * 3000 / 9550, rel=1e-4)
+
+
+BEARING_6208 = """
+title = "6208 friction"
+[bearing]
+type = "deep_groove_ball"
+ball_diameter = "11.906 mm"
+pitch_diameter = "60 mm"
+balls = 9
+inner_groove_ratio = 0.52
+outer_groove_ratio = 0.53
+radial_clearance = "10 um"
+[operating]
+inner_speed = "3000 rpm"
+force = ["2000 N", "0 N", "{axial} N"]
+[lubricant]
+kinematic_viscosity_40 = "20 mm^2/s"
+kinematic_viscosity_100 = "4 mm^2/s"
+temperature = "40 degC"
+{supply}
+[effects]
+friction = "palmgren"
+"""
+
+
+def _model(tmp_path, axial=0.0, supply=""):
+    path = tmp_path / "scene.toml"
+    path.write_text(BEARING_6208.replace("{axial}", repr(axial)).replace("{supply}", supply))
+    return build_model(load_scene(str(path)))
+
+
+@pytest.mark.parametrize("axial, supply, f0", [(0.0, "", 2.0), (1500.0, 'supply = "grease"', 1.3)])
+def test_torque_of_a_6208(tmp_path, axial, supply, f0):
+    """6208 at 3000 r/min in 20 mm²/s oil: M₀ = 66.209 N·mm (oil bath f₀ = 2; grease 1.3), M₁ = f₁ P₁ d_m
+    with f₁ = 0.0009 (P₀/C₀)^0.5 and P₁ = max(3.3 F_a − 0.1 F_r, F_r) (HR 1)."""
+    values = run_model(_model(tmp_path, axial, supply), progress=False).values
+    assert float(values["friction.f0"]) == f0
+    assert float(values["friction.viscous_torque"]) * 1e3 == pytest.approx(66.209 * f0 / 2.0, rel=1e-4)
+    force = jnp.array([2000.0, 0.0, axial])
+    c0 = static_safety.ball_static_load_rating(9, 11.906e-3, 60e-3, 0.0)
+    p0 = static_safety.ball_equivalent_static_load(force, 0.0, radial_contact=True)
+    f1 = 0.0009 * float(p0 / c0) ** 0.5
+    p1 = max(3.3 * axial - 0.1 * 2000.0, 2000.0)
+    assert float(values["friction.load"]) == pytest.approx(p1, rel=1e-9)
+    assert float(values["friction.load_torque"]) == pytest.approx(f1 * p1 * 0.06, rel=1e-9)
+    assert float(values["friction.power"]) == pytest.approx(float(values["friction.torque"]) * 3000 * RPM, rel=1e-12)
+
+
+def test_torque_derivatives_through_the_solved_bearing(tmp_path):
+    """d M / d(applied force, viscosity) through the ball equilibrium against a central difference,
+    forward and reverse."""
+    model = _model(tmp_path, axial=1500.0)
+    function = model.function()
+
+    def torque(point):
+        inputs = eqx.tree_at(lambda i: (i["operating"].force, i["lubricant"].viscosity), model.inputs, point)
+        return function(inputs)["friction.torque"]
+
+    point = (jnp.array([2000.0, 300.0, 1500.0]), jnp.asarray(model.inputs["lubricant"].viscosity))
+    direction = (jnp.array([100.0, -50.0, 80.0]), 0.1 * point[1])
+    assert_jvp_matches_central_difference(torque, point, direction, 1e-4, rtol=1e-6)
+
+
+def test_cylindrical_roller_bearing_friction():
+    """The cylindrical roller example at 1500 r/min in VG 46 at 60 °C: P₁ = F_r, f₁ = 0.0003 (HR 1, 2..-E)."""
+    values = run_model(build_model(load_scene(example_scene("cylindrical_roller_bearing"), overrides=[
+        "effects.stiffness=false", "effects.life=false", "effects.friction=palmgren", "operating.inner_speed=1500 rpm",
+        "lubricant.preset=iso_vg_46", "lubricant.temperature=60 degC"])), progress=False).values
+    assert float(values["friction.load"]) == pytest.approx(2040.0, rel=1e-9)
+    assert float(values["friction.load_torque"]) == pytest.approx(0.0003 * 2040.0 * 0.1066, rel=1e-9)
