@@ -142,6 +142,11 @@ from .static_safety import (
     roller_static_load_rating as roller_static_load_rating,
 )
 from .app.model import build_model as build_model, run_model as run_model
+from .app.rotor_handoff import (
+    export_stiffness as export_stiffness,
+    stiffness_over_speed as stiffness_over_speed,
+    to_ross as to_ross,
+)
 from .app.scene import examples as examples, load_scene as load_scene
 from .app.sweep import run_sweep as run_sweep
 

@@ -87,6 +87,7 @@ def test_torque_of_a_6208(tmp_path, axial, supply, f0):
     assert float(values["friction.power"]) == pytest.approx(float(values["friction.torque"]) * 3000 * RPM, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_torque_derivatives_through_the_solved_bearing(tmp_path):
     """d M / d(applied force, viscosity) through the ball equilibrium against a central difference,
     forward and reverse."""

@@ -170,6 +170,7 @@ def test_tilt_stiffness_derivative_against_preload_offset(offset, speed, model):
                                           1e-9, rtol=1e-5)
 
 
+@pytest.mark.slow
 def test_displacement_derivative_against_load_and_bearing_position():
     """d u / d (bearing position, load position): the shaft solve's implicit derivative against
     central differences."""
