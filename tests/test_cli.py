@@ -304,3 +304,15 @@ def test_a_solver_that_does_not_converge_exits_3(capsys):
     assert code == 3 and "DID NOT CONVERGE" in out
     assert err.strip() == ("diffbearing: error: the roller contact solution (influence; or its loaded zone reached "
                            "the grid's edge) did not converge (its outputs are the last iterate)")
+
+
+def test_rating_effects_only_when_named():
+    """The default scene names none of safety, frequencies, friction or a cleanliness: none of their
+    blocks is in its model; naming them adds exactly theirs."""
+    rating_blocks = {"safety", "frequencies", "friction", "modified_life"}
+    plain = {block.name for block in build_model(load_scene()).blocks}
+    assert not plain & rating_blocks
+    named = build_model(load_scene(overrides=["effects.safety=true", "effects.frequencies=true",
+                                              "effects.friction=palmgren", "lubricant.preset=iso_vg_68",
+                                              "lubricant.temperature=60 degC", "lubricant.cleanliness=high"]))
+    assert {block.name for block in named.blocks} - plain == rating_blocks
