@@ -25,6 +25,9 @@ checked against the Hertz chain of ISO/TR 10657 in the tests.
 import jax.numpy as jnp
 import numpy as np
 
+from .life import nominal_contact_angle
+from .params import BallBearing
+
 # ISO 76:2006 Table 1, radial and angular-contact groove ball bearings: γ = D_w cos α / D_pw → f₀.
 F0_RATIO = np.round(np.arange(41) * 0.01, 2)
 F0_VALUE = np.array([14.7, 14.9, 15.1, 15.3, 15.5, 15.7, 15.9, 16.1, 16.3, 16.5, 16.4, 16.1, 15.9, 15.6, 15.4,
@@ -54,6 +57,25 @@ def roller_static_load_rating(roller_count, roller_diameter, effective_length, p
     gamma = roller_diameter * jnp.cos(contact_angle) / pitch_diameter
     return (ROLLER_FACTOR * (1.0 - gamma) * rows * roller_count * (effective_length * 1e3) * (roller_diameter * 1e3)
             * jnp.cos(contact_angle))
+
+
+def ball_bearing_static_load_rating(bearing: BallBearing):
+    """C₀r [N] of a single-row ball bearing at its nominal contact angle (0 for deep groove)."""
+    return ball_static_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
+                                   nominal_contact_angle(bearing))
+
+
+def ball_bearing_equivalent_static_load(bearing: BallBearing, force):
+    """P₀r [N] of a single-row ball bearing under [Fx, Fy, Fz] [N] (`ball_equivalent_static_load`)."""
+    return ball_equivalent_static_load(force, nominal_contact_angle(bearing), bearing.kind == "deep_groove_ball")
+
+
+def roller_bearing_static_load_rating(bearing, raceways):
+    """C₀r [N] of a whole roller bearing (`roller_geometry.RollerBearing`, its
+    `roller_equilibrium.RollerRaceways`): the mean roller diameter, the cup angle."""
+    diameter = 0.5 * (bearing.small_diameter + bearing.large_diameter)
+    return roller_static_load_rating(bearing.roller_count, diameter, bearing.length, raceways.pitch_diameter,
+                                     raceways.cup_angle)
 
 
 def _radial_and_axial(force):

@@ -50,6 +50,19 @@ outer_groove_radius = "14.17 mm"
 radial_clearance = "0.028 mm"
 """
 
+# A 6208 deep-groove ball bearing as the catalogues' usual internal geometry (9 balls of 15/32 in,
+# d_m the mean of bore and outside diameter) with ISO 76's groove ratios, as a scene's [bearing]
+# table without its clearance.
+BEARING_6208 = """
+[bearing]
+type = "deep_groove_ball"
+ball_diameter = "11.906 mm"
+pitch_diameter = "60 mm"
+balls = 9
+inner_groove_ratio = 0.52
+outer_groove_ratio = 0.53
+"""
+
 
 def example_scene(name: str) -> str:
     """Filesystem path of the packaged example scene `diffbearing/scenes/<name>.toml`."""

@@ -9,7 +9,7 @@ import pytest
 
 from diffbearing import build_model, friction_torque, load_scene, run_model, static_safety
 
-from .helpers import assert_jvp_matches_central_difference, example_scene
+from .helpers import BEARING_6208, assert_jvp_matches_central_difference, example_scene
 
 RPM = np.pi / 30.0
 
@@ -41,16 +41,7 @@ def test_power_is_schaeffers():
     assert float(friction_torque.friction_power(0.1, 3000 * RPM)) == pytest.approx(100.0 * 3000 / 9550, rel=1e-4)
 
 
-BEARING_6208 = """
-title = "6208 friction"
-[bearing]
-type = "deep_groove_ball"
-ball_diameter = "11.906 mm"
-pitch_diameter = "60 mm"
-balls = 9
-inner_groove_ratio = 0.52
-outer_groove_ratio = 0.53
-radial_clearance = "10 um"
+SCENE = 'title = "6208 friction"' + BEARING_6208 + """radial_clearance = "10 um"
 [operating]
 inner_speed = "3000 rpm"
 force = ["2000 N", "0 N", "{axial} N"]
@@ -66,7 +57,7 @@ friction = "palmgren"
 
 def _model(tmp_path, axial=0.0, supply=""):
     path = tmp_path / "scene.toml"
-    path.write_text(BEARING_6208.replace("{axial}", repr(axial)).replace("{supply}", supply))
+    path.write_text(SCENE.replace("{axial}", repr(axial)).replace("{supply}", supply))
     return build_model(load_scene(str(path)))
 
 

@@ -10,17 +10,10 @@ import pytest
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app.rotor_handoff import export_stiffness, import_ross, stiffness_over_speed
 
+from .helpers import BEARING_6208
+
 RPM = np.pi / 30.0
-BEARING_6208 = """
-title = "6208 on a rotor"
-[bearing]
-type = "deep_groove_ball"
-ball_diameter = "11.906 mm"
-pitch_diameter = "60 mm"
-balls = 9
-inner_groove_ratio = 0.52
-outer_groove_ratio = 0.53
-radial_clearance = "0 um"
+SCENE = 'title = "6208 on a rotor"' + BEARING_6208 + """radial_clearance = "0 um"
 [operating]
 inner_speed = "0 rpm"
 force = ["0 N", "500 N", "200 N"]
@@ -34,7 +27,7 @@ SPEEDS = np.array([0.0, 500.0, 1000.0, 1500.0])  # rad/s
 @pytest.fixture(scope="module")
 def scene(tmp_path_factory):
     path = tmp_path_factory.mktemp("rotor") / "bearing.toml"
-    path.write_text(BEARING_6208)
+    path.write_text(SCENE)
     return load_scene(str(path))
 
 

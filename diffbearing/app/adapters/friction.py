@@ -4,7 +4,7 @@ lubricant's viscosity at its temperature and the speed."""
 
 import jax.numpy as jnp
 
-from ... import friction_torque, life, static_safety
+from ... import friction_torque, static_safety
 from ...life_modification import CONTAMINATION_CONSTANTS
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
@@ -47,21 +47,17 @@ def _split(force):
 
 
 def _ball_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing = inputs["bearing"]
-    angle = life.nominal_contact_angle(bearing)
-    force = results["force"][:3]
-    static_rating = static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter,
-                                                          bearing.pitch_diameter, angle)
-    static_load = static_safety.ball_equivalent_static_load(force, angle, radial_contact=bearing.kind == "deep_groove_ball")
+    bearing, force = inputs["bearing"], results["force"][:3]
     return _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], inputs["operating"],
-                    bearing.pitch_diameter, *_split(force), static_load, static_rating)
+                    bearing.pitch_diameter, *_split(force),
+                    static_safety.ball_bearing_equivalent_static_load(bearing, force),
+                    static_safety.ball_bearing_static_load_rating(bearing))
 
 
 def _roller_friction(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, raceways = inputs["bearing"], inputs["raceways"]
-    force = results["force"][:3]
     return _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], inputs["operating"],
-                    raceways.pitch_diameter, *_split(force), None, None, raceways.cup_angle)
+                    raceways.pitch_diameter, *_split(results["force"][:3]), None, None, raceways.cup_angle)
 
 
 OUTPUTS = (

@@ -145,20 +145,16 @@ def _modified(rolling_element, pitch, static_rating, rating, load, reference_lif
 
 def _ball_modified(inputs: dict, settings: dict, results: dict) -> dict:
     bearing = inputs["bearing"]
-    angle = life.nominal_contact_angle(bearing)
-    static_rating = static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter,
-                                                          bearing.pitch_diameter, angle)
-    return _modified("ball", bearing.pitch_diameter, static_rating, results["life.basic_dynamic_load_rating"],
-                     results["life.equivalent_load"], results["life.L10r"], inputs, inputs["operating"])
+    return _modified("ball", bearing.pitch_diameter, static_safety.ball_bearing_static_load_rating(bearing),
+                     results["life.basic_dynamic_load_rating"], results["life.equivalent_load"], results["life.L10r"],
+                     inputs, inputs["operating"])
 
 
 def _roller_modified(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, raceways = inputs["bearing"], inputs["raceways"]
-    static_rating = static_safety.roller_static_load_rating(
-        bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter), bearing.length,
-        raceways.pitch_diameter, raceways.cup_angle)
-    return _modified("roller", raceways.pitch_diameter, static_rating, results["life.basic_dynamic_load_rating"],
-                     results["life.equivalent_load"], results["life.L10r"], inputs, inputs["operating"])
+    return _modified("roller", raceways.pitch_diameter, static_safety.roller_bearing_static_load_rating(bearing, raceways),
+                     results["life.basic_dynamic_load_rating"], results["life.equivalent_load"], results["life.L10r"],
+                     inputs, inputs["operating"])
 
 
 def _modified_checks(values: dict) -> tuple[list[str], list[str]]:

@@ -28,43 +28,35 @@ def _outputs(exponent: str, minimum: str) -> tuple[Output, ...]:
     )
 
 
-def _speed(operating):
-    return jnp.abs(operating.inner_speed - operating.outer_speed)
+def _safety(rating, load, pressure, limit, exponent, equivalent_load, minimum, operating) -> dict:
+    return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
+            "safety.max_pressure": pressure, "safety.pressure_limit": limit,
+            "safety.static": static_safety.pressure_safety(pressure, limit, exponent),
+            "safety.equivalent_load": equivalent_load, "safety.minimum_load": minimum,
+            "safety.speed": jnp.abs(operating.inner_speed - operating.outer_speed)}
+
+
+def _largest_pressure(results, elements: str):
+    return jnp.maximum(jnp.max(results[f"{elements}.inner.max_pressure"]), jnp.max(results[f"{elements}.outer.max_pressure"]))
 
 
 def _ball_safety(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, operating = inputs["bearing"], inputs["operating"]
-    angle = life.nominal_contact_angle(bearing)
-    force = results["force"][:3]
-    rating = static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
-                                                   angle)
-    load = static_safety.ball_equivalent_static_load(force, angle, radial_contact=bearing.kind == "deep_groove_ball")
-    pressure = jnp.maximum(jnp.max(results["balls.inner.max_pressure"]), jnp.max(results["balls.outer.max_pressure"]))
-    return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
-            "safety.max_pressure": pressure, "safety.pressure_limit": static_safety.BALL_PRESSURE_LIMIT,
-            "safety.static": static_safety.pressure_safety(pressure, static_safety.BALL_PRESSURE_LIMIT,
-                                                           static_safety.POINT_CONTACT_EXPONENT),
-            "safety.equivalent_load": life.equivalent_dynamic_load(bearing, force),
-            "safety.minimum_load": minimum_load(ball_load_rating(bearing), "ball"),
-            "safety.speed": _speed(operating)}
+    bearing, force = inputs["bearing"], results["force"][:3]
+    return _safety(static_safety.ball_bearing_static_load_rating(bearing),
+                   static_safety.ball_bearing_equivalent_static_load(bearing, force), _largest_pressure(results, "balls"),
+                   static_safety.BALL_PRESSURE_LIMIT, static_safety.POINT_CONTACT_EXPONENT,
+                   life.equivalent_dynamic_load(bearing, force), minimum_load(ball_load_rating(bearing), "ball"),
+                   inputs["operating"])
 
 
 def _roller_safety(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, raceways, operating = inputs["bearing"], inputs["raceways"], inputs["operating"]
-    angle, force = raceways.cup_angle, results["force"][:3]
-    diameter = 0.5 * (bearing.small_diameter + bearing.large_diameter)
-    rating = static_safety.roller_static_load_rating(bearing.roller_count, diameter, bearing.length,
-                                                     raceways.pitch_diameter, angle)
-    load = static_safety.roller_equivalent_static_load(force, angle)
-    pressure = jnp.maximum(jnp.max(results["rollers.inner.max_pressure"]), jnp.max(results["rollers.outer.max_pressure"]))
+    bearing, raceways, force = inputs["bearing"], inputs["raceways"], results["force"][:3]
     dynamic_rating, _ = roller_load_ratings(bearing, raceways, inputs["load_rating"])
-    return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
-            "safety.max_pressure": pressure, "safety.pressure_limit": static_safety.ROLLER_PRESSURE_LIMIT,
-            "safety.static": static_safety.pressure_safety(pressure, static_safety.ROLLER_PRESSURE_LIMIT,
-                                                           static_safety.LINE_CONTACT_EXPONENT),
-            "safety.equivalent_load": roller_life.roller_equivalent_dynamic_load(force, angle),
-            "safety.minimum_load": minimum_load(dynamic_rating, "roller"),
-            "safety.speed": _speed(operating)}
+    return _safety(static_safety.roller_bearing_static_load_rating(bearing, raceways),
+                   static_safety.roller_equivalent_static_load(force, raceways.cup_angle),
+                   _largest_pressure(results, "rollers"), static_safety.ROLLER_PRESSURE_LIMIT,
+                   static_safety.LINE_CONTACT_EXPONENT, roller_life.roller_equivalent_dynamic_load(force, raceways.cup_angle),
+                   minimum_load(dynamic_rating, "roller"), inputs["operating"])
 
 
 def _checks(values: dict) -> tuple[list[str], list[str]]:
