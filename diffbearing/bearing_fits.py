@@ -2,13 +2,14 @@
 tolerances (docs/theory.md §Operating clearance).
 
 Seats from 10 to 500 mm (ISO 286-1:2010, nominal size ranges "over a, up to and including b"):
-shafts g, h, js, k, m, n, p and housings G, H, JS, K, M, N, P in grades 5, 6 and 7 (housings 6 and
-7). The standard tolerance grades IT5–IT7 and the shafts' fundamental deviations are ISO 286-1's
+shafts g, h, j, js, k, m, n, p and housings G, H, J, JS, K, M, N, P in grades 5, 6 and 7 (housings 6
+and 7). The standard tolerance grades IT5–IT7 and the shafts' fundamental deviations are ISO 286-1's
 tabulated values (Tables 1 and 2; ISO 286-2 lists the same classes); a hole's deviation follows
 from the shaft's of the same letter by ISO 286-1's rules: G: EI = −es(g); H: EI = 0; JS: ±IT/2;
 K, M, N, P (grades ≤ 7): ES = −ei(k, m, n, p) + Δ, Δ = IT_n − IT_(n−1). The ring's own tolerances
 are the mean-diameter deviations of ISO 492:2014 Normal class: the bore 0 / −t_d, the outside
-0 / −t_D.
+0 / −t_D. The j and J classes, which follow no rule, are ISO 286-2's tabulated deviations (as the
+NSK, NTN and Koyo catalogues print them).
 
 Diametral interference (shaft minus bore, ring outside minus housing bore; negative: a loose
 fit) at the extreme sizes, `"max"` and `"min"`, or `"probable"`: both parts at the middle of
@@ -32,6 +33,10 @@ SHAFT_DEVIATIONS = {  # µm, ISO 286-1 Table 2: es for g and h (upper), ei for k
     "n": (12, 15, 17, 20, 23, 27, 31, 34, 37, 40),
     "p": (18, 22, 26, 32, 37, 43, 50, 56, 62, 68),
 }
+# µm, ISO 286-2: lower deviations ei of j5 and j6 (the same), of j7; upper deviations ES of J6, J7
+J_SHAFT_LOWER = {5: (-3, -4, -5, -7, -9, -11, -13, -16, -18, -20), 6: (-3, -4, -5, -7, -9, -11, -13, -16, -18, -20),
+                 7: (-6, -8, -10, -12, -15, -18, -21, -26, -28, -32)}
+J_HOUSING_UPPER = {6: (6, 8, 10, 13, 16, 18, 22, 25, 29, 33), 7: (10, 12, 14, 18, 22, 26, 30, 36, 39, 43)}
 SHAFT_GRADES, HOUSING_GRADES = (5, 6, 7), (6, 7)
 # ISO 492:2014, Normal tolerance class, lower deviations [µm] of the mean bore diameter (ranges of d
 # as SIZE_LIMITS) and of the mean outside diameter (ranges of D: BORE… below)
@@ -58,11 +63,13 @@ def _class(tolerance: str, grades, letters, name: str) -> tuple[str, int]:
 
 def shaft_deviations(tolerance: str, diameter) -> tuple[float, float]:
     """(ei, es) [m] of a shaft class ("k5", "m6", …) at the nominal diameter [m]."""
-    letter, grade = _class(tolerance, SHAFT_GRADES, ("g", "h", "js", "k", "m", "n", "p"), "mounting.shaft_tolerance")
+    letter, grade = _class(tolerance, SHAFT_GRADES, ("g", "h", "j", "js", "k", "m", "n", "p"), "mounting.shaft_tolerance")
     index = _range(float(diameter) * 1e3, SIZE_LIMITS, "mounting.shaft_tolerance")
     width = STANDARD_TOLERANCES[grade][index]
     if letter == "js":
         lower = -width / 2
+    elif letter == "j":
+        lower = J_SHAFT_LOWER[grade][index]
     elif letter in ("g", "h"):
         lower = SHAFT_DEVIATIONS[letter][index] - width
     else:
@@ -72,12 +79,14 @@ def shaft_deviations(tolerance: str, diameter) -> tuple[float, float]:
 
 def housing_deviations(tolerance: str, diameter) -> tuple[float, float]:
     """(EI, ES) [m] of a housing (hole) class ("H7", "M6", …) at the nominal diameter [m]."""
-    letter, grade = _class(tolerance, HOUSING_GRADES, ("G", "H", "JS", "K", "M", "N", "P"),
+    letter, grade = _class(tolerance, HOUSING_GRADES, ("G", "H", "J", "JS", "K", "M", "N", "P"),
                            "mounting.housing_tolerance")
     index = _range(float(diameter) * 1e3, SIZE_LIMITS, "mounting.housing_tolerance")
     width = STANDARD_TOLERANCES[grade][index]
     if letter == "JS":
         lower = -width / 2
+    elif letter == "J":
+        lower = J_HOUSING_UPPER[grade][index] - width
     elif letter in ("G", "H"):
         lower = -SHAFT_DEVIATIONS[letter.lower()][index]
     else:  # ES = −ei + Δ, Δ = IT_n − IT_(n−1)

@@ -13,6 +13,9 @@ from diffbearing.bearing_fits import housing_deviations, housing_interference, s
     ("K6", 100e-3, (-18, 4)), ("K7", 60e-3, (-21, 9)), ("M6", 60e-3, (-24, -5)), ("M7", 60e-3, (-30, 0)),
     ("N6", 60e-3, (-33, -14)), ("N7", 60e-3, (-39, -9)), ("P6", 60e-3, (-45, -26)), ("P7", 60e-3, (-51, -21)),
     ("H7", 140e-3, (0, 40)), ("G6", 60e-3, (10, 29)), ("JS7", 60e-3, (-15, 15)),
+    # the J classes, tabulated (NSK, NTN CAT.2203 and Koyo print the same)
+    ("J6", 15e-3, (-5, 6)), ("J6", 100e-3, (-6, 16)), ("J6", 450e-3, (-7, 33)), ("J7", 60e-3, (-12, 18)),
+    ("J7", 200e-3, (-16, 30)), ("J7", 350e-3, (-18, 39)),
 ])
 def test_housing_classes_match_iso_286_2(tolerance, diameter, expected):
     np.testing.assert_allclose(np.array(housing_deviations(tolerance, diameter)) * 1e6, expected, atol=1e-9)
@@ -22,6 +25,9 @@ def test_housing_classes_match_iso_286_2(tolerance, diameter, expected):
     ("k5", 55e-3, (2, 15)), ("k6", 55e-3, (2, 21)), ("m5", 55e-3, (11, 24)), ("m6", 100e-3, (13, 35)),
     ("n6", 40e-3, (17, 33)), ("p6", 200e-3, (50, 79)), ("js6", 25e-3, (-6.5, 6.5)), ("h6", 55e-3, (-19, 0)),
     ("g6", 30e-3, (-20, -7)),
+    # the j classes, tabulated (NSK, NTN CAT.2203; j5, j6 also Koyo)
+    ("j5", 15e-3, (-3, 5)), ("j5", 300e-3, (-16, 7)), ("j6", 55e-3, (-7, 12)), ("j6", 280e-3, (-16, 16)),
+    ("j7", 350e-3, (-28, 29)), ("j7", 450e-3, (-32, 31)), ("j7", 100e-3, (-15, 20)),
 ])
 def test_shaft_classes_match_iso_286_2(tolerance, diameter, expected):
     np.testing.assert_allclose(np.array(shaft_deviations(tolerance, diameter)) * 1e6, expected, atol=1e-9)

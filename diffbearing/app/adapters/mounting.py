@@ -128,9 +128,9 @@ ADAPTER = register(Adapter(
                                                           "(negative: a loose fit)"),
         "mounting.housing_interference": quantity("length", "diametral interference of the outer ring in the housing "
                                                             "(negative: a loose fit)"),
-        "mounting.shaft_tolerance": Key("text", doc="ISO 286 class of the shaft seat (g, h, js, k, m, n, p; grades 5–7), "
+        "mounting.shaft_tolerance": Key("text", doc="ISO 286 class of the shaft seat (g, h, j, js, k, m, n, p; grades 5–7), "
                                                     "instead of shaft_interference; with the ring's ISO 492 Normal bore"),
-        "mounting.housing_tolerance": Key("text", doc="ISO 286 class of the housing seat (G, H, JS, K, M, N, P; grades 6, "
+        "mounting.housing_tolerance": Key("text", doc="ISO 286 class of the housing seat (G, H, J, JS, K, M, N, P; grades 6, "
                                                       "7), instead of housing_interference; with the ring's ISO 492 "
                                                       "Normal outside"),
         "mounting.fit_value": Key("choice", choices=bearing_fits.FIT_VALUES,
