@@ -22,12 +22,14 @@ def _run(tmp_path, text, name):
 def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     """Issue 26: the 6411E alone on a shaft (at z = 40 mm, loaded there, turned "-z" with the load
     turned too) against the single-bearing scene: its displacement in its own frame, its load, its
-    largest ball load and its L10r to 1e-9; the shaft's life is that bearing's."""
+    largest ball load, its L10r, its static safety and overrolling frequencies to 1e-9; the shaft's
+    life is that bearing's."""
+    effects = "[effects]\nlife = true\nsafety = true\nfrequencies = true\n"
     shaft = _run(tmp_path, ENTRY + 'position = "40 mm"\norientation = "-z"\n[shaft]\nspeed = "3000 rpm"\n'
-                 f'[[loads]]\nposition = "40 mm"\nforce = ["{LOAD[0]}", "-{LOAD[1]}", "-{LOAD[2]}"]\n'
-                 '[effects]\nlife = true\n', "shaft.toml")
+                 f'[[loads]]\nposition = "40 mm"\nforce = ["{LOAD[0]}", "-{LOAD[1]}", "-{LOAD[2]}"]\n' + effects,
+                 "shaft.toml")
     single = _run(tmp_path, BEARING_6411E + 'dynamic_load_rating = "101 kN"\n[operating]\ninner_speed = "3000 rpm"\n'
-                  f'force = ["{LOAD[0]}", "{LOAD[1]}", "{LOAD[2]}"]\n[effects]\nlife = true\n', "single.toml")
+                  f'force = ["{LOAD[0]}", "{LOAD[1]}", "{LOAD[2]}"]\n' + effects, "single.toml")
     assert bool(shaft.values["shaft.converged"]) and bool(single.values["converged"])
     scale = np.max(np.abs(single.values["displacement"]))
     np.testing.assert_allclose(shaft.values["bearings.displacement"][0], single.values["displacement"], rtol=1e-9,
@@ -37,6 +39,13 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
         float(np.max(single.values["balls.inner.load"])), rel=1e-9)
     assert float(shaft.values["bearings.L10r"][0]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-9)
     assert float(shaft.values["shaft.L10r"]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-12)
+    for mine, theirs in (("static_load_rating", "static_load_rating"), ("equivalent_static_load", "equivalent_static_load"),
+                         ("iso76", "iso76"), ("static_safety", "static")):
+        assert float(shaft.values[f"bearings.{mine}"][0]) == pytest.approx(float(single.values[f"safety.{theirs}"]),
+                                                                           rel=1e-9), mine
+    for field in ("cage", "ball_pass_outer", "ball_pass_inner", "ball_spin"):
+        assert float(shaft.values[f"bearings.frequencies.{field}"][0]) == pytest.approx(
+            float(single.values[f"frequencies.{field}"]), rel=1e-9), field
 
 
 @pytest.mark.slow
@@ -91,16 +100,23 @@ def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
     load: the roller bearing's radial displacement and tilt, and its L10r, equal the whole roller
     bearing scene's under the load and moment it carries on the shaft, to 1e-9."""
     shaft = _run(tmp_path, CYLINDRICAL + ENTRY + 'position = "100 mm"\n[[loads]]\nposition = "20 mm"\n'
-                 'force = ["5 kN", "2 kN", "1 kN"]\n[effects]\nlife = true\n', "gearbox.toml")
+                 'force = ["5 kN", "2 kN", "1 kN"]\n[shaft]\nspeed = "1500 rpm"\n[effects]\nlife = true\nsafety = true\n'
+                 'frequencies = true\n', "gearbox.toml")
     assert bool(shaft.values["shaft.converged"])
     force = [float(value) for value in shaft.values["bearings.force"][0]]
     assert force[2] == 0.0  # no axial load on the cylindrical roller bearing
     text = (CYLINDRICAL.replace("[[bearings]]", "[bearing]").replace("[bearings.profile]", "[profile]")
             .replace('position = "-100 mm"\n', "")
             + f'[operating]\nforce = ["{force[0]!r} N", "{force[1]!r} N", "0 N"]\n'
-            + f'moment = ["{force[3]!r} N*m", "{force[4]!r} N*m"]\n[effects]\ncontact = "slices"\nlife = true\n')
+            + f'moment = ["{force[3]!r} N*m", "{force[4]!r} N*m"]\ninner_speed = "1500 rpm"\n'
+            + '[effects]\ncontact = "slices"\nlife = true\nsafety = true\nfrequencies = true\n')
     alone = _run(tmp_path, text, "roller.toml")
     local = np.asarray(shaft.values["bearings.displacement"][0])
     np.testing.assert_allclose(local[[0, 1, 3, 4]], np.asarray(alone.values["displacement"])[[0, 1, 3, 4]], rtol=1e-9,
                                atol=1e-9 * np.max(np.abs(local[:2])))
     assert float(shaft.values["bearings.L10r"][0]) == pytest.approx(float(alone.values["life.L10r"]), rel=1e-9)
+    assert float(shaft.values["bearings.static_safety"][0]) == pytest.approx(float(alone.values["safety.static"]),
+                                                                             rel=1e-9)
+    assert float(shaft.values["bearings.iso76"][0]) == pytest.approx(float(alone.values["safety.iso76"]), rel=1e-9)
+    assert float(shaft.values["bearings.frequencies.ball_pass_inner"][0]) == pytest.approx(
+        float(alone.values["frequencies.ball_pass_inner"]), rel=1e-12)

@@ -11,12 +11,11 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ... import life
-from ... import ball_validity
+from ... import ball_validity, life, overrolling, static_safety
 from ...ball_equilibrium import ball_results
 from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
-from ...roller_equilibrium import RollerOperating, roller_results
-from ...roller_geometry import ROLLER_KINDS
+from ...roller_equilibrium import RollerOperating, directions, roller_results
+from ...roller_geometry import ROLLER_KINDS, roller_diameter
 from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport, Shaft, ShaftLoads,
                                   shaft_stiffness, solve_shaft, transfer, turned)
 from ..formatting import format_number, stiffness_lines
@@ -147,6 +146,38 @@ def _life(support, elements):
                                elements.outer_lamina_load)[2]
 
 
+def _static_safety(support, elements, force):
+    """(C₀ [N], P₀ [N], static safety of the largest pressure [-]) of one bearing (`static_safety`),
+    `force` its load in its own frame."""
+    pressure = jnp.maximum(jnp.max(elements.inner_max_pressure), jnp.max(elements.outer_max_pressure))
+    if isinstance(support, BallSupport):
+        return (static_safety.ball_bearing_static_load_rating(support.bearing),
+                static_safety.ball_bearing_equivalent_static_load(support.bearing, force[:3]),
+                static_safety.pressure_safety(pressure, static_safety.BALL_PRESSURE_LIMIT,
+                                              static_safety.POINT_CONTACT_EXPONENT))
+    return (static_safety.roller_bearing_static_load_rating(support.bearing, support.raceways),
+            static_safety.roller_equivalent_static_load(force[:3], support.raceways.cup_angle),
+            static_safety.pressure_safety(pressure, static_safety.ROLLER_PRESSURE_LIMIT,
+                                          static_safety.LINE_CONTACT_EXPONENT))
+
+
+def _frequencies(support, elements, speed):
+    """One bearing's `overrolling.OverrollingFrequencies` [Hz], outer ring standing still."""
+    if isinstance(support, BallSupport):
+        bearing = support.bearing
+        return overrolling.ball_bearing_frequencies(speed, 0.0, bearing.ball_count, bearing.ball_diameter,
+                                                    bearing.pitch_diameter, elements.inner_contact_angle,
+                                                    elements.outer_contact_angle, elements.inner_load,
+                                                    support.model.race_control)
+    angles = directions(support.bearing, support.raceways)
+    return overrolling.roller_bearing_frequencies(speed, 0.0, support.bearing.roller_count,
+                                                  roller_diameter(support.bearing, 0.0),
+                                                  support.raceways.pitch_diameter, angles.cone_angle, angles.cup_angle)
+
+
+FREQUENCIES = ("cage", "ball_pass_outer", "ball_pass_inner", "ball_spin")
+
+
 def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     layout = inputs["shaft"]
     shaft = Shaft(_supports(layout, settings), layout.loads, layout.speed)
@@ -175,6 +206,15 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
         lives = [_life(support, elements) for support, elements in zip(shaft.supports, per_bearing)]
         out["bearings.L10r"] = jnp.stack(lives)
         out["shaft.L10r"] = life.system_life(jnp.stack(lives))
+    if settings["effects"].get("safety", False) is True:
+        rating, load, safety = (jnp.stack(column) for column in zip(*(
+            _static_safety(support, elements, force)
+            for support, elements, force in zip(shaft.supports, per_bearing, solution.bearing_forces))))
+        out |= {"bearings.static_load_rating": rating, "bearings.equivalent_static_load": load,
+                "bearings.iso76": rating / load, "bearings.static_safety": safety}
+    if settings["effects"].get("frequencies", False) is True:
+        found = [_frequencies(support, elements, layout.speed) for support, elements in zip(shaft.supports, per_bearing)]
+        out |= {f"bearings.frequencies.{field}": jnp.stack([getattr(f, field) for f in found]) for field in FREQUENCIES}
     return out
 
 
@@ -188,6 +228,10 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
                 f"{ISO76_BALL_PRESSURE_LIMIT / 1e9:g} GPa"
                 for number, pressure in enumerate(np.asarray(values["bearings.max_pressure"]))
                 if pressure > ISO76_BALL_PRESSURE_LIMIT]
+    for key, name in (("bearings.iso76", "ISO 76 static safety s0 = C0/P0"),
+                      ("bearings.static_safety", "static safety from the contact pressure")):
+        warnings += [f"bearing {number}: {name} is {value:.3g}, below 1" for number, value in
+                     enumerate(np.asarray(values.get(key, []))) if value < 1.0]
     return errors, warnings
 
 
@@ -222,7 +266,7 @@ BLOCK = Block(
     enabled_by=None,
     requires=(),
     inputs=("shaft",),
-    uses=("centrifugal", "gyroscopic", "stiffness", "life"),
+    uses=("centrifugal", "gyroscopic", "stiffness", "life", "safety", "frequencies"),
     outputs=(
         Output("shaft.displacement", "m, rad", "", "shaft displacement at z = 0 [ux, uy, uz, θx, θy]", in_report=False),
         Output("shaft.converged", "", "", "the shaft equilibrium converged", in_report=False),
@@ -245,6 +289,17 @@ BLOCK = Block(
                "(model limits 1 %, 90°)", in_report=False),
         Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
                in_report=False),
+        Output("bearings.static_load_rating", "N", "kN", "each bearing's ISO 76 C0", effect="safety", in_report=False),
+        Output("bearings.equivalent_static_load", "N", "kN", "each bearing's ISO 76 P0", effect="safety",
+               in_report=False),
+        Output("bearings.iso76", "", "", "each bearing's ISO 76 s0 = C0/P0", effect="safety", in_report=False),
+        Output("bearings.static_safety", "", "", "each bearing's static safety of its largest pressure, "
+               "(p_limit/p_max)^3 (ball) or ^2 (roller)", effect="safety", in_report=False),
+        *(Output(f"bearings.frequencies.{field}", "Hz", "Hz", f"each bearing's {text} at its solved contact angles",
+                 effect="frequencies", in_report=False)
+          for field, text in zip(FREQUENCIES, ("cage frequency FTF", "ball (roller) pass frequency, outer raceway",
+                                               "ball (roller) pass frequency, inner raceway",
+                                               "ball (roller) spin frequency"))),
     ),
     compute=_shaft,
     checks=_checks,
@@ -284,7 +339,8 @@ def _report(result) -> list[str]:
              f"θx = {u[3] * 1e3:.4f} mrad, θy = {u[4] * 1e3:.4f} mrad",
              "", "Bearings (loads from the shaft, shaft frame; Qmax the largest ball or roller load)",
              f"  {'#':<4}{'Fx [kN]':>10}{'Fy [kN]':>10}{'Fz [kN]':>10}{'Mx [N·m]':>10}{'My [N·m]':>10}{'Qmax [kN]':>11}"
-             f"{'p0 [GPa]':>10}" + (f"{'L10r [1e6 rev]':>16}" if "bearings.L10r" in values else "")]
+             f"{'p0 [GPa]':>10}" + (f"{'L10r [1e6 rev]':>16}" if "bearings.L10r" in values else "")
+             + (f"{'s0':>8}{'s(p)':>8}" if "bearings.iso76" in values else "")]
     for number, reaction in enumerate(np.asarray(values["bearings.reaction"])):
         row = (f"  {number:<4}" + "".join(f"{f / 1e3:>10.4f}" for f in reaction[:3])
                + "".join(f"{m:>10.2f}" for m in reaction[3:])
@@ -292,7 +348,15 @@ def _report(result) -> list[str]:
                + f"{float(values['bearings.max_pressure'][number]) / 1e9:>10.4f}")
         if "bearings.L10r" in values:
             row += f"{format_number(values['bearings.L10r'][number]):>16}"
+        if "bearings.iso76" in values:
+            row += "".join(f"{format_number(values[key][number]):>8}" for key in ("bearings.iso76",
+                                                                                  "bearings.static_safety"))
         lines.append(row)
+    if "bearings.frequencies.cage" in values:
+        lines += ["", "Overrolling frequencies at the solved contact angles [Hz]",
+                  f"  {'#':<4}{'cage FTF':>12}{'BPFO':>12}{'BPFI':>12}{'BSF':>12}"]
+        lines += [f"  {number:<4}" + "".join(f"{float(values[f'bearings.frequencies.{field}'][number]):>12.4f}"
+                                             for field in FREQUENCIES) for number in range(len(values["bearings.reaction"]))]
     if "shaft.stiffness" in values:
         at = float(result.model.inputs["shaft"].stiffness_at)
         lines += ["", f"System stiffness at the shaft point z = {at * 1e3:.2f} mm"]
@@ -317,6 +381,8 @@ ADAPTER = register(Adapter(
         "effects.gyroscopic": Key("boolean"),
         "effects.stiffness": Key("boolean"),
         "effects.life": Key("boolean"),
+        "effects.safety": Key("boolean", doc="each bearing's ISO 76 C0, P0, s0 and the static safety of its pressure"),
+        "effects.frequencies": Key("boolean", doc="each bearing's overrolling frequencies"),
     },
     required={"shaft": ("bearings", "loads")},
     inputs=(InputBuilder(("shaft",), SHAFT, _layout),),
