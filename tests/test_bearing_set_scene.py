@@ -28,27 +28,32 @@ def _scene_without(keys, folder) -> str:
     return str(path)
 
 
-def single(tmp_path, axial):
+def single(tmp_path, axial, overrides=()):
     """The spindle_pair's bearing alone (no set keys) under an axial load [N]."""
     path = _scene_without(("arrangement", "set_size", "width", "preload"), tmp_path)
-    return run_model(build_model(load_scene(path, list(STATIC) + [f'operating.force=["0 N", "0 N", "{axial!r} N"]'])),
-                     progress=False)
+    return run_model(build_model(load_scene(path, list(STATIC) + [f'operating.force=["0 N", "0 N", "{axial!r} N"]']
+                                            + list(overrides))), progress=False)
 
 
 def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
     """Issue 26: the DB pair of the packaged example under a pure axial load of 1.2 kN; each
-    bearing's displacement and ball loads are the single bearing's under its own axial load, to
-    1e-9; with no load each carries the 500 N preload."""
-    pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'])
+    bearing's displacement, ball loads, static safety and overrolling frequencies are the single
+    bearing's under its own axial load, to 1e-9; with no load each carries the 500 N preload."""
+    ratings = ["effects.safety=true", "effects.frequencies=true"]
+    pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'] + ratings)
     assert bool(pair.values["set.converged"]) and "balls.inner.load" not in pair.values
     axial = [float(pair.values[f"set.bearings.{n}.force"][2]) for n in range(2)]
     assert axial[0] - axial[1] == pytest.approx(1200.0, rel=1e-9)
     for number, load in enumerate(axial):
-        alone = single(tmp_path, load)
+        alone = single(tmp_path, load, ratings)
         np.testing.assert_allclose(pair.values[f"set.bearings.{number}.displacement"], alone.values["displacement"],
                                    rtol=1e-9, atol=1e-9 * abs(float(alone.values["displacement"][2])))
         np.testing.assert_allclose(pair.values[f"set.bearings.{number}.balls.inner.load"],
                                    alone.values["balls.inner.load"], rtol=1e-9)
+        for mine, theirs in (("iso76", "safety.iso76"), ("static_safety", "safety.static"),
+                             ("frequencies.cage", "frequencies.cage"), ("frequencies.ball_spin", "frequencies.ball_spin")):
+            assert float(pair.values[f"set.bearings.{number}.{mine}"]) == pytest.approx(float(alone.values[theirs]),
+                                                                                        rel=1e-9), mine
     unloaded = run(['operating.force=["0 N", "0 N", "0 N"]'])
     np.testing.assert_allclose([float(unloaded.values[f"set.bearings.{n}.force"][2]) for n in range(2)], [500.0, 500.0],
                                rtol=1e-9)

@@ -10,6 +10,7 @@ from ...params import BALL_BEARING_KINDS
 from ...roller_geometry import ROLLER_KINDS, roller_diameter
 from ..registry import Adapter, Block, Key, Output, register
 from .ball import ball_model
+from .bearing_set import SET, SET_SIZE
 from .roller_bearing import WHOLE_BEARING
 
 FIELDS = (("cage", "cage FTF", "cage (fundamental train) frequency FTF"),
@@ -49,6 +50,20 @@ def _roller_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
                      "frequencies.orders"))
 
 
+def _set_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    out = {}
+    for number in range(SET_SIZE):
+        prefix = f"set.bearings.{number}."
+        found = overrolling.ball_bearing_frequencies(
+            operating.inner_speed, operating.outer_speed, bearing.ball_count, bearing.ball_diameter,
+            bearing.pitch_diameter, results[prefix + "balls.inner.contact_angle"],
+            results[prefix + "balls.outer.contact_angle"], results[prefix + "balls.inner.load"],
+            ball_model(settings).race_control)
+        out |= _keyed(found, prefix + "frequencies")
+    return out
+
+
 def _outputs(nominal: bool) -> tuple[Output, ...]:
     outputs = [Output(f"frequencies.{field}", "Hz", "Hz", text, in_report=False) for field, _, text in FIELDS]
     outputs += [Output(f"frequencies.orders.{field}", "", "", f"{text}, per revolution of the inner ring relative "
@@ -62,6 +77,8 @@ def _outputs(nominal: bool) -> tuple[Output, ...]:
 
 def _report(result) -> list[str]:
     values = result.values
+    if "frequencies.cage" not in values:  # a set: its bearings' frequencies are in the output table
+        return []
     nominal = "frequencies.nominal.cage" in values
     title = "Overrolling frequencies at the operating contact angles"
     if nominal:
@@ -101,6 +118,16 @@ ADAPTER = register(Adapter(
         outputs=_outputs(nominal=False),
         compute=_roller_frequencies,
         scene_keys=WHOLE_BEARING,
+    ), Block(
+        name="set_frequencies",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("frequencies", True),
+        requires=("bearing_set",),
+        inputs=("bearing", "operating"),
+        outputs=tuple(Output(f"set.bearings.{number}.frequencies.{field}", "Hz", "Hz", f"bearing {number}: {label}")
+                      for number in range(SET_SIZE) for field, label, _ in FIELDS),
+        compute=_set_frequencies,
+        scene_keys=SET,
     )),
     report=_report,
 ))

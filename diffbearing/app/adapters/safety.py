@@ -10,6 +10,7 @@ from ...minimum_load import minimum_load
 from ...params import BALL_BEARING_KINDS
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Block, Key, Output, register
+from .bearing_set import SET, SET_SIZE
 from .life import ball_load_rating, roller_load_ratings
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
@@ -59,6 +60,31 @@ def _roller_safety(inputs: dict, settings: dict, results: dict) -> dict:
                    minimum_load(dynamic_rating, "roller"), inputs["operating"])
 
 
+def _set_safety(inputs: dict, settings: dict, results: dict) -> dict:
+    """C₀ of the set's bearings, and each bearing's P₀, s₀ and pressure safety from its own load."""
+    bearing = inputs["bearing"]
+    rating = static_safety.ball_bearing_static_load_rating(bearing)
+    out = {"set.static_load_rating": rating}
+    for number in range(SET_SIZE):
+        prefix = f"set.bearings.{number}."
+        load = static_safety.ball_bearing_equivalent_static_load(bearing, results[prefix + "force"][:3])
+        pressure = jnp.maximum(jnp.max(results[prefix + "balls.inner.max_pressure"]),
+                               jnp.max(results[prefix + "balls.outer.max_pressure"]))
+        out |= {prefix + "equivalent_static_load": load, prefix + "iso76": rating / load,
+                prefix + "static_safety": static_safety.pressure_safety(pressure, static_safety.BALL_PRESSURE_LIMIT,
+                                                                         static_safety.POINT_CONTACT_EXPONENT)}
+    return out
+
+
+def _set_checks(values: dict) -> tuple[list[str], list[str]]:
+    warnings = [f"bearing {number}: {name} is {float(values[f'set.bearings.{number}.{key}']):.3g}, below 1"
+                for number in range(SET_SIZE)
+                for key, name in (("iso76", "ISO 76 static safety s0 = C0/P0"),
+                                  ("static_safety", "static safety from the contact pressure"))
+                if float(values[f"set.bearings.{number}.{key}"]) < 1.0]
+    return [], warnings
+
+
 def _checks(values: dict) -> tuple[list[str], list[str]]:
     """Warnings: a static safety below 1, and a turning bearing loaded below its minimum load."""
     warnings = []
@@ -98,5 +124,21 @@ ADAPTER = register(Adapter(
         compute=_roller_safety,
         checks=_checks,
         scene_keys=WHOLE_BEARING,
+    ), Block(
+        name="set_safety",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("safety", True),
+        requires=("bearing_set",),
+        inputs=("bearing",),
+        outputs=(Output("set.static_load_rating", "N", "kN", "ISO 76 static load rating C0 of each bearing"),
+                 *(output for number in range(SET_SIZE) for output in (
+                     Output(f"set.bearings.{number}.equivalent_static_load", "N", "kN",
+                            f"bearing {number}: ISO 76 equivalent static load P0"),
+                     Output(f"set.bearings.{number}.iso76", "", "", f"bearing {number}: ISO 76 s0 = C0/P0"),
+                     Output(f"set.bearings.{number}.static_safety", "", "",
+                            f"bearing {number}: static safety (p_limit/p_max)^3")))),
+        compute=_set_safety,
+        checks=_set_checks,
+        scene_keys=SET,
     )),
 ))
