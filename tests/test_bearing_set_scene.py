@@ -37,12 +37,14 @@ def single(tmp_path, axial, overrides=()):
 
 def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
     """Issue 26: the DB pair of the packaged example under a pure axial load of 1.2 kN; each
-    bearing's displacement, ball loads, static safety and overrolling frequencies are the single
-    bearing's under its own axial load, to 1e-9; with no load each carries the 500 N preload."""
-    ratings = ["effects.safety=true", "effects.frequencies=true"]
+    bearing's displacement, ball loads, static safety, overrolling frequencies and friction torque
+    are the single bearing's under its own axial load, to 1e-9 (the set's torque their sum); with no
+    load each carries the 500 N preload."""
+    ratings = ["effects.safety=true", "effects.frequencies=true", "effects.friction=palmgren", "lubricant.preset=iso_vg_32"]
     pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'] + ratings)
     assert bool(pair.values["set.converged"]) and "balls.inner.load" not in pair.values
     axial = [float(pair.values[f"set.bearings.{n}.force"][2]) for n in range(2)]
+    torque = 0.0
     assert axial[0] - axial[1] == pytest.approx(1200.0, rel=1e-9)
     for number, load in enumerate(axial):
         alone = single(tmp_path, load, ratings)
@@ -51,9 +53,12 @@ def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
         np.testing.assert_allclose(pair.values[f"set.bearings.{number}.balls.inner.load"],
                                    alone.values["balls.inner.load"], rtol=1e-9)
         for mine, theirs in (("iso76", "safety.iso76"), ("static_safety", "safety.static"),
-                             ("frequencies.cage", "frequencies.cage"), ("frequencies.ball_spin", "frequencies.ball_spin")):
+                             ("frequencies.cage", "frequencies.cage"), ("frequencies.ball_spin", "frequencies.ball_spin"),
+                             ("friction.torque", "friction.torque")):
             assert float(pair.values[f"set.bearings.{number}.{mine}"]) == pytest.approx(float(alone.values[theirs]),
                                                                                         rel=1e-9), mine
+        torque += float(alone.values["friction.torque"])
+    assert float(pair.values["set.friction.torque"]) == pytest.approx(torque, rel=1e-9)
     unloaded = run(['operating.force=["0 N", "0 N", "0 N"]'])
     np.testing.assert_allclose([float(unloaded.values[f"set.bearings.{n}.force"][2]) for n in range(2)], [500.0, 500.0],
                                rtol=1e-9)

@@ -9,6 +9,7 @@ from ...life_modification import CONTAMINATION_CONSTANTS
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Block, InputBuilder, Key, Output, register
+from .bearing_set import SET, SET_SIZE
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 FRICTION_MODELS = ("palmgren",)
@@ -60,6 +61,22 @@ def _roller_friction(inputs: dict, settings: dict, results: dict) -> dict:
                     raceways.pitch_diameter, *_split(results["force"][:3]), None, None, raceways.cup_angle)
 
 
+def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    """Each bearing's Palmgren torque from its own load, and the set's together."""
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    out, total = {}, 0.0
+    for number in range(SET_SIZE):
+        force = results[f"set.bearings.{number}.force"][:3]
+        torques = _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], operating,
+                           bearing.pitch_diameter, *_split(force),
+                           static_safety.ball_bearing_equivalent_static_load(bearing, force),
+                           static_safety.ball_bearing_static_load_rating(bearing))
+        out[f"set.bearings.{number}.friction.torque"] = torques["friction.torque"]
+        total = total + torques["friction.torque"]
+    speed = operating.inner_speed - operating.outer_speed
+    return out | {"set.friction.torque": total, "set.friction.power": friction_torque.friction_power(total, speed)}
+
+
 OUTPUTS = (
     Output("friction.torque", "N*m", "N*mm", "friction torque M = M0 + M1 (Palmgren)"),
     Output("friction.viscous_torque", "N*m", "N*mm", "viscous moment M0"),
@@ -97,5 +114,17 @@ ADAPTER = register(Adapter(
         outputs=OUTPUTS,
         compute=_roller_friction,
         scene_keys=WHOLE_BEARING,
+    ), Block(
+        name="set_friction",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("friction", "palmgren"),
+        requires=("bearing_set",),
+        inputs=("bearing", "operating", "lubricant", "friction_constants"),
+        outputs=(*(Output(f"set.bearings.{number}.friction.torque", "N*m", "N*mm",
+                          f"bearing {number}: friction torque M0 + M1") for number in range(SET_SIZE)),
+                 Output("set.friction.torque", "N*m", "N*mm", "friction torque of the set"),
+                 Output("set.friction.power", "W", "W", "power loss of the set")),
+        compute=_set_friction,
+        scene_keys=SET,
     )),
 ))
