@@ -38,9 +38,11 @@ def single(tmp_path, axial, overrides=()):
 def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
     """Issue 26: the DB pair of the packaged example under a pure axial load of 1.2 kN; each
     bearing's displacement, ball loads, static safety, overrolling frequencies and friction torque
-    are the single bearing's under its own axial load, to 1e-9 (the set's torque their sum); with no
-    load each carries the 500 N preload."""
-    ratings = ["effects.safety=true", "effects.frequencies=true", "effects.friction=palmgren", "lubricant.preset=iso_vg_32"]
+    are the single bearing's under its own axial load, to 1e-9 (the set's torque their sum), with the
+    same [fidelity] (Brewe–Hamrock contacts, inner-raceway control); with no load each carries the
+    500 N preload."""
+    ratings = ["effects.safety=true", "effects.frequencies=true", "effects.friction=palmgren", "lubricant.preset=iso_vg_32",
+               "fidelity.hertz=brewe_hamrock", "fidelity.race_control=inner"]
     pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'] + ratings)
     assert bool(pair.values["set.converged"]) and "balls.inner.load" not in pair.values
     axial = [float(pair.values[f"set.bearings.{n}.force"][2]) for n in range(2)]

@@ -4,6 +4,8 @@ preload force (`bearing_set`, `shaft_equilibrium`). A scene with `bearing.arrang
 the single bearing's equilibrium (and what builds on it) does not run; `operating.force` and
 `operating.moment` act on the shaft at the middle of the set."""
 
+import dataclasses
+
 import equinox as eqx
 import jax
 import jax.numpy as jnp
@@ -16,6 +18,7 @@ from ...params import BALL_BEARING_KINDS, _as_float, radial_clearance, with_radi
 from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 from ..formatting import format_number, stiffness_lines, swept_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
+from .ball import ADAPTER as BALL_ADAPTER
 from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
 from .materials import material
 
@@ -255,6 +258,9 @@ ADAPTER = register(Adapter(
                                                "(turned into an axial offset, which the set then holds)"),
         "operating.preload_offset": quantity("length", "a set's preload as the axial push of each inner ring against "
                                                        "its outer ring (the pair's face offset is twice it)"),
+        # the ball model's [fidelity] keys, read by the set's block for both bearings
+        **{key: dataclasses.replace(BALL_ADAPTER.keys[key], read_by=("bearing_set",))
+           for key in ("fidelity.hertz", "fidelity.race_control", "fidelity.hertz_constants")},
     },
     inputs=(InputBuilder(("bearing_set",), BALL_BEARING_KINDS, _layout, scene_keys=SET),),
     blocks=(SET_BLOCK,),

@@ -6,6 +6,8 @@ roller bearing's crowning as its own `profile` sub-table) plus its `position` al
 `orientation` ("+z" or "−z") and an optional axial `offset` (preload); the scene's `[material]`
 applies to all."""
 
+import dataclasses
+
 import equinox as eqx
 import jax
 import jax.numpy as jnp
@@ -21,13 +23,20 @@ from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport
 from ..formatting import format_number, stiffness_lines
 from ..registry import Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
 from ..units import to_si
+from .ball import ADAPTER as BALL_ADAPTER
 from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
 from .life import ball_bearing_life, roller_bearing_life
 from .materials import material
 from .roller import scene_roller_bearing
+from .roller_bearing import ADAPTER as ROLLER_BEARING_ADAPTER
 from .roller_bearing import roller_model, scene_raceways
 
 SHAFT = ("shaft",)
+# the [fidelity] keys of the ball and roller bearing models, read by the shaft's block for every bearing
+FIDELITY = {key: dataclasses.replace(adapter.keys[key], read_by=("shaft",))
+            for adapter, names in ((BALL_ADAPTER, ("fidelity.hertz", "fidelity.race_control", "fidelity.hertz_constants")),
+                                   (ROLLER_BEARING_ADAPTER, ("fidelity.laminae",)))
+            for key in names}
 PLACEMENT = ("position", "orientation", "offset")
 ORIENTATIONS = {"+z": 1, "-z": -1, "−z": -1}
 
@@ -383,6 +392,7 @@ ADAPTER = register(Adapter(
         "effects.life": Key("boolean"),
         "effects.safety": Key("boolean", doc="each bearing's ISO 76 C0, P0, s0 and the static safety of its pressure"),
         "effects.frequencies": Key("boolean", doc="each bearing's overrolling frequencies"),
+        **FIDELITY,
     },
     required={"shaft": ("bearings", "loads")},
     inputs=(InputBuilder(("shaft",), SHAFT, _layout),),
