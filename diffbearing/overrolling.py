@@ -14,8 +14,7 @@ bearing axis) give
 raceway relative to the cage). Pure rolling at both contacts of an element whose contact points lie
 at radii R_i, R_o gives the cage speed ω_c = (ω_i R_i + ω_o R_o) / (R_i + R_o); at one contact
 angle α, with γ = D cos α / d_m, R_i = d_m (1 − γ)/2 and R_o = d_m (1 + γ)/2, these are the
-textbook closed forms (Harris & Kotzalas vol. 1, §8; ISO 15243-style diagnostics, e.g. SKF's
-"bearing frequencies")
+textbook closed forms of vibration diagnostics (Harris & Kotzalas vol. 1, §8)
 
     f_c = ½ [f_i (1 − γ) + f_o (1 + γ)],   BPFO = ½ Z |f_i − f_o| (1 − γ),
     BPFI = ½ Z |f_i − f_o| (1 + γ),        BSF  = (d_m / 2D) |f_i − f_o| (1 − γ²).

@@ -5,15 +5,14 @@ lubricant's viscosity at its temperature and the speed."""
 import jax.numpy as jnp
 
 from ... import friction_torque, static_safety
-from ...life_modification import CONTAMINATION_CONSTANTS
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Block, InputBuilder, Key, Output, register
 from .bearing_set import SET, SET_SIZE
+from .life import SUPPLY_KEY
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 FRICTION_MODELS = ("palmgren",)
-SUPPLIES = tuple(CONTAMINATION_CONSTANTS)  # the same key as the life adapter's
 DEFAULT_SUPPLY = "oil_bath"
 
 
@@ -94,8 +93,7 @@ ADAPTER = register(Adapter(
           "friction.f0": Key("number", doc="Palmgren's f0 of the bearing's series and lubrication (default: HR 1's "
                                            "62 / 72-B / 2..-E / 302 series)"),
           "friction.f1": Key("number", doc="Palmgren's f1 (default: HR 1's, a (P0/C0)^b for ball bearings)"),
-          "lubricant.supply": Key("choice", choices=SUPPLIES, doc="circulating oil with filters, oil bath, or grease "
-                                                                  "(the e_C table of ISO 281 Annex A)")},
+          "lubricant.supply": SUPPLY_KEY},
     inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),),
     blocks=(Block(
         name="friction",

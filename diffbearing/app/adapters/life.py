@@ -90,6 +90,8 @@ def _load_rating(v, built) -> dict:
 
 MODIFIED = ("lubricant.cleanliness",)  # the scene key that asks for a_ISO (with effects.life)
 SUPPLIES = tuple(life_modification.CONTAMINATION_CONSTANTS)
+SUPPLY_KEY = Key("choice", choices=SUPPLIES, doc="how the oil comes: circulating with filters, oil bath, or grease "
+                                                 "(ISO 281 Annex A's e_C tables; Palmgren's f0)")
 CLEANLINESS = tuple(dict.fromkeys(level for table in life_modification.CONTAMINATION_CONSTANTS.values()
                                   for level in table)) + ("custom",)
 
@@ -206,8 +208,7 @@ ADAPTER = register(Adapter(
                                        doc="ISO 281 Annex A cleanliness: an ISO 4406 code for oil, a level for "
                                            "grease, or custom (then lubricant.contamination_factor); with "
                                            "effects.life, a_ISO and the modified lives"),
-          "lubricant.supply": Key("choice", choices=SUPPLIES, doc="circulating oil with filters, oil bath, or grease "
-                                                                  "(the e_C table of ISO 281 Annex A)"),
+          "lubricant.supply": SUPPLY_KEY,
           "lubricant.contamination_factor": Key("number", doc="e_C given directly (lubricant.cleanliness = custom)")},
     inputs=(InputBuilder(("load_rating",), ROLLER_KINDS, _load_rating, scene_keys=WHOLE_BEARING),
             InputBuilder(("contamination",), BALL_BEARING_KINDS + ROLLER_KINDS, _contamination, scene_keys=MODIFIED),
