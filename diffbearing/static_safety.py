@@ -1,21 +1,21 @@
 """Static load ratings and static safety: ISO 76:2006 C₀ and P₀, and the safety of the computed
 contact pressures against ISO 76's permissible stresses.
 
-* `ball_static_load_rating` — ISO 76 eq. (1): C₀r = f₀ i Z D_w² cos α [N, mm] with f₀ of Table 1
+* `ball_static_load_rating` — ISO 76, radial ball bearings: C₀r = f₀ i Z D_w² cos α [N, mm] with f₀ of Table 1
   (radial and angular-contact groove ball bearings, r_i ≤ 0.52 D_w, r_e ≤ 0.53 D_w), interpolated
   in γ = D_w cos α / D_pw. Table 1 is the load that makes the most loaded contact reach
   4 200 MPa when Q_max = 5 F_r / (Z cos α) (ISO/TR 10657 §4.2.1: C₀r = 0.2 i Z Q_max cos α);
   `tests/test_static_safety.py` rebuilds it from the Hertz contacts.
-* `roller_static_load_rating` — ISO 76 eq. (4): C₀r = 44 (1 − γ) i Z L_we D_we cos α [N, mm]
+* `roller_static_load_rating` — ISO 76, radial roller bearings: C₀r = 44 (1 − γ) i Z L_we D_we cos α [N, mm]
   (4 000 MPa on the inner raceway, the same factor 5).
-* `ball_equivalent_static_load`, `roller_equivalent_static_load` — ISO 76 eqs. (2), (5), Table 2:
+* `ball_equivalent_static_load`, `roller_equivalent_static_load` — ISO 76, Table 2:
   P₀r = max(X₀ F_r + Y₀ F_a, F_r), X₀ = 0.6, Y₀ = 0.5 for radial-contact groove bearings, X₀ = 0.5 and
   Y₀ of Table 2 (5°…45°) for single-row angular-contact ones; X₀ = 0.5, Y₀ = 0.22 cot α for tapered
   roller bearings, P₀r = F_r for cylindrical ones.
 * `pressure_safety` — the static safety from the largest computed contact pressure,
   (p_limit / p_max)³ for point contacts and (p_limit / p_max)² for line contacts (load ∝ p³ and
-  p², Hertz), p_limit = 4 200 MPa (ball bearings) and 4 000 MPa (roller bearings) (ISO 76 §3.3,
-  §5; the load ratio of Timken's σ₀ = 4200 (P₀/C₀)^{1/3} MPa).
+  p², Hertz), p_limit = 4 200 MPa (ball bearings) and 4 000 MPa (roller bearings) (ISO 76's
+  definitions of C₀; the load ratio of Timken's σ₀ = 4200 (P₀/C₀)^{1/3} MPa).
 
 Sources: ISO 76:2006 as transcribed in two independent open implementations and the catalogues of
 NSK, NTN, Koyo, Schaeffler (HR 1) and SKF, which agree on every number here; the f₀ table is
