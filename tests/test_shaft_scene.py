@@ -22,10 +22,12 @@ def _run(tmp_path, text, name):
 def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     """Issue 26: the 6411E alone on a shaft (at z = 40 mm, loaded there, turned "-z" with the load
     turned too) against the single-bearing scene: its displacement in its own frame, its load, its
-    largest ball load, its L10r, its static safety and overrolling frequencies to 1e-9, with the same
-    [fidelity] (Brewe–Hamrock contacts, inner-raceway control); the shaft's life is that bearing's."""
-    effects = ("[effects]\nlife = true\nsafety = true\nfrequencies = true\n"
-               '[fidelity]\nhertz = "brewe_hamrock"\nrace_control = "inner"\n')
+    largest ball load, its L10r, its static safety, overrolling frequencies and friction torque to
+    1e-9, with the same [fidelity] (Brewe–Hamrock contacts, inner-raceway control); the shaft's life
+    and friction are that bearing's."""
+    effects = ('[effects]\nlife = true\nsafety = true\nfrequencies = true\nfriction = "palmgren"\n'
+               '[fidelity]\nhertz = "brewe_hamrock"\nrace_control = "inner"\n'
+               '[lubricant]\npreset = "iso_vg_68"\ntemperature = "60 degC"\nsupply = "grease"\n')
     shaft = _run(tmp_path, ENTRY + 'position = "40 mm"\norientation = "-z"\n[shaft]\nspeed = "3000 rpm"\n'
                  f'[[loads]]\nposition = "40 mm"\nforce = ["{LOAD[0]}", "-{LOAD[1]}", "-{LOAD[2]}"]\n' + effects,
                  "shaft.toml")
@@ -47,6 +49,9 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     for field in ("cage", "ball_pass_outer", "ball_pass_inner", "ball_spin"):
         assert float(shaft.values[f"bearings.frequencies.{field}"][0]) == pytest.approx(
             float(single.values[f"frequencies.{field}"]), rel=1e-9), field
+    assert float(shaft.values["bearings.friction.torque"][0]) == pytest.approx(float(single.values["friction.torque"]),
+                                                                               rel=1e-9)
+    assert float(shaft.values["shaft.friction.power"]) == pytest.approx(float(single.values["friction.power"]), rel=1e-9)
 
 
 @pytest.mark.slow
@@ -96,13 +101,16 @@ crown_radius = "50 mm"
 """
 
 
+OIL = '[lubricant]\npreset = "iso_vg_68"\ntemperature = "60 degC"\n'
+
+
 def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
     """A cylindrical roller bearing (the packaged example's) and the 6411E on a shaft under a gear
     load: the roller bearing's radial displacement and tilt, and its L10r, equal the whole roller
     bearing scene's under the load and moment it carries on the shaft, to 1e-9, both with 20 laminae."""
     shaft = _run(tmp_path, CYLINDRICAL + ENTRY + 'position = "100 mm"\n[[loads]]\nposition = "20 mm"\n'
                  'force = ["5 kN", "2 kN", "1 kN"]\n[shaft]\nspeed = "1500 rpm"\n[effects]\nlife = true\nsafety = true\n'
-                 'frequencies = true\n[fidelity]\nlaminae = 20\n', "gearbox.toml")
+                 'frequencies = true\nfriction = "palmgren"\n[fidelity]\nlaminae = 20\n' + OIL, "gearbox.toml")
     assert bool(shaft.values["shaft.converged"])
     force = [float(value) for value in shaft.values["bearings.force"][0]]
     assert force[2] == 0.0  # no axial load on the cylindrical roller bearing
@@ -110,7 +118,8 @@ def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
             .replace('position = "-100 mm"\n', "")
             + f'[operating]\nforce = ["{force[0]!r} N", "{force[1]!r} N", "0 N"]\n'
             + f'moment = ["{force[3]!r} N*m", "{force[4]!r} N*m"]\ninner_speed = "1500 rpm"\n'
-            + '[effects]\ncontact = "slices"\nlife = true\nsafety = true\nfrequencies = true\n[fidelity]\nlaminae = 20\n')
+            + '[effects]\ncontact = "slices"\nlife = true\nsafety = true\nfrequencies = true\nfriction = "palmgren"\n'
+            + '[fidelity]\nlaminae = 20\n' + OIL)
     alone = _run(tmp_path, text, "roller.toml")
     local = np.asarray(shaft.values["bearings.displacement"][0])
     np.testing.assert_allclose(local[[0, 1, 3, 4]], np.asarray(alone.values["displacement"])[[0, 1, 3, 4]], rtol=1e-9,
@@ -121,3 +130,5 @@ def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
     assert float(shaft.values["bearings.iso76"][0]) == pytest.approx(float(alone.values["safety.iso76"]), rel=1e-9)
     assert float(shaft.values["bearings.frequencies.ball_pass_inner"][0]) == pytest.approx(
         float(alone.values["frequencies.ball_pass_inner"]), rel=1e-12)
+    assert float(shaft.values["bearings.friction.torque"][0]) == pytest.approx(float(alone.values["friction.torque"]),
+                                                                               rel=1e-9)

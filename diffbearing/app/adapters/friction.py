@@ -10,34 +10,58 @@ from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Block, InputBuilder, Key, Output, register
 from .bearing_set import SET, SET_SIZE
 from .life import SUPPLY_KEY
+from .shaft import SHAFT
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 FRICTION_MODELS = ("palmgren",)
 DEFAULT_SUPPLY = "oil_bath"
 
 
-def _constants(v, built) -> dict:
-    """f₀ of the bearing's kind and lubrication, or the scene's; the scene's f₁ or None."""
-    f0_grease, f0_oil, _, _ = friction_torque.PALMGREN_CONSTANTS[built["bearing"].kind]
+def _f0(v, kind: str):
+    """f₀ of a bearing kind and the scene's lubrication, or the scene's `friction.f0`."""
+    f0_grease, f0_oil, _, _ = friction_torque.PALMGREN_CONSTANTS[kind]
     supply = v.get("lubricant.supply", DEFAULT_SUPPLY)
     f0 = v.get("friction.f0", f0_grease if supply == "grease" else f0_oil)
     check_range("friction.f0", f0, low=0.0, high=100.0, why="Palmgren's f0 of catalogues, about 1 to 15")
+    return f0
+
+
+def _f1(v):
     f1 = v.get("friction.f1")
     if f1 is not None:
         check_range("friction.f1", f1, low=0.0, high=0.01, why="Palmgren's f1 of catalogues, about 1e-4 to 1e-3")
-    return {"friction_constants": {"f0": f0, "f1": f1}}
+    return f1
+
+
+def _constants(v, built) -> dict:
+    """f₀ of the bearing's kind and lubrication, or the scene's; the scene's f₁ or None."""
+    return {"friction_constants": {"f0": _f0(v, built["bearing"].kind), "f1": _f1(v)}}
+
+
+def _kind(bearing) -> str:
+    """The kind of a shaft layout's bearing (a BallBearing, or a (RollerBearing, RollerRaceways) pair)."""
+    return bearing[0].kind if isinstance(bearing, tuple) else bearing.kind
+
+
+def _shaft_constants(v, built) -> dict:
+    """f₀ of each of the shaft's bearings (a tuple), the scene's f₁ or None."""
+    return {"friction_constants": {"f0": tuple(_f0(v, _kind(bearing)) for bearing in built["shaft"].bearings),
+                                   "f1": _f1(v)}}
 
 
 def _torques(kind, constants, lubricant, operating, pitch, radial, axial, static_load, static_rating, angle=0.0):
-    speed = operating.inner_speed - operating.outer_speed
-    f1 = constants["f1"]
+    return _torques_at(kind, constants["f0"], constants["f1"], lubricant, operating.inner_speed - operating.outer_speed,
+                       pitch, radial, axial, static_load, static_rating, angle)
+
+
+def _torques_at(kind, f0, f1, lubricant, speed, pitch, radial, axial, static_load, static_rating, angle=0.0):
     if f1 is None:
         _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
         f1 = friction_torque.speed_factor(coefficient, exponent, static_load, static_rating)
     load = friction_torque.friction_load(kind, radial, axial, angle)
-    viscous = friction_torque.viscous_torque(constants["f0"], lubricant.viscosity / lubricant.density, speed, pitch)
+    viscous = friction_torque.viscous_torque(f0, lubricant.viscosity / lubricant.density, speed, pitch)
     loaded = friction_torque.load_torque(f1, load, pitch)
-    return {"friction.f0": jnp.asarray(constants["f0"], float), "friction.f1": jnp.asarray(f1, float),
+    return {"friction.f0": jnp.asarray(f0, float), "friction.f1": jnp.asarray(f1, float),
             "friction.load": load, "friction.viscous_torque": viscous, "friction.load_torque": loaded,
             "friction.torque": viscous + loaded, "friction.power": friction_torque.friction_power(viscous + loaded, speed)}
 
@@ -76,6 +100,27 @@ def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
     return out | {"set.friction.torque": total, "set.friction.power": friction_torque.friction_power(total, speed)}
 
 
+def _shaft_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    """Each of the shaft's bearings' Palmgren torque from its own load, and the shaft's together."""
+    layout, constants = inputs["shaft"], inputs["friction_constants"]
+    torques = []
+    for number, (bearing, f0) in enumerate(zip(layout.bearings, constants["f0"])):
+        force = results["bearings.force"][number][:3]
+        if isinstance(bearing, tuple):
+            roller, raceways = bearing
+            found = _torques_at(roller.kind, f0, constants["f1"], inputs["lubricant"], layout.speed,
+                                raceways.pitch_diameter, *_split(force), None, None, raceways.cup_angle)
+        else:
+            found = _torques_at(bearing.kind, f0, constants["f1"], inputs["lubricant"], layout.speed,
+                                bearing.pitch_diameter, *_split(force),
+                                static_safety.ball_bearing_equivalent_static_load(bearing, force),
+                                static_safety.ball_bearing_static_load_rating(bearing))
+        torques.append(found["friction.torque"])
+    total = sum(torques)
+    return {"bearings.friction.torque": jnp.stack(torques), "shaft.friction.torque": total,
+            "shaft.friction.power": friction_torque.friction_power(total, layout.speed)}
+
+
 OUTPUTS = (
     Output("friction.torque", "N*m", "N*mm", "friction torque M = M0 + M1 (Palmgren)"),
     Output("friction.viscous_torque", "N*m", "N*mm", "viscous moment M0"),
@@ -88,13 +133,14 @@ OUTPUTS = (
 
 ADAPTER = register(Adapter(
     name="friction",
-    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT,
     keys={"effects.friction": Key("choice", choices=FRICTION_MODELS, doc="friction torque and power loss"),
           "friction.f0": Key("number", doc="Palmgren's f0 of the bearing's series and lubrication (default: HR 1's "
                                            "62 / 72-B / 2..-E / 302 series)"),
           "friction.f1": Key("number", doc="Palmgren's f1 (default: HR 1's, a (P0/C0)^b for ball bearings)"),
           "lubricant.supply": SUPPLY_KEY},
-    inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),),
+    inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),
+            InputBuilder(("friction_constants",), SHAFT, _shaft_constants, after=("shaft",))),
     blocks=(Block(
         name="friction",
         bearing_types=BALL_BEARING_KINDS,
@@ -124,5 +170,16 @@ ADAPTER = register(Adapter(
                  Output("set.friction.power", "W", "W", "power loss of the set")),
         compute=_set_friction,
         scene_keys=SET,
+    ), Block(
+        name="shaft_friction",
+        bearing_types=SHAFT,
+        enabled_by=("friction", "palmgren"),
+        requires=("shaft",),
+        inputs=("shaft", "lubricant", "friction_constants"),
+        outputs=(Output("bearings.friction.torque", "N*m", "N*mm", "each bearing's friction torque M0 + M1",
+                        in_report=False),
+                 Output("shaft.friction.torque", "N*m", "N*mm", "friction torque of the shaft's bearings"),
+                 Output("shaft.friction.power", "W", "W", "power loss of the shaft's bearings")),
+        compute=_shaft_friction,
     )),
 ))

@@ -61,7 +61,7 @@ def _roughness(values, built) -> dict:
     return {"roughness": _as_float(values["material.roughness"])}
 
 
-TYPES = BALL_BEARING_KINDS + ROLLER_KINDS
+TYPES = BALL_BEARING_KINDS + ROLLER_KINDS + ("shaft",)  # a shaft's bearings share its lubricant
 
 ADAPTER = register(Adapter(
     name="lubricant",

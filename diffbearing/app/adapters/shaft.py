@@ -349,7 +349,8 @@ def _report(result) -> list[str]:
              "", "Bearings (loads from the shaft, shaft frame; Qmax the largest ball or roller load)",
              f"  {'#':<4}{'Fx [kN]':>10}{'Fy [kN]':>10}{'Fz [kN]':>10}{'Mx [N·m]':>10}{'My [N·m]':>10}{'Qmax [kN]':>11}"
              f"{'p0 [GPa]':>10}" + (f"{'L10r [1e6 rev]':>16}" if "bearings.L10r" in values else "")
-             + (f"{'s0':>8}{'s(p)':>8}" if "bearings.iso76" in values else "")]
+             + (f"{'s0':>8}{'s(p)':>8}" if "bearings.iso76" in values else "")
+             + (f"{'M [N·mm]':>10}" if "bearings.friction.torque" in values else "")]
     for number, reaction in enumerate(np.asarray(values["bearings.reaction"])):
         row = (f"  {number:<4}" + "".join(f"{f / 1e3:>10.4f}" for f in reaction[:3])
                + "".join(f"{m:>10.2f}" for m in reaction[3:])
@@ -360,6 +361,8 @@ def _report(result) -> list[str]:
         if "bearings.iso76" in values:
             row += "".join(f"{format_number(values[key][number]):>8}" for key in ("bearings.iso76",
                                                                                   "bearings.static_safety"))
+        if "bearings.friction.torque" in values:
+            row += f"{float(values['bearings.friction.torque'][number]) * 1e3:>10.2f}"
         lines.append(row)
     if "bearings.frequencies.cage" in values:
         lines += ["", "Overrolling frequencies at the solved contact angles [Hz]",
