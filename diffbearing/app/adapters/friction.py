@@ -49,12 +49,9 @@ def _shaft_constants(v, built) -> dict:
                                    "f1": _f1(v)}}
 
 
-def _torques(kind, constants, lubricant, operating, pitch, radial, axial, static_load, static_rating, angle=0.0):
-    return _torques_at(kind, constants["f0"], constants["f1"], lubricant, operating.inner_speed - operating.outer_speed,
-                       pitch, radial, axial, static_load, static_rating, angle)
-
-
-def _torques_at(kind, f0, f1, lubricant, speed, pitch, radial, axial, static_load, static_rating, angle=0.0):
+def _torques(kind, f0, f1, lubricant, speed, pitch, radial, axial, static_load, static_rating, angle=0.0):
+    """Palmgren's moments [N·m] and power [W] of one bearing: f₁ the scene's, or of its kind from
+    P₀/C₀; `speed` the relative ring speed [rad/s]."""
     if f1 is None:
         _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
         f1 = friction_torque.speed_factor(coefficient, exponent, static_load, static_rating)
@@ -70,55 +67,56 @@ def _split(force):
     return jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
 
 
-def _ball_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, force = inputs["bearing"], results["force"][:3]
-    return _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], inputs["operating"],
-                    bearing.pitch_diameter, *_split(force),
+def _ball_torques(bearing, f0, f1, lubricant, speed, force):
+    """`_torques` of a ball bearing under [Fx, Fy, Fz] [N] (P₀, C₀ of ISO 76)."""
+    return _torques(bearing.kind, f0, f1, lubricant, speed, bearing.pitch_diameter, *_split(force),
                     static_safety.ball_bearing_equivalent_static_load(bearing, force),
                     static_safety.ball_bearing_static_load_rating(bearing))
 
 
+def _roller_torques(bearing, raceways, f0, f1, lubricant, speed, force):
+    """`_torques` of a roller bearing under [Fx, Fy, Fz] [N]."""
+    return _torques(bearing.kind, f0, f1, lubricant, speed, raceways.pitch_diameter, *_split(force), None, None,
+                    raceways.cup_angle)
+
+
+def _speed(operating):
+    return operating.inner_speed - operating.outer_speed
+
+
+def _ball_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    constants = inputs["friction_constants"]
+    return _ball_torques(inputs["bearing"], constants["f0"], constants["f1"], inputs["lubricant"],
+                         _speed(inputs["operating"]), results["force"][:3])
+
+
 def _roller_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, raceways = inputs["bearing"], inputs["raceways"]
-    return _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], inputs["operating"],
-                    raceways.pitch_diameter, *_split(results["force"][:3]), None, None, raceways.cup_angle)
+    constants = inputs["friction_constants"]
+    return _roller_torques(inputs["bearing"], inputs["raceways"], constants["f0"], constants["f1"], inputs["lubricant"],
+                           _speed(inputs["operating"]), results["force"][:3])
 
 
 def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's Palmgren torque from its own load, and the set's together."""
-    bearing, operating = inputs["bearing"], inputs["operating"]
-    out, total = {}, 0.0
-    for number in range(SET_SIZE):
-        force = results[f"set.bearings.{number}.force"][:3]
-        torques = _torques(bearing.kind, inputs["friction_constants"], inputs["lubricant"], operating,
-                           bearing.pitch_diameter, *_split(force),
-                           static_safety.ball_bearing_equivalent_static_load(bearing, force),
-                           static_safety.ball_bearing_static_load_rating(bearing))
-        out[f"set.bearings.{number}.friction.torque"] = torques["friction.torque"]
-        total = total + torques["friction.torque"]
-    speed = operating.inner_speed - operating.outer_speed
-    return out | {"set.friction.torque": total, "set.friction.power": friction_torque.friction_power(total, speed)}
+    constants, speed = inputs["friction_constants"], _speed(inputs["operating"])
+    torques = [_ball_torques(inputs["bearing"], constants["f0"], constants["f1"], inputs["lubricant"], speed,
+                             results[f"set.bearings.{number}.force"][:3])["friction.torque"] for number in range(SET_SIZE)]
+    return ({f"set.bearings.{number}.friction.torque": torque for number, torque in enumerate(torques)}
+            | {"set.friction.torque": sum(torques), "set.friction.power": friction_torque.friction_power(sum(torques), speed)})
 
 
 def _shaft_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each of the shaft's bearings' Palmgren torque from its own load, and the shaft's together."""
-    layout, constants = inputs["shaft"], inputs["friction_constants"]
+    layout, constants, lubricant = inputs["shaft"], inputs["friction_constants"], inputs["lubricant"]
     torques = []
     for number, (bearing, f0) in enumerate(zip(layout.bearings, constants["f0"])):
         force = results["bearings.force"][number][:3]
-        if isinstance(bearing, tuple):
-            roller, raceways = bearing
-            found = _torques_at(roller.kind, f0, constants["f1"], inputs["lubricant"], layout.speed,
-                                raceways.pitch_diameter, *_split(force), None, None, raceways.cup_angle)
-        else:
-            found = _torques_at(bearing.kind, f0, constants["f1"], inputs["lubricant"], layout.speed,
-                                bearing.pitch_diameter, *_split(force),
-                                static_safety.ball_bearing_equivalent_static_load(bearing, force),
-                                static_safety.ball_bearing_static_load_rating(bearing))
+        found = (_roller_torques(*bearing, f0, constants["f1"], lubricant, layout.speed, force)
+                 if isinstance(bearing, tuple) else
+                 _ball_torques(bearing, f0, constants["f1"], lubricant, layout.speed, force))
         torques.append(found["friction.torque"])
-    total = sum(torques)
-    return {"bearings.friction.torque": jnp.stack(torques), "shaft.friction.torque": total,
-            "shaft.friction.power": friction_torque.friction_power(total, layout.speed)}
+    return {"bearings.friction.torque": jnp.stack(torques), "shaft.friction.torque": sum(torques),
+            "shaft.friction.power": friction_torque.friction_power(sum(torques), layout.speed)}
 
 
 OUTPUTS = (
