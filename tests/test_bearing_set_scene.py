@@ -37,12 +37,15 @@ def single(tmp_path, axial, overrides=()):
 
 def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
     """Issue 26: the DB pair of the packaged example under a pure axial load of 1.2 kN; each
-    bearing's displacement, ball loads, static safety, overrolling frequencies and friction torque
-    are the single bearing's under its own axial load, to 1e-9 (the set's torque their sum), with the
+    bearing's displacement, ball loads, static safety, overrolling frequencies, friction torque and
+    a_ISO life L10rm are the single bearing's under its own axial load, to 1e-9 (the set's torque
+    their sum), with the
     same [fidelity] (Brewe–Hamrock contacts, inner-raceway control); with no load each carries the
     500 N preload."""
+    # a hot oil and a dirty one, so that a_ISO stays below its cap of 50 (0.67 and 43)
     ratings = ["effects.safety=true", "effects.frequencies=true", "effects.friction=palmgren", "lubricant.preset=iso_vg_32",
-               "fidelity.hertz=brewe_hamrock", "fidelity.race_control=inner"]
+               "fidelity.hertz=brewe_hamrock", "fidelity.race_control=inner", "effects.life=true",
+               "lubricant.cleanliness=custom", "lubricant.contamination_factor=0.02", "lubricant.temperature=90 degC"]
     pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'] + ratings)
     assert bool(pair.values["set.converged"]) and "balls.inner.load" not in pair.values
     axial = [float(pair.values[f"set.bearings.{n}.force"][2]) for n in range(2)]
@@ -56,7 +59,7 @@ def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
                                    alone.values["balls.inner.load"], rtol=1e-9)
         for mine, theirs in (("iso76", "safety.iso76"), ("static_safety", "safety.static"),
                              ("frequencies.cage", "frequencies.cage"), ("frequencies.ball_spin", "frequencies.ball_spin"),
-                             ("friction.torque", "friction.torque")):
+                             ("friction.torque", "friction.torque"), ("L10rm", "life.L10rm"), ("a_iso", "life.a_iso_reference")):
             assert float(pair.values[f"set.bearings.{number}.{mine}"]) == pytest.approx(float(alone.values[theirs]),
                                                                                         rel=1e-9), mine
         torque += float(alone.values["friction.torque"])

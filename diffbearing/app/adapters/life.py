@@ -123,9 +123,8 @@ def _fatigue_load_limit(v, built) -> dict:
     return {"fatigue_load_limit": v.get("bearing.fatigue_load_limit")}
 
 
-def _modified(rolling_element, pitch, static_rating, rating, load, reference_life, inputs, operating) -> dict:
-    """κ, e_C, C_u, a_ISO and the modified lives of ISO 281 §9.3 (L10m) and ISO/TS 16281 (L10rm,
-    a_ISO at the reference equivalent load P_ref = C_r L10r^(−1/p))."""
+def _lubrication(rolling_element, pitch, static_rating, inputs, operating) -> dict:
+    """ν, ν₁, κ, e_C and C_u of ISO 281 §9.3 for a bearing of pitch diameter `pitch` [m] and C₀ [N]."""
     lubricant = inputs["lubricant"]
     viscosity = lubricant.viscosity / lubricant.density
     reference = life_modification.reference_viscosity(operating.inner_speed - operating.outer_speed, pitch)
@@ -135,14 +134,46 @@ def _modified(rolling_element, pitch, static_rating, rating, load, reference_lif
               else life_modification.contamination_factor(kappa, pitch, contamination["constants"]))
     given = inputs["fatigue_load_limit"]
     limit = life_modification.fatigue_load_limit(static_rating, pitch, rolling_element) if given is None else given
-    exponent = 3.0 if rolling_element == "ball" else 10.0 / 3.0
-    reference_load = rating * reference_life ** (-1.0 / exponent)
-    a_iso = life_modification.life_modification_factor(kappa, factor * limit / load, rolling_element)
-    a_reference = life_modification.life_modification_factor(kappa, factor * limit / reference_load, rolling_element)
     return {"life.kinematic_viscosity": viscosity, "life.reference_viscosity": reference, "life.viscosity_ratio": kappa,
-            "life.contamination_factor": factor, "life.fatigue_load_limit": limit, "life.a_iso": a_iso,
-            "life.L10m": a_iso * (rating / load) ** exponent, "life.reference_equivalent_load": reference_load,
-            "life.a_iso_reference": a_reference, "life.L10rm": a_reference * reference_life}
+            "life.contamination_factor": factor, "life.fatigue_load_limit": limit}
+
+
+def _reference_modified(rolling_element, lubrication, rating, reference_life):
+    """(P_ref = C_r L10r^(−1/p) [N], a_ISO at P_ref, L10rm = a_ISO L10r [10⁶ rev]) (ISO/TS 16281)."""
+    exponent = 3.0 if rolling_element == "ball" else 10.0 / 3.0
+    load = rating * reference_life ** (-1.0 / exponent)
+    a_iso = life_modification.life_modification_factor(
+        lubrication["life.viscosity_ratio"],
+        lubrication["life.contamination_factor"] * lubrication["life.fatigue_load_limit"] / load, rolling_element)
+    return load, a_iso, a_iso * reference_life
+
+
+def _modified(rolling_element, pitch, static_rating, rating, load, reference_life, inputs, operating) -> dict:
+    """κ, e_C, C_u, a_ISO and the modified lives of ISO 281 §9.3 (L10m) and ISO/TS 16281 (L10rm,
+    a_ISO at the reference equivalent load P_ref = C_r L10r^(−1/p))."""
+    lubrication = _lubrication(rolling_element, pitch, static_rating, inputs, operating)
+    exponent = 3.0 if rolling_element == "ball" else 10.0 / 3.0
+    a_iso = life_modification.life_modification_factor(
+        lubrication["life.viscosity_ratio"],
+        lubrication["life.contamination_factor"] * lubrication["life.fatigue_load_limit"] / load, rolling_element)
+    reference_load, a_reference, modified = _reference_modified(rolling_element, lubrication, rating, reference_life)
+    return lubrication | {"life.a_iso": a_iso, "life.L10m": a_iso * (rating / load) ** exponent,
+                          "life.reference_equivalent_load": reference_load, "life.a_iso_reference": a_reference,
+                          "life.L10rm": modified}
+
+
+def _set_modified(inputs: dict, settings: dict, results: dict) -> dict:
+    """κ, e_C, C_u of the set's bearings and each one's a_ISO at its P_ref and L10rm; the set's L10rm."""
+    bearing = inputs["bearing"]
+    lubrication = _lubrication("ball", bearing.pitch_diameter, static_safety.ball_bearing_static_load_rating(bearing),
+                               inputs, inputs["operating"])
+    out, lives = dict(lubrication), []
+    for number in range(SET_SIZE):
+        _, a_iso, modified = _reference_modified("ball", lubrication, results["life.basic_dynamic_load_rating"],
+                                                 results[f"set.bearings.{number}.L10r"])
+        out |= {f"set.bearings.{number}.a_iso": a_iso, f"set.bearings.{number}.L10rm": modified}
+        lives.append(modified)
+    return out | {"set.L10rm": life.system_life(jnp.stack(lives))}
 
 
 def _ball_modified(inputs: dict, settings: dict, results: dict) -> dict:
@@ -165,7 +196,8 @@ def _modified_checks(values: dict) -> tuple[list[str], list[str]]:
     if kappa < life_modification.KAPPA_RANGE[0]:
         warnings.append(f"viscosity ratio κ = {kappa:.3g} is below 0.1, outside ISO 281's a_ISO: a_ISO is taken at "
                         "κ = 0.1")
-    if float(values["life.a_iso"]) >= life_modification.A_ISO_CAP:
+    factors = [key for key in ("life.a_iso", *(f"set.bearings.{n}.a_iso" for n in range(SET_SIZE))) if key in values]
+    if any(float(values[key]) >= life_modification.A_ISO_CAP for key in factors):
         warnings.append("a_ISO reaches ISO 281's cap of 50 (load at or below the fatigue load limit)")
     return [], warnings
 
@@ -270,6 +302,22 @@ ADAPTER = register(Adapter(
         compute=_roller_modified,
         checks=_modified_checks,
         scene_keys=WHOLE_BEARING + MODIFIED,
+    ), Block(
+        name="set_modified_life",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("life", True),
+        requires=("set_life",),
+        inputs=("bearing", "operating", "lubricant", "contamination", "fatigue_load_limit"),
+        outputs=(*_MODIFIED_OUTPUTS[:5],
+                 *(output for number in range(SET_SIZE) for output in (
+                     Output(f"set.bearings.{number}.a_iso", "", "", f"bearing {number}: a_ISO at its P_ref"),
+                     Output(f"set.bearings.{number}.L10rm", "1e6 rev", "1e6 rev",
+                            f"bearing {number}: modified reference life L10rm"))),
+                 Output("set.L10rm", "1e6 rev", "1e6 rev",
+                        "modified reference life of the set, (Σ L10rm^(−10/9))^(−9/10)")),
+        compute=_set_modified,
+        checks=_modified_checks,
+        scene_keys=SET + MODIFIED,
     )),
     sweep_columns=_sweep_columns,
 ))
