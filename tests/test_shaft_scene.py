@@ -22,12 +22,13 @@ def _run(tmp_path, text, name):
 def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     """Issue 26: the 6411E alone on a shaft (at z = 40 mm, loaded there, turned "-z" with the load
     turned too) against the single-bearing scene: its displacement in its own frame, its load, its
-    largest ball load, its L10r, its static safety, overrolling frequencies and friction torque to
-    1e-9, with the same [fidelity] (Brewe–Hamrock contacts, inner-raceway control); the shaft's life
-    and friction are that bearing's."""
+    largest ball load, its L10r and a_ISO life L10rm, its static safety, overrolling frequencies and
+    friction torque to 1e-9, with the same [fidelity] (Brewe–Hamrock contacts, inner-raceway
+    control); the shaft's lives and friction are that bearing's."""
     effects = ('[effects]\nlife = true\nsafety = true\nfrequencies = true\nfriction = "palmgren"\n'
                '[fidelity]\nhertz = "brewe_hamrock"\nrace_control = "inner"\n'
-               '[lubricant]\npreset = "iso_vg_68"\ntemperature = "60 degC"\nsupply = "grease"\n')
+               '[lubricant]\npreset = "iso_vg_68"\ntemperature = "90 degC"\nsupply = "grease"\ncleanliness = "custom"\n'
+               'contamination_factor = 0.05\n')
     shaft = _run(tmp_path, ENTRY + 'position = "40 mm"\norientation = "-z"\n[shaft]\nspeed = "3000 rpm"\n'
                  f'[[loads]]\nposition = "40 mm"\nforce = ["{LOAD[0]}", "-{LOAD[1]}", "-{LOAD[2]}"]\n' + effects,
                  "shaft.toml")
@@ -52,6 +53,9 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     assert float(shaft.values["bearings.friction.torque"][0]) == pytest.approx(float(single.values["friction.torque"]),
                                                                                rel=1e-9)
     assert float(shaft.values["shaft.friction.power"]) == pytest.approx(float(single.values["friction.power"]), rel=1e-9)
+    assert float(shaft.values["bearings.a_iso"][0]) == pytest.approx(float(single.values["life.a_iso_reference"]), rel=1e-9)
+    assert 0.1 < float(shaft.values["bearings.a_iso"][0]) < 50.0
+    assert float(shaft.values["shaft.L10rm"]) == pytest.approx(float(single.values["life.L10rm"]), rel=1e-9)
 
 
 @pytest.mark.slow

@@ -3,6 +3,7 @@ ISO/TS 16281 reference rating life from the solved load distribution (balls, or 
 laminae)."""
 
 import jax.numpy as jnp
+import numpy as np
 
 from ... import life, life_modification, roller_life, static_safety
 from ...params import BALL_BEARING_KINDS, check_range
@@ -11,6 +12,8 @@ from ..formatting import column
 from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
 from .bearing_set import SET, SET_SIZE
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+
+SHAFT = ("shaft",)  # the shaft adapter's bearing type (it imports this module)
 
 
 def _life(inputs: dict, settings: dict, results: dict) -> dict:
@@ -123,16 +126,17 @@ def _fatigue_load_limit(v, built) -> dict:
     return {"fatigue_load_limit": v.get("bearing.fatigue_load_limit")}
 
 
-def _lubrication(rolling_element, pitch, static_rating, inputs, operating) -> dict:
-    """ν, ν₁, κ, e_C and C_u of ISO 281 §9.3 for a bearing of pitch diameter `pitch` [m] and C₀ [N]."""
+def _lubrication(rolling_element, pitch, static_rating, inputs, speed) -> dict:
+    """ν, ν₁, κ, e_C and C_u of ISO 281 §9.3 for a bearing of pitch diameter `pitch` [m] and C₀ [N]
+    at the relative ring speed `speed` [rad/s] (C_u the scene's where it gives one)."""
     lubricant = inputs["lubricant"]
     viscosity = lubricant.viscosity / lubricant.density
-    reference = life_modification.reference_viscosity(operating.inner_speed - operating.outer_speed, pitch)
+    reference = life_modification.reference_viscosity(speed, pitch)
     kappa = viscosity / reference
     contamination = inputs["contamination"]
     factor = (contamination["factor"] if "factor" in contamination
               else life_modification.contamination_factor(kappa, pitch, contamination["constants"]))
-    given = inputs["fatigue_load_limit"]
+    given = inputs.get("fatigue_load_limit")
     limit = life_modification.fatigue_load_limit(static_rating, pitch, rolling_element) if given is None else given
     return {"life.kinematic_viscosity": viscosity, "life.reference_viscosity": reference, "life.viscosity_ratio": kappa,
             "life.contamination_factor": factor, "life.fatigue_load_limit": limit}
@@ -151,7 +155,8 @@ def _reference_modified(rolling_element, lubrication, rating, reference_life):
 def _modified(rolling_element, pitch, static_rating, rating, load, reference_life, inputs, operating) -> dict:
     """κ, e_C, C_u, a_ISO and the modified lives of ISO 281 §9.3 (L10m) and ISO/TS 16281 (L10rm,
     a_ISO at the reference equivalent load P_ref = C_r L10r^(−1/p))."""
-    lubrication = _lubrication(rolling_element, pitch, static_rating, inputs, operating)
+    lubrication = _lubrication(rolling_element, pitch, static_rating, inputs,
+                               operating.inner_speed - operating.outer_speed)
     exponent = 3.0 if rolling_element == "ball" else 10.0 / 3.0
     a_iso = life_modification.life_modification_factor(
         lubrication["life.viscosity_ratio"],
@@ -165,8 +170,9 @@ def _modified(rolling_element, pitch, static_rating, rating, load, reference_lif
 def _set_modified(inputs: dict, settings: dict, results: dict) -> dict:
     """κ, e_C, C_u of the set's bearings and each one's a_ISO at its P_ref and L10rm; the set's L10rm."""
     bearing = inputs["bearing"]
+    operating = inputs["operating"]
     lubrication = _lubrication("ball", bearing.pitch_diameter, static_safety.ball_bearing_static_load_rating(bearing),
-                               inputs, inputs["operating"])
+                               inputs, operating.inner_speed - operating.outer_speed)
     out, lives = dict(lubrication), []
     for number in range(SET_SIZE):
         _, a_iso, modified = _reference_modified("ball", lubrication, results["life.basic_dynamic_load_rating"],
@@ -174,6 +180,29 @@ def _set_modified(inputs: dict, settings: dict, results: dict) -> dict:
         out |= {f"set.bearings.{number}.a_iso": a_iso, f"set.bearings.{number}.L10rm": modified}
         lives.append(modified)
     return out | {"set.L10rm": life.system_life(jnp.stack(lives))}
+
+
+def _shaft_modified(inputs: dict, settings: dict, results: dict) -> dict:
+    """Each of the shaft's bearings' κ, a_ISO at its P_ref and L10rm (ISO 281 Annex B's C_u), and the
+    shaft's L10rm."""
+    layout = inputs["shaft"]
+    kappas, factors, lives = [], [], []
+    for number, bearing in enumerate(layout.bearings):
+        if isinstance(bearing, tuple):
+            roller, raceways = bearing
+            element, pitch = "roller", raceways.pitch_diameter
+            static_rating = static_safety.roller_bearing_static_load_rating(roller, raceways)
+            rating, _ = roller_load_ratings(roller, raceways)
+        else:
+            element, pitch = "ball", bearing.pitch_diameter
+            static_rating, rating = static_safety.ball_bearing_static_load_rating(bearing), ball_load_rating(bearing)
+        lubrication = _lubrication(element, pitch, static_rating, inputs, layout.speed)
+        _, a_iso, modified = _reference_modified(element, lubrication, rating, results["bearings.L10r"][number])
+        kappas.append(lubrication["life.viscosity_ratio"])
+        factors.append(a_iso)
+        lives.append(modified)
+    return {"bearings.viscosity_ratio": jnp.stack(kappas), "bearings.a_iso": jnp.stack(factors),
+            "bearings.L10rm": jnp.stack(lives), "shaft.L10rm": life.system_life(jnp.stack(lives))}
 
 
 def _ball_modified(inputs: dict, settings: dict, results: dict) -> dict:
@@ -192,12 +221,13 @@ def _roller_modified(inputs: dict, settings: dict, results: dict) -> dict:
 
 def _modified_checks(values: dict) -> tuple[list[str], list[str]]:
     warnings = []
-    kappa = float(values["life.viscosity_ratio"])
+    kappa = float(np.min(values.get("life.viscosity_ratio", values.get("bearings.viscosity_ratio"))))
     if kappa < life_modification.KAPPA_RANGE[0]:
         warnings.append(f"viscosity ratio κ = {kappa:.3g} is below 0.1, outside ISO 281's a_ISO: a_ISO is taken at "
                         "κ = 0.1")
-    factors = [key for key in ("life.a_iso", *(f"set.bearings.{n}.a_iso" for n in range(SET_SIZE))) if key in values]
-    if any(float(values[key]) >= life_modification.A_ISO_CAP for key in factors):
+    factors = [key for key in ("life.a_iso", "bearings.a_iso", *(f"set.bearings.{n}.a_iso" for n in range(SET_SIZE)))
+               if key in values]
+    if any(np.max(values[key]) >= life_modification.A_ISO_CAP for key in factors):
         warnings.append("a_ISO reaches ISO 281's cap of 50 (load at or below the fatigue load limit)")
     return [], warnings
 
@@ -218,8 +248,8 @@ _MODIFIED_OUTPUTS = (
 
 
 def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
-    key = "life.L10r" if "life.L10r" in values else "set.L10r"
-    return [column("L10r [1e6 rev]", values[key])]
+    key = next((key for key in ("life.L10r", "set.L10r", "shaft.L10r") if key in values), None)
+    return [] if key is None else [column("L10r [1e6 rev]", values[key])]
 
 
 _ROLLER_OUTPUTS = (
@@ -232,7 +262,7 @@ _ROLLER_OUTPUTS = (
 
 ADAPTER = register(Adapter(
     name="life",
-    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT,
     keys={"effects.life": Key("boolean"),
           "bearing.dynamic_load_rating": quantity("force", "basic dynamic load rating C_r (else ISO 281 from the geometry)"),
           "bearing.fatigue_load_limit": quantity("force", "fatigue load limit C_u (else ISO 281 Annex B from C0)"),
@@ -243,7 +273,8 @@ ADAPTER = register(Adapter(
           "lubricant.supply": SUPPLY_KEY,
           "lubricant.contamination_factor": Key("number", doc="e_C given directly (lubricant.cleanliness = custom)")},
     inputs=(InputBuilder(("load_rating",), ROLLER_KINDS, _load_rating, scene_keys=WHOLE_BEARING),
-            InputBuilder(("contamination",), BALL_BEARING_KINDS + ROLLER_KINDS, _contamination, scene_keys=MODIFIED),
+            InputBuilder(("contamination",), BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT, _contamination,
+                         scene_keys=MODIFIED),
             InputBuilder(("fatigue_load_limit",), BALL_BEARING_KINDS + ROLLER_KINDS, _fatigue_load_limit)),
     blocks=(Block(
         name="life",
@@ -318,6 +349,21 @@ ADAPTER = register(Adapter(
         compute=_set_modified,
         checks=_modified_checks,
         scene_keys=SET + MODIFIED,
+    ), Block(
+        name="shaft_modified_life",
+        bearing_types=SHAFT,
+        enabled_by=("life", True),
+        requires=("shaft",),
+        inputs=("shaft", "lubricant", "contamination"),
+        outputs=(Output("bearings.viscosity_ratio", "", "", "each bearing's viscosity ratio κ = ν/ν1", in_report=False),
+                 Output("bearings.a_iso", "", "", "each bearing's a_ISO at its P_ref", in_report=False),
+                 Output("bearings.L10rm", "1e6 rev", "1e6 rev", "each bearing's modified reference life L10rm",
+                        in_report=False),
+                 Output("shaft.L10rm", "1e6 rev", "1e6 rev",
+                        "modified reference life of the shaft's bearings, (Σ L10rm^(−10/9))^(−9/10)")),
+        compute=_shaft_modified,
+        checks=_modified_checks,
+        scene_keys=MODIFIED,
     )),
     sweep_columns=_sweep_columns,
 ))
