@@ -29,6 +29,8 @@ import jax
 import jax.numpy as jnp
 
 from . import kinematics
+from .roller_equilibrium import directions
+from .roller_geometry import roller_diameter
 
 
 class OverrollingFrequencies(eqx.Module):
@@ -116,3 +118,19 @@ def roller_bearing_frequencies(inner_speed, outer_speed, roller_count, roller_di
     outer_radius = 0.5 * (pitch_diameter + roller_diameter * jnp.cos(cup_angle))
     cage = pure_rolling_cage_speed(inner_speed, outer_speed, inner_radius, outer_radius)
     return element_frequencies(inner_speed, outer_speed, cage, roller_count, roller_diameter, outer_radius)
+
+
+def frequencies_of_balls(bearing, inner_speed, outer_speed, contact_angle_inner, contact_angle_outer, inner_load,
+                         race_control="outer") -> OverrollingFrequencies:
+    """`ball_bearing_frequencies` [Hz] of a `params.BallBearing` at its balls' solved angles and loads."""
+    return ball_bearing_frequencies(inner_speed, outer_speed, bearing.ball_count, bearing.ball_diameter,
+                                    bearing.pitch_diameter, contact_angle_inner, contact_angle_outer, inner_load,
+                                    race_control)
+
+
+def frequencies_of_rollers(bearing, raceways, inner_speed, outer_speed) -> OverrollingFrequencies:
+    """`roller_bearing_frequencies` [Hz] of a `roller_geometry.RollerBearing` in its
+    `roller_equilibrium.RollerRaceways` (cone and cup angles, mid-length diameter)."""
+    angles = directions(bearing, raceways)
+    return roller_bearing_frequencies(inner_speed, outer_speed, bearing.roller_count, roller_diameter(bearing, 0.0),
+                                      raceways.pitch_diameter, angles.cone_angle, angles.cup_angle)

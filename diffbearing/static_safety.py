@@ -109,3 +109,14 @@ def pressure_safety(max_pressure, pressure_limit, exponent):
     (p_limit / p_max)^exponent, 3 for point and 2 for line contacts (inf where nothing is loaded)."""
     loaded = max_pressure > 0.0
     return jnp.where(loaded, (pressure_limit / jnp.where(loaded, max_pressure, 1.0)) ** exponent, jnp.inf)
+
+
+def bearing_static_safety(bearing, raceways, force, max_pressure):
+    """(C₀r [N], P₀r [N], pressure safety [-]) of a ball bearing (`raceways` None) or a whole roller
+    bearing with its raceways, under the load [Fx, Fy, Fz] [N] it carries and with its largest
+    contact pressure [Pa]."""
+    if raceways is None:
+        return (ball_bearing_static_load_rating(bearing), ball_bearing_equivalent_static_load(bearing, force),
+                pressure_safety(max_pressure, BALL_PRESSURE_LIMIT, POINT_CONTACT_EXPONENT))
+    return (roller_bearing_static_load_rating(bearing, raceways), roller_equivalent_static_load(force, raceways.cup_angle),
+            pressure_safety(max_pressure, ROLLER_PRESSURE_LIMIT, LINE_CONTACT_EXPONENT))

@@ -31,6 +31,10 @@ import numpy as np
 
 from .stored_models import compile_stored
 
+# The bearing type of a scene with [[bearings]]: a shaft on several bearings (adapters/shaft.py).
+SHAFT_TYPE = "shaft"
+SHAFT = (SHAFT_TYPE,)
+
 
 @dataclasses.dataclass(frozen=True)
 class Key:

@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from .model import build_model
+from .registry import SHAFT_TYPE
 from .scene import Scene, load_scene
 from .sweep import run_sweep
 
@@ -31,7 +32,7 @@ def _stiffness_scene(scene) -> Scene:
     scene = scene if isinstance(scene, Scene) else load_scene(scene)
     if scene.sweep:
         raise ValueError("scene: give a scene without a [sweep] table (the speeds and loads are swept here)")
-    if scene.bearing_type == "shaft" or "bearing.arrangement" in scene.values:
+    if scene.bearing_type == SHAFT_TYPE or "bearing.arrangement" in scene.values:
         raise ValueError("scene: one bearing (a ball or whole roller bearing scene), not a set or a shaft")
     return dataclasses.replace(scene, values={**scene.values, "effects.stiffness": True})
 

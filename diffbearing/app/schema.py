@@ -10,7 +10,7 @@ bearings: its type is "shaft" (adapters/shaft.py).
 import difflib
 
 from . import adapters  # noqa: F401  (registers the built-in adapters)
-from .registry import ADAPTERS, Key, adapters_for, all_keys
+from .registry import ADAPTERS, SHAFT_TYPE, Key, adapters_for, all_keys
 from .units import to_si
 
 def bearing_types() -> tuple[str, ...]:
@@ -98,7 +98,7 @@ def validate(document: dict) -> dict[str, object]:
         else:
             flat[table] = convert(table, content)
     if "bearing.type" not in flat and "bearings" in flat:
-        flat["bearing.type"] = "shaft"  # [[bearings]]: a shaft on several bearings (adapters/shaft.py)
+        flat["bearing.type"] = SHAFT_TYPE  # [[bearings]]: a shaft on several bearings (adapters/shaft.py)
     if "bearing.type" not in flat:
         raise ValueError("missing required key 'bearing.type'")
     required_keys = [key for adapter in adapters_for(flat["bearing.type"])

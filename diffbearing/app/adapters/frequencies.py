@@ -5,9 +5,9 @@ bearing, the free contact angle α0 for an angular-contact one)."""
 
 import functools
 
-from ... import overrolling, roller_equilibrium
+from ... import life, overrolling
 from ...params import BALL_BEARING_KINDS
-from ...roller_geometry import ROLLER_KINDS, roller_diameter
+from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Block, Key, Output, register
 from .ball import ball_model
 from .bearing_set import SET, SET_SIZE
@@ -23,31 +23,28 @@ def _keyed(frequencies: overrolling.OverrollingFrequencies, prefix: str) -> dict
     return {f"{prefix}.{field}": getattr(frequencies, field) for field, _, _ in FIELDS}
 
 
-def _ball_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, operating = inputs["bearing"], inputs["operating"]
-    at_speeds = functools.partial(overrolling.ball_bearing_frequencies, ball_count=bearing.ball_count,
-                                  ball_diameter=bearing.ball_diameter, pitch_diameter=bearing.pitch_diameter,
-                                  contact_angle_inner=results["balls.inner.contact_angle"],
-                                  contact_angle_outer=results["balls.outer.contact_angle"],
-                                  inner_load=results["balls.inner.load"], race_control=ball_model(settings).race_control)
-    nominal_angle = 0.0 if bearing.kind == "deep_groove_ball" else bearing.free_contact_angle
-    nominal = overrolling.nominal_frequencies(operating.inner_speed, operating.outer_speed, bearing.ball_count,
-                                              bearing.ball_diameter, bearing.pitch_diameter, nominal_angle)
-    return (_keyed(at_speeds(operating.inner_speed, operating.outer_speed), "frequencies")
-            | _keyed(overrolling.per_revolution(at_speeds, operating.inner_speed, operating.outer_speed),
-                     "frequencies.orders")
-            | _keyed(nominal, "frequencies.nominal"))
-
-
-def _roller_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, raceways, operating = inputs["bearing"], inputs["raceways"], inputs["operating"]
-    angles = roller_equilibrium.directions(bearing, raceways)
-    at_speeds = functools.partial(overrolling.roller_bearing_frequencies, roller_count=bearing.roller_count,
-                                  roller_diameter=roller_diameter(bearing, 0.0), pitch_diameter=raceways.pitch_diameter,
-                                  cone_angle=angles.cone_angle, cup_angle=angles.cup_angle)
+def _with_orders(at_speeds, operating) -> dict:
+    """The frequencies at the operating speeds and their orders (`overrolling.per_revolution`)."""
     return (_keyed(at_speeds(operating.inner_speed, operating.outer_speed), "frequencies")
             | _keyed(overrolling.per_revolution(at_speeds, operating.inner_speed, operating.outer_speed),
                      "frequencies.orders"))
+
+
+def _ball_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    at_speeds = functools.partial(overrolling.frequencies_of_balls, bearing,
+                                  contact_angle_inner=results["balls.inner.contact_angle"],
+                                  contact_angle_outer=results["balls.outer.contact_angle"],
+                                  inner_load=results["balls.inner.load"], race_control=ball_model(settings).race_control)
+    nominal = overrolling.nominal_frequencies(operating.inner_speed, operating.outer_speed, bearing.ball_count,
+                                              bearing.ball_diameter, bearing.pitch_diameter,
+                                              life.nominal_contact_angle(bearing))
+    return _with_orders(at_speeds, operating) | _keyed(nominal, "frequencies.nominal")
+
+
+def _roller_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
+    return _with_orders(functools.partial(overrolling.frequencies_of_rollers, inputs["bearing"], inputs["raceways"]),
+                        inputs["operating"])
 
 
 def _set_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
@@ -55,11 +52,10 @@ def _set_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
     out = {}
     for number in range(SET_SIZE):
         prefix = f"set.bearings.{number}."
-        found = overrolling.ball_bearing_frequencies(
-            operating.inner_speed, operating.outer_speed, bearing.ball_count, bearing.ball_diameter,
-            bearing.pitch_diameter, results[prefix + "balls.inner.contact_angle"],
-            results[prefix + "balls.outer.contact_angle"], results[prefix + "balls.inner.load"],
-            ball_model(settings).race_control)
+        found = overrolling.frequencies_of_balls(bearing, operating.inner_speed, operating.outer_speed,
+                                                 results[prefix + "balls.inner.contact_angle"],
+                                                 results[prefix + "balls.outer.contact_angle"],
+                                                 results[prefix + "balls.inner.load"], ball_model(settings).race_control)
         out |= _keyed(found, prefix + "frequencies")
     return out
 

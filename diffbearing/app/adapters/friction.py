@@ -7,10 +7,9 @@ import jax.numpy as jnp
 from ... import friction_torque, static_safety
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
-from ..registry import Adapter, Block, InputBuilder, Key, Output, register
+from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, register
 from .bearing_set import SET, SET_SIZE
 from .life import SUPPLY_KEY
-from .shaft import SHAFT
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 FRICTION_MODELS = ("palmgren",)

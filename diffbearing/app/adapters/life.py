@@ -9,11 +9,9 @@ from ... import life, life_modification, roller_life, static_safety
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import column
-from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
 from .bearing_set import SET, SET_SIZE
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
-
-SHAFT = ("shaft",)  # the shaft adapter's bearing type (it imports this module)
 
 
 def _life(inputs: dict, settings: dict, results: dict) -> dict:

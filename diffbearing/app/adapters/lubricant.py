@@ -5,7 +5,7 @@ from ...params import (BALL_BEARING_KINDS, ISO_VG_VISCOSITY_100, LUBRICANTS, MIN
                        check_range, wooster_pressure_viscosity)
 from ...roller_geometry import ROLLER_KINDS
 from ...viscosity_temperature import REFERENCE_TEMPERATURES, walther_viscosity
-from ..registry import Adapter, InputBuilder, Key, quantity, register
+from ..registry import SHAFT, Adapter, InputBuilder, Key, quantity, register
 
 
 def _kinematic_pair(values) -> tuple | None:
@@ -61,7 +61,7 @@ def _roughness(values, built) -> dict:
     return {"roughness": _as_float(values["material.roughness"])}
 
 
-TYPES = BALL_BEARING_KINDS + ROLLER_KINDS + ("shaft",)  # a shaft's bearings share its lubricant
+TYPES = BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT  # a shaft's bearings share its lubricant
 
 ADAPTER = register(Adapter(
     name="lubricant",

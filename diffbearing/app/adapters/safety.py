@@ -29,50 +29,43 @@ def _outputs(exponent: str, minimum: str) -> tuple[Output, ...]:
     )
 
 
-def _safety(rating, load, pressure, limit, exponent, equivalent_load, minimum, operating) -> dict:
+def _largest_pressure(results, prefix: str):
+    return jnp.maximum(jnp.max(results[f"{prefix}.inner.max_pressure"]), jnp.max(results[f"{prefix}.outer.max_pressure"]))
+
+
+def _safety(bearing, raceways, force, pressure, equivalent_load, minimum, operating) -> dict:
+    rating, load, safety = static_safety.bearing_static_safety(bearing, raceways, force, pressure)
+    limit = static_safety.BALL_PRESSURE_LIMIT if raceways is None else static_safety.ROLLER_PRESSURE_LIMIT
     return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
-            "safety.max_pressure": pressure, "safety.pressure_limit": limit,
-            "safety.static": static_safety.pressure_safety(pressure, limit, exponent),
+            "safety.max_pressure": pressure, "safety.pressure_limit": limit, "safety.static": safety,
             "safety.equivalent_load": equivalent_load, "safety.minimum_load": minimum,
             "safety.speed": jnp.abs(operating.inner_speed - operating.outer_speed)}
 
 
-def _largest_pressure(results, elements: str):
-    return jnp.maximum(jnp.max(results[f"{elements}.inner.max_pressure"]), jnp.max(results[f"{elements}.outer.max_pressure"]))
-
-
 def _ball_safety(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, force = inputs["bearing"], results["force"][:3]
-    return _safety(static_safety.ball_bearing_static_load_rating(bearing),
-                   static_safety.ball_bearing_equivalent_static_load(bearing, force), _largest_pressure(results, "balls"),
-                   static_safety.BALL_PRESSURE_LIMIT, static_safety.POINT_CONTACT_EXPONENT,
-                   life.equivalent_dynamic_load(bearing, force), minimum_load(ball_load_rating(bearing), "ball"),
-                   inputs["operating"])
+    return _safety(bearing, None, force, _largest_pressure(results, "balls"), life.equivalent_dynamic_load(bearing, force),
+                   minimum_load(ball_load_rating(bearing), "ball"), inputs["operating"])
 
 
 def _roller_safety(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, raceways, force = inputs["bearing"], inputs["raceways"], results["force"][:3]
     dynamic_rating, _ = roller_load_ratings(bearing, raceways, inputs["load_rating"])
-    return _safety(static_safety.roller_bearing_static_load_rating(bearing, raceways),
-                   static_safety.roller_equivalent_static_load(force, raceways.cup_angle),
-                   _largest_pressure(results, "rollers"), static_safety.ROLLER_PRESSURE_LIMIT,
-                   static_safety.LINE_CONTACT_EXPONENT, roller_life.roller_equivalent_dynamic_load(force, raceways.cup_angle),
+    return _safety(bearing, raceways, force, _largest_pressure(results, "rollers"),
+                   roller_life.roller_equivalent_dynamic_load(force, raceways.cup_angle),
                    minimum_load(dynamic_rating, "roller"), inputs["operating"])
 
 
 def _set_safety(inputs: dict, settings: dict, results: dict) -> dict:
     """C₀ of the set's bearings, and each bearing's P₀, s₀ and pressure safety from its own load."""
     bearing = inputs["bearing"]
-    rating = static_safety.ball_bearing_static_load_rating(bearing)
-    out = {"set.static_load_rating": rating}
+    out = {}
     for number in range(SET_SIZE):
         prefix = f"set.bearings.{number}."
-        load = static_safety.ball_bearing_equivalent_static_load(bearing, results[prefix + "force"][:3])
-        pressure = jnp.maximum(jnp.max(results[prefix + "balls.inner.max_pressure"]),
-                               jnp.max(results[prefix + "balls.outer.max_pressure"]))
-        out |= {prefix + "equivalent_static_load": load, prefix + "iso76": rating / load,
-                prefix + "static_safety": static_safety.pressure_safety(pressure, static_safety.BALL_PRESSURE_LIMIT,
-                                                                         static_safety.POINT_CONTACT_EXPONENT)}
+        rating, load, safety = static_safety.bearing_static_safety(bearing, None, results[prefix + "force"][:3],
+                                                                   _largest_pressure(results, prefix + "balls"))
+        out |= {"set.static_load_rating": rating, prefix + "equivalent_static_load": load, prefix + "iso76": rating / load,
+                prefix + "static_safety": safety}
     return out
 
 

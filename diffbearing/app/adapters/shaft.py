@@ -16,12 +16,12 @@ import numpy as np
 from ... import ball_validity, life, overrolling, static_safety
 from ...ball_equilibrium import ball_results
 from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
-from ...roller_equilibrium import RollerOperating, directions, roller_results
-from ...roller_geometry import ROLLER_KINDS, roller_diameter
+from ...roller_equilibrium import RollerOperating, roller_results
+from ...roller_geometry import ROLLER_KINDS
 from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport, Shaft, ShaftLoads,
                                   shaft_stiffness, solve_shaft, transfer, turned)
 from ..formatting import format_number, stiffness_lines
-from ..registry import Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
+from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
 from ..units import to_si
 from .ball import ADAPTER as BALL_ADAPTER
 from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
@@ -31,7 +31,6 @@ from .roller import scene_roller_bearing
 from .roller_bearing import ADAPTER as ROLLER_BEARING_ADAPTER
 from .roller_bearing import roller_model, scene_raceways
 
-SHAFT = ("shaft",)
 # the [fidelity] keys of the ball and roller bearing models, read by the shaft's block for every bearing
 FIDELITY = {key: dataclasses.replace(adapter.keys[key], read_by=("shaft",))
             for adapter, names in ((BALL_ADAPTER, ("fidelity.hertz", "fidelity.race_control", "fidelity.hertz_constants")),
@@ -156,32 +155,20 @@ def _life(support, elements):
 
 
 def _static_safety(support, elements, force):
-    """(C₀ [N], P₀ [N], static safety of the largest pressure [-]) of one bearing (`static_safety`),
-    `force` its load in its own frame."""
+    """(C₀ [N], P₀ [N], static safety of the largest pressure [-]) of one bearing, `force` its load
+    in its own frame (`static_safety.bearing_static_safety`)."""
     pressure = jnp.maximum(jnp.max(elements.inner_max_pressure), jnp.max(elements.outer_max_pressure))
-    if isinstance(support, BallSupport):
-        return (static_safety.ball_bearing_static_load_rating(support.bearing),
-                static_safety.ball_bearing_equivalent_static_load(support.bearing, force[:3]),
-                static_safety.pressure_safety(pressure, static_safety.BALL_PRESSURE_LIMIT,
-                                              static_safety.POINT_CONTACT_EXPONENT))
-    return (static_safety.roller_bearing_static_load_rating(support.bearing, support.raceways),
-            static_safety.roller_equivalent_static_load(force[:3], support.raceways.cup_angle),
-            static_safety.pressure_safety(pressure, static_safety.ROLLER_PRESSURE_LIMIT,
-                                          static_safety.LINE_CONTACT_EXPONENT))
+    raceways = support.raceways if isinstance(support, RollerSupport) else None
+    return static_safety.bearing_static_safety(support.bearing, raceways, force[:3], pressure)
 
 
 def _frequencies(support, elements, speed):
     """One bearing's `overrolling.OverrollingFrequencies` [Hz], outer ring standing still."""
     if isinstance(support, BallSupport):
-        bearing = support.bearing
-        return overrolling.ball_bearing_frequencies(speed, 0.0, bearing.ball_count, bearing.ball_diameter,
-                                                    bearing.pitch_diameter, elements.inner_contact_angle,
-                                                    elements.outer_contact_angle, elements.inner_load,
-                                                    support.model.race_control)
-    angles = directions(support.bearing, support.raceways)
-    return overrolling.roller_bearing_frequencies(speed, 0.0, support.bearing.roller_count,
-                                                  roller_diameter(support.bearing, 0.0),
-                                                  support.raceways.pitch_diameter, angles.cone_angle, angles.cup_angle)
+        return overrolling.frequencies_of_balls(support.bearing, speed, 0.0, elements.inner_contact_angle,
+                                                elements.outer_contact_angle, elements.inner_load,
+                                                support.model.race_control)
+    return overrolling.frequencies_of_rollers(support.bearing, support.raceways, speed, 0.0)
 
 
 FREQUENCIES = ("cage", "ball_pass_outer", "ball_pass_inner", "ball_spin")
