@@ -37,6 +37,10 @@ def test_walther_viscosity():
     for temperature, want in ((313.15, 120e-6), (373.15, 12e-6)):
         assert float(walther_viscosity(120e-6, 12e-6, temperature)) == pytest.approx(want, rel=1e-12)
     assert float(walther_viscosity(120e-6, 12e-6, 353.15)) * 1e6 == pytest.approx(2.08 * 10.4, rel=0.01)
+    nu = lambda point: walther_viscosity(point[0], point[1], point[2])  # noqa: E731
+    point, direction = jax.numpy.array([120e-6, 12e-6, 353.15]), jax.numpy.array([5e-6, -1e-6, 10.0])
+    _, tangent = jax.jvp(nu, (point,), (direction,))
+    assert float(tangent) == pytest.approx(float(central_difference_jvp(nu, point, direction, 1e-4)), rel=1e-7)
 
 
 def test_a_iso_of_the_krw_worked_example():

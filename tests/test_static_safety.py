@@ -1,6 +1,7 @@
 """Effect `safety`: ISO 76 C₀ and P₀ against the standard's tables and catalogue ratings, the safety
 of the computed pressure against ISO 76's definition of C₀, and the minimum-load warning."""
 
+import equinox as eqx
 import jax.numpy as jnp
 import numpy as np
 import pytest
@@ -9,7 +10,7 @@ from diffbearing import Material, Operating, ball_bearing, ball_results, build_m
 from diffbearing import raceway_contact, solve_equilibrium, static_safety
 from diffbearing.app.adapters.ball import ball_model
 
-from .helpers import example_scene
+from .helpers import assert_jvp_matches_central_difference, example_scene
 
 ISO_STEEL = Material(207e9, 0.3, 7830.0, name="iso_76_steel")  # ISO/TR 10657's E and ν
 
@@ -135,3 +136,19 @@ def test_minimum_load_warns_only_when_turning(speed, warned):
     assert any("below the minimum load" in line for line in warnings) == warned
     assert float(result.values["safety.minimum_load"]) == pytest.approx(
         0.02 * float(result.values["life.basic_dynamic_load_rating"]), rel=1e-14)
+
+
+def test_static_safety_derivatives():
+    """d(C₀, P₀, pressure safety)/d(force, pitch diameter, p_max) of a 40° bearing against a central
+    difference, forward and reverse."""
+    bearing = ball_bearing(ball_diameter=11.906e-3, pitch_diameter=60e-3, balls=9, inner_groove_ratio=0.52,
+                           outer_groove_ratio=0.53, contact_angle=np.radians(40.0))
+
+    def safety(point):
+        force, pitch, pressure = point
+        return static_safety.bearing_static_safety(eqx.tree_at(lambda b: b.pitch_diameter, bearing, pitch), None,
+                                                   force, pressure)
+
+    point = (jnp.array([1000.0, 300.0, 2000.0]), jnp.asarray(60e-3), jnp.asarray(2.5e9))
+    direction = (jnp.array([50.0, -20.0, 80.0]), jnp.asarray(1e-3), jnp.asarray(1e8))
+    assert_jvp_matches_central_difference(safety, point, direction, 1e-3, rtol=1e-6)

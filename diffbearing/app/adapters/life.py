@@ -140,13 +140,20 @@ def _lubrication(rolling_element, pitch, static_rating, inputs, speed) -> dict:
             "life.contamination_factor": factor, "life.fatigue_load_limit": limit}
 
 
-def _reference_modified(rolling_element, lubrication, rating, reference_life):
-    """(P_ref = C_r L10r^(−1/p) [N], a_ISO at P_ref, L10rm = a_ISO L10r [10⁶ rev]) (ISO/TS 16281)."""
-    exponent = 3.0 if rolling_element == "ball" else 10.0 / 3.0
-    load = rating * reference_life ** (-1.0 / exponent)
-    a_iso = life_modification.life_modification_factor(
+LIFE_EXPONENTS = {"ball": 3.0, "roller": 10.0 / 3.0}  # p of L = (C/P)^p, ISO 281
+
+
+def _a_iso(rolling_element, lubrication, load):
+    """a_ISO [-] at the equivalent load `load` [N] with the bearing's κ, e_C and C_u."""
+    return life_modification.life_modification_factor(
         lubrication["life.viscosity_ratio"],
         lubrication["life.contamination_factor"] * lubrication["life.fatigue_load_limit"] / load, rolling_element)
+
+
+def _reference_modified(rolling_element, lubrication, rating, reference_life):
+    """(P_ref = C_r L10r^(−1/p) [N], a_ISO at P_ref, L10rm = a_ISO L10r [10⁶ rev]) (ISO/TS 16281)."""
+    load = rating * reference_life ** (-1.0 / LIFE_EXPONENTS[rolling_element])
+    a_iso = _a_iso(rolling_element, lubrication, load)
     return load, a_iso, a_iso * reference_life
 
 
@@ -155,12 +162,9 @@ def _modified(rolling_element, pitch, static_rating, rating, load, reference_lif
     a_ISO at the reference equivalent load P_ref = C_r L10r^(−1/p))."""
     lubrication = _lubrication(rolling_element, pitch, static_rating, inputs,
                                operating.inner_speed - operating.outer_speed)
-    exponent = 3.0 if rolling_element == "ball" else 10.0 / 3.0
-    a_iso = life_modification.life_modification_factor(
-        lubrication["life.viscosity_ratio"],
-        lubrication["life.contamination_factor"] * lubrication["life.fatigue_load_limit"] / load, rolling_element)
+    a_iso = _a_iso(rolling_element, lubrication, load)
     reference_load, a_reference, modified = _reference_modified(rolling_element, lubrication, rating, reference_life)
-    return lubrication | {"life.a_iso": a_iso, "life.L10m": a_iso * (rating / load) ** exponent,
+    return lubrication | {"life.a_iso": a_iso, "life.L10m": a_iso * (rating / load) ** LIFE_EXPONENTS[rolling_element],
                           "life.reference_equivalent_load": reference_load, "life.a_iso_reference": a_reference,
                           "life.L10rm": modified}
 
