@@ -233,7 +233,8 @@ def test_examples_lists_every_packaged_scene(capsys):
     listed = examples()
     assert code == 0 and set(listed) == {"aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
                                          "starved_roller", "tapered_roller", "tapered_roller_bearing",
-                                         "cylindrical_roller_bearing", "mounted_6411", "spindle_pair", "gearbox_shaft"}
+                                         "cylindrical_roller_bearing", "mounted_6411", "spindle_pair", "gearbox_shaft",
+                                         "gearbox_6411_ratings"}
     for name, description in listed.items():
         assert description and f"{name}" in out and description in out
     assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)
@@ -241,7 +242,8 @@ def test_examples_lists_every_packaged_scene(capsys):
 
 @pytest.mark.parametrize("name", ["aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
                                   "tapered_roller", "tapered_roller_bearing", "cylindrical_roller_bearing",
-                                  "mounted_6411", pytest.param("starved_roller", marks=pytest.mark.slow),
+                                  "mounted_6411", "gearbox_6411_ratings",
+                                  pytest.param("starved_roller", marks=pytest.mark.slow),
                                   pytest.param("spindle_pair", marks=pytest.mark.slow),
                                   pytest.param("gearbox_shaft", marks=pytest.mark.slow)])
 def test_every_example_runs_by_name(capsys, tmp_path, name):

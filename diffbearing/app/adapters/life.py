@@ -245,7 +245,7 @@ _MODIFIED_OUTPUTS = (
     Output("life.reference_equivalent_load", "N", "kN", "P_ref = C_r L10r^(−1/p) of the load distribution",
            in_report=False),
     Output("life.a_iso_reference", "", "", "a_ISO at P_ref (ISO/TS 16281)"),
-    Output("life.L10rm", "1e6 rev", "1e6 rev", "modified reference life L10rm = a_ISO(P_ref) L10r"),
+    Output("life.L10rm", "1e6 rev", "1e6 rev", "modified reference life L10rm = a_ISO L10r"),
 )
 
 
