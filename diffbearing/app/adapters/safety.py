@@ -4,12 +4,13 @@ of the largest computed contact pressure against ISO 76's permissible stress
 warning for a turning bearing."""
 
 import jax.numpy as jnp
+import numpy as np
 
 from ... import life, roller_life, static_safety
 from ...minimum_load import minimum_load
 from ...params import BALL_BEARING_KINDS
 from ...roller_geometry import ROLLER_KINDS
-from ..registry import Adapter, Block, Key, Output, register
+from ..registry import SHAFT, Adapter, Block, Key, Output, register
 from .bearing_set import SET, SET_SIZE
 from .life import ball_load_rating, roller_load_ratings
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
@@ -27,6 +28,9 @@ def _outputs(exponent: str, minimum: str) -> tuple[Output, ...]:
         Output("safety.minimum_load", "N", "kN", f"requisite minimum load P_min = {minimum} C_r"),
         Output("safety.speed", "rad/s", "rpm", "relative ring speed (for the minimum-load check)", in_report=False),
     )
+
+
+SAFETY_NAMES = (("iso76", "ISO 76 static safety s0 = C0/P0"), ("static_safety", "static safety from the contact pressure"))
 
 
 def _largest_pressure(results, prefix: str):
@@ -69,11 +73,25 @@ def _set_safety(inputs: dict, settings: dict, results: dict) -> dict:
     return out
 
 
+def _shaft_safety(inputs: dict, settings: dict, results: dict) -> dict:
+    """Each of the shaft's bearings' C₀, P₀, s₀ and pressure safety from its own load (own frame)."""
+    found = [static_safety.bearing_static_safety(*(bearing if isinstance(bearing, tuple) else (bearing, None)),
+                                                 results["bearings.force"][number][:3],
+                                                 results["bearings.max_pressure"][number])
+             for number, bearing in enumerate(inputs["shaft"].bearings)]
+    rating, load, safety = (jnp.stack(column) for column in zip(*found))
+    return {"bearings.static_load_rating": rating, "bearings.equivalent_static_load": load,
+            "bearings.iso76": rating / load, "bearings.static_safety": safety}
+
+
+def _shaft_checks(values: dict) -> tuple[list[str], list[str]]:
+    return [], [f"bearing {number}: {name} is {value:.3g}, below 1" for key, name in SAFETY_NAMES
+                for number, value in enumerate(np.asarray(values[f"bearings.{key}"])) if value < 1.0]
+
+
 def _set_checks(values: dict) -> tuple[list[str], list[str]]:
     warnings = [f"bearing {number}: {name} is {float(values[f'set.bearings.{number}.{key}']):.3g}, below 1"
-                for number in range(SET_SIZE)
-                for key, name in (("iso76", "ISO 76 static safety s0 = C0/P0"),
-                                  ("static_safety", "static safety from the contact pressure"))
+                for number in range(SET_SIZE) for key, name in SAFETY_NAMES
                 if float(values[f"set.bearings.{number}.{key}"]) < 1.0]
     return [], warnings
 
@@ -81,8 +99,7 @@ def _set_checks(values: dict) -> tuple[list[str], list[str]]:
 def _checks(values: dict) -> tuple[list[str], list[str]]:
     """Warnings: a static safety below 1, and a turning bearing loaded below its minimum load."""
     warnings = []
-    for key, name in (("safety.iso76", "ISO 76 static safety s0 = C0/P0"),
-                      ("safety.static", "static safety from the contact pressure")):
+    for key, (_, name) in zip(("safety.iso76", "safety.static"), SAFETY_NAMES):
         if float(values[key]) < 1.0:
             warnings.append(f"{name} is {float(values[key]):.3g}, below 1: the load passes the static rating "
                             "(permanent deformation beyond 1e-4 Dw)")
@@ -95,7 +112,7 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
 
 ADAPTER = register(Adapter(
     name="safety",
-    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT,
     keys={"effects.safety": Key("boolean", doc="ISO 76 static load rating and safety, static safety from the "
                                                 "contact pressure, minimum-load check")},
     blocks=(Block(
@@ -133,5 +150,18 @@ ADAPTER = register(Adapter(
         compute=_set_safety,
         checks=_set_checks,
         scene_keys=SET,
+    ), Block(
+        name="shaft_safety",
+        bearing_types=SHAFT,
+        enabled_by=("safety", True),
+        requires=("shaft",),
+        inputs=("shaft",),
+        outputs=(Output("bearings.static_load_rating", "N", "kN", "each bearing's ISO 76 C0", in_report=False),
+                 Output("bearings.equivalent_static_load", "N", "kN", "each bearing's ISO 76 P0", in_report=False),
+                 Output("bearings.iso76", "", "", "each bearing's ISO 76 s0 = C0/P0", in_report=False),
+                 Output("bearings.static_safety", "", "", "each bearing's static safety of its largest pressure, "
+                        "(p_limit/p_max)^3 (ball) or ^2 (roller)", in_report=False)),
+        compute=_shaft_safety,
+        checks=_shaft_checks,
     )),
 ))

@@ -13,7 +13,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ... import ball_validity, life, overrolling, static_safety
+from ... import ball_validity, life, overrolling
 from ...ball_equilibrium import ball_results
 from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
 from ...roller_equilibrium import RollerOperating, roller_results
@@ -154,14 +154,6 @@ def _life(support, elements):
                                elements.outer_lamina_load)[2]
 
 
-def _static_safety(support, elements, force):
-    """(C₀ [N], P₀ [N], static safety of the largest pressure [-]) of one bearing, `force` its load
-    in its own frame (`static_safety.bearing_static_safety`)."""
-    pressure = jnp.maximum(jnp.max(elements.inner_max_pressure), jnp.max(elements.outer_max_pressure))
-    raceways = support.raceways if isinstance(support, RollerSupport) else None
-    return static_safety.bearing_static_safety(support.bearing, raceways, force[:3], pressure)
-
-
 def _frequencies(support, elements, speed):
     """One bearing's `overrolling.OverrollingFrequencies` [Hz], outer ring standing still."""
     if isinstance(support, BallSupport):
@@ -202,12 +194,6 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
         lives = [_life(support, elements) for support, elements in zip(shaft.supports, per_bearing)]
         out["bearings.L10r"] = jnp.stack(lives)
         out["shaft.L10r"] = life.system_life(jnp.stack(lives))
-    if settings["effects"].get("safety", False) is True:
-        rating, load, safety = (jnp.stack(column) for column in zip(*(
-            _static_safety(support, elements, force)
-            for support, elements, force in zip(shaft.supports, per_bearing, solution.bearing_forces))))
-        out |= {"bearings.static_load_rating": rating, "bearings.equivalent_static_load": load,
-                "bearings.iso76": rating / load, "bearings.static_safety": safety}
     if settings["effects"].get("frequencies", False) is True:
         found = [_frequencies(support, elements, layout.speed) for support, elements in zip(shaft.supports, per_bearing)]
         out |= {f"bearings.frequencies.{field}": jnp.stack([getattr(f, field) for f in found]) for field in FREQUENCIES}
@@ -224,10 +210,6 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
                 f"{ISO76_BALL_PRESSURE_LIMIT / 1e9:g} GPa"
                 for number, pressure in enumerate(np.asarray(values["bearings.max_pressure"]))
                 if pressure > ISO76_BALL_PRESSURE_LIMIT]
-    for key, name in (("bearings.iso76", "ISO 76 static safety s0 = C0/P0"),
-                      ("bearings.static_safety", "static safety from the contact pressure")):
-        warnings += [f"bearing {number}: {name} is {value:.3g}, below 1" for number, value in
-                     enumerate(np.asarray(values.get(key, []))) if value < 1.0]
     return errors, warnings
 
 
@@ -262,7 +244,7 @@ BLOCK = Block(
     enabled_by=None,
     requires=(),
     inputs=("shaft",),
-    uses=("centrifugal", "gyroscopic", "stiffness", "life", "safety", "frequencies"),
+    uses=("centrifugal", "gyroscopic", "stiffness", "life", "frequencies"),
     outputs=(
         Output("shaft.displacement", "m, rad", "", "shaft displacement at z = 0 [ux, uy, uz, θx, θy]", in_report=False),
         Output("shaft.converged", "", "", "the shaft equilibrium converged", in_report=False),
@@ -285,12 +267,6 @@ BLOCK = Block(
                "(model limits 1 %, 90°)", in_report=False),
         Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
                in_report=False),
-        Output("bearings.static_load_rating", "N", "kN", "each bearing's ISO 76 C0", effect="safety", in_report=False),
-        Output("bearings.equivalent_static_load", "N", "kN", "each bearing's ISO 76 P0", effect="safety",
-               in_report=False),
-        Output("bearings.iso76", "", "", "each bearing's ISO 76 s0 = C0/P0", effect="safety", in_report=False),
-        Output("bearings.static_safety", "", "", "each bearing's static safety of its largest pressure, "
-               "(p_limit/p_max)^3 (ball) or ^2 (roller)", effect="safety", in_report=False),
         *(Output(f"bearings.frequencies.{field}", "Hz", "Hz", f"each bearing's {text} at its solved contact angles",
                  effect="frequencies", in_report=False)
           for field, text in zip(FREQUENCIES, ("cage frequency FTF", "ball (roller) pass frequency, outer raceway",
@@ -380,7 +356,6 @@ ADAPTER = register(Adapter(
         "effects.gyroscopic": Key("boolean"),
         "effects.stiffness": Key("boolean"),
         "effects.life": Key("boolean"),
-        "effects.safety": Key("boolean", doc="each bearing's ISO 76 C0, P0, s0 and the static safety of its pressure"),
         "effects.frequencies": Key("boolean", doc="each bearing's overrolling frequencies"),
         **FIDELITY,
     },
