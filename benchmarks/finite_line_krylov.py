@@ -5,8 +5,10 @@ compile time and peak memory of each solve, and the films.
         [--timeout SECONDS] [--results finite_line_krylov]
 
 Each case (grid nx × ny on the half domain, load, flooded or starved by an oil layer [µm]; 0 means
-flooded) runs in its own process, so that its peak resident memory (ru_maxrss: compilation
-included) is its own; on a GPU the device's peak (XLA's allocator) is given beside it. A case that
+flooded) runs in its own process, so that its peak resident memory is its own: the process's
+peak (ru_maxrss: compilation included), the peak while the compiled solve runs (VmHWM reset after
+compilation) and XLA's buffers of one call (arguments, outputs, temporaries); on a GPU the
+device's peak (XLA's allocator) is given beside them. A case that
 outlasts `--timeout` is reported as not finished. Writes benchmarks/results/<results>.md, after
 each case. The grid 257 × 257 on the half domain is the paper's 257 × 513 over the whole roller.
 """
@@ -27,7 +29,7 @@ def one_case(nx, ny, load, layer_um):
 
     jax.config.update("jax_enable_x64", True)
     from line_ehl import FLAT_LENGTH, LUBRICANT, RADIUS, SPEED
-    from timing import compiled_with_time, machine, peak_rss_mib
+    from timing import compiled_with_time, machine, peak_rss_mib, reset_peak_rss, resident_peak_mib, xla_memory_mib
 
     from diffbearing.finite_line_krylov import finite_line_film_krylov
     from diffbearing.roller_profile import roller_profile
@@ -38,15 +40,19 @@ def one_case(nx, ny, load, layer_um):
         lambda w: finite_line_film_krylov(w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
                                           LUBRICANT["effective_modulus"], profile, 14.7e-3, FLAT_LENGTH, grid=(nx, ny),
                                           oil_layer=layer), load)
+    compile_peak = peak_rss_mib()
+    reset_peak_rss()
     start = time.perf_counter()
     film = jax.block_until_ready(compiled(load))
     run = time.perf_counter() - start
+    solve_peak = resident_peak_mib()
     device = jax.devices()[0]
     device_peak = (device.memory_stats() or {}).get("peak_bytes_in_use") if device.platform != "cpu" else None
     print(json.dumps(dict(grid=f"{nx} × {ny}", load=load, layer=layer_um, central=float(film.central) * 1e6,
                           minimum=float(film.minimum) * 1e6, at=float(film.minimum_position) * 1e3,
                           converged=bool(film.converged), residual=float(film.residual), run=run,
-                          compile=compile_time, peak=peak_rss_mib(),
+                          compile=compile_time, peak=peak_rss_mib(), compile_peak=compile_peak,
+                          solve_peak=solve_peak, xla=xla_memory_mib(compiled),
                           device_peak=device_peak and device_peak / 2**20, dtype=str(film.central.dtype),
                           machine=f"{machine()} ({device.device_kind})")))
 
@@ -86,20 +92,23 @@ def write(rows, name):
     machine = next((row["machine"] for row in rows if "machine" in row), "?")
     lines = ["# The starved-EHL paper's finite line contact by Newton–Krylov", "",
              f"`python benchmarks/finite_line_krylov.py` on {machine}: one run per case, each in its own process; "
-             "peak memory is the process's resident peak, compilation included (and the GPU's peak, where one ran).",
+             "peak memory: the process's resident peak, compilation included (and the GPU's peak, where one ran); "
+             "solve peak: the resident peak while the compiled solve runs; XLA: its buffers of one call.",
              "", "| grid (half domain) | load | oil layer | central film | minimum film | at y | converged | run | compile "
-             "| peak memory |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "| peak memory | solve peak | XLA |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for row in rows:
         layer = "flooded" if row["layer"] == 0 else f"{row['layer']:.2g} µm"
         if "timeout" in row:
             lines.append(f"| {row['grid']} | {row['load']:.0f} N | {layer} | – | – | – | not finished in "
-                         f"{row['timeout']:.0f} s | – | – | – |")
+                         f"{row['timeout']:.0f} s | – | – | – | – | – |")
             continue
         device = f" (GPU {row['device_peak'] / 1024:.2f} GiB)" if row.get("device_peak") else ""
+        xla = f"{row['xla'] / 1024:.2f} GiB" if row.get("xla") is not None else "–"
         lines.append(f"| {row['grid']} | {row['load']:.0f} N | {layer} | {row['central']:.4f} µm | {row['minimum']:.4f} µm | "
                      f"{row['at']:.3f} mm | {'yes' if row['converged'] else 'no'} | {row['run']:.1f} s | "
-                     f"{row['compile']:.1f} s | {row['peak'] / 1024:.2f} GiB{device} |")
+                     f"{row['compile']:.1f} s | {row['peak'] / 1024:.2f} GiB{device} | {row['solve_peak'] / 1024:.2f} GiB | "
+                     f"{xla} |")
     (RESULTS / f"{name}.md").write_text("\n".join(lines) + "\n")
 
 

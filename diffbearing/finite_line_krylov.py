@@ -12,8 +12,9 @@ nodes and y cells doubled, starts from the coarser solution interpolated (biline
 roller end; a node is wet only where every coarse node around it is) and is solved by inexact
 Newton–Krylov (`newton_krylov`). Preconditioner: the exact Jacobian blocks of each y column —
 its interior pressures and meniscus against its own equations, the elastic coupling of the column
-with itself and its two neighbours' films included — inverted column by column, bordered by the
-film offset H₀ and the load balance through their Schur complement. The blocks come from
+with itself and its two neighbours' films included — built and inverted COLUMN_BATCH columns at
+a time (`jax.lax.map`, so that the temporaries stay O(COLUMN_BATCH·nx²)), bordered by the film
+offset H₀ and the load balance through their Schur complement. The blocks come from
 colored Jacobian-vector products of the column-local equations (Curtis–Powell–Reid: the Reynolds
 row of node i reads nodes i − 2 … i + 1 of columns j − 1 … j + 1, so 5 × 3 colors suffice)
 and from the meniscus rows by three colored vector-Jacobian products. The coupling between
@@ -35,15 +36,17 @@ from .finite_line_ehl import ColumnGrid, FiniteLineFilm, axial_cells, finite_lin
 from .hertz import line_contact
 from .influence import coefficient_spectrum, influence_coefficients, love_rectangle
 from .line_ehl import INLET, OUTLET, FluidParameters, reynolds_coefficients
-from .newton_krylov import krylov_root, newton_krylov
+from .newton_krylov import FORCING_LARGEST, krylov_root, newton_krylov
 from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 COARSEST_NODES = 33  # nodes along rolling of the coarsest (dense) grid
 COARSEST_CELLS = 32  # fewest cells on the half roller of a coarser grid: fewer put h < 0 at the roller end
 NEWTON_STEPS = 80  # Newton–Krylov steps per level: 257 × 257 flooded at 1028 N takes 48 (docs/benchmarks.md)
+STARVED_FORCING = 1e-6  # the loosest linear solve of a starved level: at 1e-3 the 65 × 48 starved case stalls
 BAND = 5  # colors along x: a Reynolds row reads nodes i − 2 … i + 1
 READ_BAND = (-2, -1, 0, 1)  # those nodes, from the row's own
+COLUMN_BATCH = 8  # columns whose blocks are built and inverted at once: memory ∝ COLUMN_BATCH·(nx − 2)²
 DIMENSIONLESS_MODULUS = 4.0  # E' in influence_coefficients' 2/(πE') so that H_el = (1/2π) Σ P C
 
 
@@ -186,50 +189,11 @@ class UniformLevel:
         by_pressure = jax.vmap(lambda t: linear(t, zero_h, zero_m))(colors(rows))  # [color, r, j]
         by_height = jax.vmap(lambda t: linear(zero_p, t, zero_m))(colors(nx))
         by_offset = linear(zero_p, jnp.ones_like(height), zero_m)
-        r, j = jnp.meshgrid(jnp.arange(rows), column, indexing="ij")
-        blocks = jnp.zeros((ny, size, size))
-        for shift in (-2, -1, 0, 1):  # ∂(Reynolds r, j)/∂P[r + shift, j]
-            a = r + shift
-            inside = (a >= 0) & (a < rows)
-            value = by_pressure[(a % BAND) * 3 + j % 3, r, j] * inside
-            blocks = blocks.at[j, r, jnp.clip(a, 0, rows - 1)].add(value)
-        target = jnp.arange(rows) + 1  # the node of each interior unknown
-
-        def elastic_block(sensitivity, equation_rows):
-            """Σ_shift ∂F/∂H[·, j + shift] · ∂H[·, j + shift]/∂P[a, j] of rows that read their whole
-            column (the menisci): sensitivity[shift] (equation_rows, nx, ny) → (ny, equation_rows, nx − 2)."""
-            block = jnp.zeros((ny, equation_rows, rows))
-            node = jnp.arange(nx)
-            for index, shift in enumerate((-1, 0, 1)):
-                neighbour = column + shift
-                mirror = jnp.clip(2 * column + shift + 1, -1, 2 * ny)  # cells between y_{j+shift} and −y_j
-                offset = node[:, None] - target[None, :] + nx - 1
-                direct = self.coefficients[offset, shift + 1]  # (nx, rows)
-                image = self.coefficients[offset[None], mirror[:, None, None] + 1]  # (ny, nx, rows)
-                inside = ((neighbour >= 0) & (neighbour < ny))[:, None, None]
-                block = block + inside * jnp.einsum("eij,jia->jea", sensitivity[index], direct[None] + image)
-            return block
-
-        # ∂(Reynolds r, j)/∂H[r + 1 + d, j + shift] for d = −2 … 1 (the band it reads), [shift][d] (rows, ny)
         equation = jnp.arange(rows)
-        band = [[((equation + 1 + d >= 0) & (equation + 1 + d < nx))[:, None]
-                 * by_height[((equation[:, None] + 1 + d) % BAND) * 3 + jnp.clip(column + shift, 0, ny - 1)[None, :] % 3,
-                             equation[:, None], column[None, :]] for d in READ_BAND] for shift in (-1, 0, 1)]
-        reynolds = jnp.zeros((ny, rows, rows))
-        for index, shift in enumerate((-1, 0, 1)):  # Σ_shift Σ_d band · ∂H[r + 1 + d, j + shift]/∂P[a, j]
-            mirror = jnp.clip(2 * column + shift + 1, -1, 2 * ny)  # cells between y_{j+shift} and −y_j
-            inside = (column + shift >= 0) & (column + shift < ny)
-            for position, d in enumerate(READ_BAND):
-                offset = equation[:, None] + d - equation[None, :] + nx - 1  # node r + 1 + d against node a + 1
-                coupling = self.coefficients[offset, shift + 1][None] + self.coefficients[offset[None],
-                                                                                          mirror[:, None, None] + 1]
-                reynolds = reynolds + (band[index][position] * inside).T[:, :, None] * coupling
-        blocks = blocks.at[:, :rows, :rows].add(reynolds)
-        offset_column = by_offset[:rows].T  # (ny, rows)
+        target = equation + 1  # the node of each interior unknown
+        node = jnp.arange(nx)
         if self.starved:
             by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
-            blocks = blocks.at[:, :rows, rows].set(by_meniscus[:rows].T)
-            blocks = blocks.at[:, rows, rows].set(by_meniscus[rows])
 
             def meniscus_rows(c):  # cotangent on the meniscus rows of the columns of class c
                 cotangent = jnp.zeros((rows + 1, ny)).at[rows].set((column % 3 == c).astype(float))
@@ -237,17 +201,50 @@ class UniformLevel:
                 return pull(cotangent)[:2]
 
             by_row = [meniscus_rows(c) for c in range(3)]
-            own = jnp.stack([by_row[c][0] for c in range(3)])[column % 3, :, column]  # (ny, rows)
-            blocks = blocks.at[:, rows, :rows].add(own)
-            sensitivity = [jnp.stack([by_row[c][1] for c in range(3)])[column % 3, :, jnp.clip(column + shift, 0, ny - 1)
-                                                                       ][:, None, :].transpose(1, 2, 0)
-                           for shift in (-1, 0, 1)]  # [shift] (1, nx, ny)
-            blocks = blocks.at[:, rows:, :rows].add(elastic_block(sensitivity, 1))
-            offset_column = jnp.concatenate([offset_column, by_offset[rows][:, None]], axis=1)
-        inverse = jnp.linalg.inv(blocks)
+            meniscus_by_pressure = jnp.stack([by_row[c][0] for c in range(3)])  # [c, r, j]
+            meniscus_by_height = jnp.stack([by_row[c][1] for c in range(3)])  # [c, node, j]
+
+        def elastic(shift, j, rows_from, nodes_to):
+            """∂H[rows_from, j + shift]/∂P[nodes_to, j] (len(rows_from), len(nodes_to)): the cell of
+            column j and its mirror image (the cells between y_{j+shift} and −y_j)."""
+            mirror = jnp.clip(2 * j + shift + 1, -1, 2 * ny)
+            offset = rows_from[:, None] - nodes_to[None, :] + nx - 1
+            return self.coefficients[offset, shift + 1] + self.coefficients[offset, mirror + 1]
+
+        def column_block(j):
+            """(M_j⁻¹ (size, size), M_j⁻¹ ∂F_j/∂H₀) of column j: its exact Jacobian block."""
+            block = jnp.zeros((size, size))
+            for shift in (-2, -1, 0, 1):  # ∂(Reynolds r, j)/∂P[r + shift, j]
+                a = equation + shift
+                inside = (a >= 0) & (a < rows)
+                block = block.at[equation, jnp.clip(a, 0, rows - 1)].add(
+                    by_pressure[(a % BAND) * 3 + j % 3, equation, j] * inside)
+            for shift in (-1, 0, 1):  # Σ_d ∂(Reynolds r, j)/∂H[r + 1 + d, j + shift] · ∂H[r + 1 + d, j + shift]/∂P[a, j]
+                neighbour = j + shift
+                inside = (neighbour >= 0) & (neighbour < ny)
+                for d in READ_BAND:
+                    reads = (equation + 1 + d >= 0) & (equation + 1 + d < nx)
+                    band = reads * inside * by_height[((equation + 1 + d) % BAND) * 3 + jnp.clip(neighbour, 0, ny - 1) % 3,
+                                                      equation, j]
+                    block = block.at[:rows, :rows].add(band[:, None] * elastic(shift, j, equation + 1 + d, target))
+            offset_column = by_offset[:rows, j]
+            if self.starved:
+                block = block.at[:rows, rows].set(by_meniscus[:rows, j])
+                block = block.at[rows, rows].set(by_meniscus[rows, j])
+                meniscus_row = meniscus_by_pressure[j % 3, :, j]
+                for shift in (-1, 0, 1):  # the meniscus row reads the whole film of its column and its neighbours'
+                    neighbour = j + shift
+                    inside = (neighbour >= 0) & (neighbour < ny)
+                    sensitivity = meniscus_by_height[j % 3, :, jnp.clip(neighbour, 0, ny - 1)]
+                    meniscus_row = meniscus_row + inside * sensitivity @ elastic(shift, j, node, target)
+                block = block.at[rows, :rows].add(meniscus_row)
+                offset_column = jnp.append(offset_column, by_offset[rows, j])
+            inverse = jnp.linalg.inv(block)
+            return inverse, inverse @ offset_column
+
+        inverse, offset_response = jax.lax.map(column_block, column, batch_size=COLUMN_BATCH)
         balance_row = jnp.zeros((ny, size)).at[:, :rows].set(
             (2.0 * self.spacing * self.columns.widths / self.load_target * 0.5 * np.pi)[:, None])
-        offset_response = jnp.einsum("jab,jb->ja", inverse, offset_column)
         schur = jnp.sum(balance_row * offset_response)
 
         def to_columns(vector):
@@ -298,7 +295,8 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
 
     def solve(level, unknowns, steps):
         return newton_krylov(level.residual, unknowns, None, level.preconditioner, tolerance=tolerance,
-                             max_steps=steps, limit=level.limit, scale=level.residual_scale)[0]
+                             max_steps=steps, limit=level.limit, scale=level.residual_scale,
+                             loosest=STARVED_FORCING if level.starved else FORCING_LARGEST)[0]
 
     previous = solving(*levels[0])
     unknowns = start(previous)
