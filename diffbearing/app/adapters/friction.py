@@ -1,19 +1,40 @@
-"""Friction torque and power loss (effect friction = "palmgren"): Palmgren's viscous and
-load-dependent moments (`diffbearing.friction_torque`) from the loads the elements carry, the
-lubricant's viscosity at its temperature and the speed."""
+"""Friction torque and power loss: effect friction = "palmgren" (Palmgren's viscous and
+load-dependent moments, `diffbearing.friction_torque`) or "skf" (SKF's rolling, sliding and drag
+moments, `diffbearing.skf_friction`), from the loads the bearing carries, the lubricant's viscosity
+at its temperature and the speed."""
 
+import equinox as eqx
+import jax
 import jax.numpy as jnp
 
-from ... import friction_torque, static_safety
+from ... import friction_torque, skf_friction, static_safety
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
-from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, register
+from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
 from .bearing_set import SET, SET_SIZE
 from .life import SUPPLY_KEY
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
-FRICTION_MODELS = ("palmgren",)
+FRICTION_MODELS = ("palmgren", "skf")
 DEFAULT_SUPPLY = "oil_bath"
+# SKF's series (Table 3) by kind when the scene names none: the series of Palmgren's defaults
+SKF_DEFAULT_SERIES = {"deep_groove_ball": "62", "angular_contact_ball": "single_row", "cylindrical_roller": "2",
+                      "tapered_roller": "302"}
+# lubricant.supply → SKF's lubrication of K_rs: circulating oil is fed as a jet, the bath is a low-level one
+SKF_SUPPLY = {"circulating": "oil_jet", "oil_bath": "oil_bath", "grease": "grease"}
+
+
+class SkfBearing(eqx.Module):
+    """What SKF's model reads beyond the bearing: its series (Table 3), lubrication (K_rs), bore and
+    outside diameter [m], and for the drag in an oil bath V_M [-] and (roller bearings) the inner
+    ring width B [m]."""
+
+    series: str = eqx.field(static=True)
+    supply: str = eqx.field(static=True)
+    bore: jax.Array
+    outside_diameter: jax.Array
+    drag_loss_factor: jax.Array | None
+    inner_ring_width: jax.Array | None
 
 
 def _f0(v, kind: str):
@@ -35,6 +56,35 @@ def _f1(v):
 def _constants(v, built) -> dict:
     """f₀ of the bearing's kind and lubrication, or the scene's; the scene's f₁ or None."""
     return {"friction_constants": {"f0": _f0(v, built["bearing"].kind), "f1": _f1(v)}}
+
+
+def _skf_bearing(v, built) -> dict:
+    """The scene's SKF series (default `SKF_DEFAULT_SERIES`), lubrication, d, D and drag inputs."""
+    kind = built["bearing"].kind
+    series = v.get("friction.series", SKF_DEFAULT_SERIES[kind])
+    table = skf_friction.SERIES_CONSTANTS[kind]
+    if series not in table:
+        raise ValueError(f"friction.series: the {kind} series of SKF's friction model, one of {tuple(table)}, "
+                         f"got {series!r}")
+    for key in ("bearing.bore", "bearing.outer_diameter"):
+        if key not in v:
+            raise ValueError(f"{key} is needed by effects.friction = 'skf' (SKF's model reads d and D)")
+    supply = v.get("lubricant.supply", DEFAULT_SUPPLY)
+    drag = v.get("friction.drag_loss_factor")
+    width = None
+    if drag is not None:
+        check_range("friction.drag_loss_factor", drag, low=0.0, low_open=False, high=1e-3,
+                    why="V_M read off SKF's diagram against the oil level H/d_m, up to about 1e-3")
+        if supply != "oil_bath":
+            raise ValueError(f"friction.drag_loss_factor: the drag loss is an oil bath's (lubricant.supply = "
+                             f"'oil_bath'), got lubricant.supply = {supply!r}")
+        if kind in ROLLER_KINDS:
+            if "bearing.width" not in v:
+                raise ValueError("bearing.width is needed by friction.drag_loss_factor on a roller bearing "
+                                 "(SKF's roller drag reads the inner ring width B)")
+            width = v["bearing.width"]
+    return {"skf_bearing": SkfBearing(series, SKF_SUPPLY[supply], v["bearing.bore"], v["bearing.outer_diameter"],
+                                      drag, width)}
 
 
 def _kind(bearing) -> str:
@@ -95,6 +145,34 @@ def _roller_friction(inputs: dict, settings: dict, results: dict) -> dict:
                            _speed(inputs["operating"]), results["force"][:3])
 
 
+def _skf_outputs(moment: skf_friction.FrictionalMoment) -> dict:
+    return {"friction.torque": moment.total, "friction.power": moment.power,
+            "friction.rolling_torque": moment.inlet_shear * moment.replenishment * moment.rolling,
+            "friction.sliding_torque": moment.sliding, "friction.drag_torque": moment.drag,
+            "friction.inlet_shear_factor": moment.inlet_shear, "friction.replenishment_factor": moment.replenishment,
+            "friction.sliding_coefficient": moment.sliding_coefficient}
+
+
+def _ball_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    """SKF's moments of a ball bearing from its carried load (C₀ of ISO 76 for α_F)."""
+    bearing, skf, lubricant = inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"]
+    return _skf_outputs(skf_friction.frictional_moment(
+        bearing.kind, skf.series, *_split(results["force"][:3]), _speed(inputs["operating"]),
+        lubricant.viscosity / lubricant.density, skf.bore, skf.outside_diameter, supply=skf.supply,
+        static_load_rating=static_safety.ball_bearing_static_load_rating(bearing),
+        drag_loss_factor=skf.drag_loss_factor))
+
+
+def _roller_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    """SKF's moments of a roller bearing from its carried load (a tapered one's Y = 0.4 cot α, ISO 281)."""
+    bearing, skf, lubricant = inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"]
+    return _skf_outputs(skf_friction.frictional_moment(
+        bearing.kind, skf.series, *_split(results["force"][:3]), _speed(inputs["operating"]),
+        lubricant.viscosity / lubricant.density, skf.bore, skf.outside_diameter, supply=skf.supply,
+        axial_load_factor=0.4 / jnp.tan(inputs["raceways"].cup_angle), drag_loss_factor=skf.drag_loss_factor,
+        inner_ring_width=skf.inner_ring_width))
+
+
 def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's Palmgren torque from its own load, and the set's together."""
     constants, speed = inputs["friction_constants"], _speed(inputs["operating"])
@@ -118,14 +196,27 @@ def _shaft_friction(inputs: dict, settings: dict, results: dict) -> dict:
             "shaft.friction.power": friction_torque.friction_power(sum(torques), layout.speed)}
 
 
+TORQUE_AND_POWER = (
+    Output("friction.torque", "N*m", "N*mm", "friction torque M"),
+    Output("friction.power", "W", "W", "power loss M ω"),
+)
 OUTPUTS = (
-    Output("friction.torque", "N*m", "N*mm", "friction torque M = M0 + M1 (Palmgren)"),
+    *TORQUE_AND_POWER,
     Output("friction.viscous_torque", "N*m", "N*mm", "viscous moment M0"),
     Output("friction.load_torque", "N*m", "N*mm", "load-dependent moment M1 = f1 P1 dm"),
-    Output("friction.power", "W", "W", "power loss M ω"),
     Output("friction.f0", "", "", "Palmgren f0 (the scene's, else HR 1's)"),
     Output("friction.f1", "", "", "Palmgren f1 (the scene's, else HR 1's)"),
     Output("friction.load", "N", "kN", "load P1 of the moment M1"),
+)
+
+SKF_OUTPUTS = (
+    *TORQUE_AND_POWER,
+    Output("friction.rolling_torque", "N*m", "N*mm", "rolling moment φ_ish φ_rs M_rr (SKF)"),
+    Output("friction.sliding_torque", "N*m", "N*mm", "sliding moment M_sl = G_sl μ_sl (SKF)"),
+    Output("friction.drag_torque", "N*m", "N*mm", "drag moment in the oil bath M_drag (SKF)"),
+    Output("friction.inlet_shear_factor", "", "", "inlet shear heating factor φ_ish (SKF)"),
+    Output("friction.replenishment_factor", "", "", "kinematic replenishment factor φ_rs (SKF)"),
+    Output("friction.sliding_coefficient", "", "", "sliding friction coefficient μ_sl (SKF)"),
 )
 
 ADAPTER = register(Adapter(
@@ -135,8 +226,17 @@ ADAPTER = register(Adapter(
           "friction.f0": Key("number", doc="Palmgren's f0 of the bearing's series and lubrication (default: HR 1's "
                                            "62 / 72-B / 2..-E / 302 series)"),
           "friction.f1": Key("number", doc="Palmgren's f1 (default: HR 1's, a (P0/C0)^b for ball bearings)"),
+          "friction.series": Key("text", doc="the bearing's series in SKF's friction model (Table 3: e.g. 62, 63 "
+                                             "deep groove; single_row, double_row, four_point angular contact; 2, "
+                                             "22 cylindrical; 302, 322 tapered; default 62 / single_row / 2 / 302)"),
+          "friction.drag_loss_factor": Key("number", doc="SKF's V_M read off its diagram against the oil level "
+                                                         "H/d_m (oil bath only; default: no drag loss)"),
+          "bearing.bore": quantity("length"),
+          "bearing.outer_diameter": quantity("length"),
+          "bearing.width": quantity("length", "bearing width B"),
           "lubricant.supply": SUPPLY_KEY},
     inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),
+            InputBuilder(("skf_bearing",), BALL_BEARING_KINDS + ROLLER_KINDS, _skf_bearing, after=("bearing",)),
             InputBuilder(("friction_constants",), SHAFT, _shaft_constants, after=("shaft",))),
     blocks=(Block(
         name="friction",
@@ -154,6 +254,23 @@ ADAPTER = register(Adapter(
         inputs=("bearing", "raceways", "operating", "lubricant", "friction_constants"),
         outputs=OUTPUTS,
         compute=_roller_friction,
+        scene_keys=WHOLE_BEARING,
+    ), Block(
+        name="skf_friction",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("friction", "skf"),
+        requires=("equilibrium",),
+        inputs=("bearing", "operating", "lubricant", "skf_bearing"),
+        outputs=SKF_OUTPUTS,
+        compute=_ball_skf_friction,
+    ), Block(
+        name="roller_skf_friction",
+        bearing_types=ROLLER_KINDS,
+        enabled_by=("friction", "skf"),
+        requires=(EQUILIBRIUM_BLOCK,),
+        inputs=("bearing", "raceways", "operating", "lubricant", "skf_bearing"),
+        outputs=SKF_OUTPUTS,
+        compute=_roller_skf_friction,
         scene_keys=WHOLE_BEARING,
     ), Block(
         name="set_friction",

@@ -92,7 +92,7 @@ def _load_rating(v, built) -> dict:
 MODIFIED = ("lubricant.cleanliness",)  # the scene key that asks for a_ISO (with effects.life)
 SUPPLIES = tuple(life_modification.CONTAMINATION_CONSTANTS)
 SUPPLY_KEY = Key("choice", choices=SUPPLIES, doc="how the oil comes: circulating with filters, oil bath, or grease "
-                                                 "(ISO 281 Annex A's e_C tables; Palmgren's f0)")
+                                                 "(ISO 281 Annex A's e_C tables; Palmgren's f0; SKF's K_rs)")
 CLEANLINESS = tuple(dict.fromkeys(level for table in life_modification.CONTAMINATION_CONSTANTS.values()
                                   for level in table)) + ("custom",)
 
