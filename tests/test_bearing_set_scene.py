@@ -149,3 +149,26 @@ def test_preload_offset_is_the_matched_bearings_when_the_fit_closes_the_clearanc
     assert float(tight.values["set.preload_offset"]) == pytest.approx(float(plain.values["set.preload_offset"]),
                                                                       rel=1e-12)
     assert bool(tight.values["set.converged"])
+
+
+def test_pair_skf_friction_is_each_bearings_at_its_load():
+    """effects.friction = "skf" on the DB pair (8000 r/min, speed effects off, VG 32 grease) under 1.2 kN
+    axial: each bearing's SKF moment is the physics function's at that bearing's solved load (1e-12),
+    the set's torque their sum."""
+    from diffbearing import skf_friction
+
+    pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]', "effects.friction=skf", "bearing.bore=70 mm",
+                "bearing.outer_diameter=110 mm", "lubricant.preset=iso_vg_32", "lubricant.supply=grease"])
+    model = build_model(load_scene(example_scene("spindle_pair"), list(STATIC) + [
+        "effects.friction=skf", "bearing.bore=70 mm", "bearing.outer_diameter=110 mm", "lubricant.preset=iso_vg_32",
+        "lubricant.supply=grease"]))
+    lubricant = model.inputs["lubricant"]
+    total = 0.0
+    for number in range(2):
+        force = pair.values[f"set.bearings.{number}.force"]
+        want = skf_friction.frictional_moment("angular_contact_ball", "single_row", float(np.hypot(force[0], force[1])),
+                                              abs(float(force[2])), 8000 * np.pi / 30, lubricant.viscosity / lubricant.density,
+                                              70e-3, 110e-3, supply="grease").total
+        assert float(pair.values[f"set.bearings.{number}.friction.torque"]) == pytest.approx(float(want), rel=1e-12)
+        total += float(want)
+    assert float(pair.values["set.friction.torque"]) == pytest.approx(total, rel=1e-12)

@@ -153,14 +153,28 @@ def _skf_outputs(moment: skf_friction.FrictionalMoment) -> dict:
             "friction.sliding_coefficient": moment.sliding_coefficient}
 
 
-def _ball_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    """SKF's moments of a ball bearing from its carried load (C₀ of ISO 76 for α_F)."""
+def _ball_skf_moment(inputs: dict, force) -> skf_friction.FrictionalMoment:
+    """SKF's moments of a ball bearing under [Fx, Fy, Fz] [N] (C₀ of ISO 76 for α_F)."""
     bearing, skf, lubricant = inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"]
-    return _skf_outputs(skf_friction.frictional_moment(
-        bearing.kind, skf.series, *_split(results["force"][:3]), _speed(inputs["operating"]),
-        lubricant.viscosity / lubricant.density, skf.bore, skf.outside_diameter, supply=skf.supply,
-        static_load_rating=static_safety.ball_bearing_static_load_rating(bearing),
-        drag_loss_factor=skf.drag_loss_factor))
+    return skf_friction.frictional_moment(
+        bearing.kind, skf.series, *_split(force), _speed(inputs["operating"]), lubricant.viscosity / lubricant.density,
+        skf.bore, skf.outside_diameter, supply=skf.supply,
+        static_load_rating=static_safety.ball_bearing_static_load_rating(bearing), drag_loss_factor=skf.drag_loss_factor)
+
+
+def _ball_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    return _skf_outputs(_ball_skf_moment(inputs, results["force"][:3]))
+
+
+def _set_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    """Each bearing's SKF moment from its own load, and the set's together."""
+    torques = [_ball_skf_moment(inputs, results[f"set.bearings.{number}.force"][:3]).total for number in range(SET_SIZE)]
+    return _set_totals(torques, _speed(inputs["operating"]))
+
+
+def _set_totals(torques, speed) -> dict:
+    return ({f"set.bearings.{number}.friction.torque": torque for number, torque in enumerate(torques)}
+            | {"set.friction.torque": sum(torques), "set.friction.power": friction_torque.friction_power(sum(torques), speed)})
 
 
 def _roller_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
@@ -178,8 +192,7 @@ def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
     constants, speed = inputs["friction_constants"], _speed(inputs["operating"])
     torques = [_ball_torques(inputs["bearing"], constants["f0"], constants["f1"], inputs["lubricant"], speed,
                              results[f"set.bearings.{number}.force"][:3])["friction.torque"] for number in range(SET_SIZE)]
-    return ({f"set.bearings.{number}.friction.torque": torque for number, torque in enumerate(torques)}
-            | {"set.friction.torque": sum(torques), "set.friction.power": friction_torque.friction_power(sum(torques), speed)})
+    return _set_totals(torques, speed)
 
 
 def _shaft_friction(inputs: dict, settings: dict, results: dict) -> dict:
@@ -218,6 +231,11 @@ SKF_OUTPUTS = (
     Output("friction.replenishment_factor", "", "", "kinematic replenishment factor φ_rs (SKF)"),
     Output("friction.sliding_coefficient", "", "", "sliding friction coefficient μ_sl (SKF)"),
 )
+
+SET_OUTPUTS = (*(Output(f"set.bearings.{number}.friction.torque", "N*m", "N*mm", f"bearing {number}: friction torque")
+                  for number in range(SET_SIZE)),
+               Output("set.friction.torque", "N*m", "N*mm", "friction torque of the set"),
+               Output("set.friction.power", "W", "W", "power loss of the set"))
 
 ADAPTER = register(Adapter(
     name="friction",
@@ -278,11 +296,17 @@ ADAPTER = register(Adapter(
         enabled_by=("friction", "palmgren"),
         requires=("bearing_set",),
         inputs=("bearing", "operating", "lubricant", "friction_constants"),
-        outputs=(*(Output(f"set.bearings.{number}.friction.torque", "N*m", "N*mm",
-                          f"bearing {number}: friction torque M0 + M1") for number in range(SET_SIZE)),
-                 Output("set.friction.torque", "N*m", "N*mm", "friction torque of the set"),
-                 Output("set.friction.power", "W", "W", "power loss of the set")),
+        outputs=SET_OUTPUTS,
         compute=_set_friction,
+        scene_keys=SET,
+    ), Block(
+        name="set_skf_friction",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("friction", "skf"),
+        requires=("bearing_set",),
+        inputs=("bearing", "operating", "lubricant", "skf_bearing"),
+        outputs=SET_OUTPUTS,
+        compute=_set_skf_friction,
         scene_keys=SET,
     ), Block(
         name="shaft_friction",
