@@ -22,7 +22,7 @@ def _run(tmp_path, text, name):
 def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     """Issue 26: the 6411E alone on a shaft (at z = 40 mm, loaded there, turned "-z" with the load
     turned too) against the single-bearing scene: its displacement in its own frame, its load, its
-    largest ball load, its L10r and a_ISO life L10rm, its static safety, overrolling frequencies and
+    largest ball load, every ball's loads, contact angles and pressures (`bearings.elements.*`), its L10r and a_ISO life L10rm, its static safety, overrolling frequencies and
     friction torque to 1e-9, with the same [fidelity] (Brewe–Hamrock contacts, inner-raceway
     control); the shaft's lives and friction are that bearing's."""
     effects = ('[effects]\nlife = true\nsafety = true\nfrequencies = true\nfriction = "palmgren"\n'
@@ -41,6 +41,12 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     np.testing.assert_allclose(shaft.values["bearings.force"][0], single.values["force"], rtol=1e-9, atol=1e-9)
     assert float(shaft.values["bearings.max_element_load"][0]) == pytest.approx(
         float(np.max(single.values["balls.inner.load"])), rel=1e-9)
+    np.testing.assert_allclose(shaft.values["bearings.elements.azimuth"][0], single.values["balls.azimuth"], rtol=1e-15)
+    for side in ("inner", "outer"):
+        for field in ("load", "contact_angle", "max_pressure"):
+            np.testing.assert_allclose(shaft.values[f"bearings.elements.{side}_{field}"][0],
+                                       single.values[f"balls.{side}.{field}"], rtol=1e-9,
+                                       atol=1e-9 * float(np.max(np.abs(single.values[f"balls.{side}.{field}"]))))
     assert float(shaft.values["bearings.L10r"][0]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-9)
     assert float(shaft.values["shaft.L10r"]) == pytest.approx(float(single.values["life.L10r"]), rel=1e-12)
     for mine, theirs in (("static_load_rating", "static_load_rating"), ("equivalent_static_load", "equivalent_static_load"),
@@ -110,7 +116,7 @@ OIL = '[lubricant]\npreset = "iso_vg_68"\ntemperature = "60 degC"\n'
 
 def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
     """A cylindrical roller bearing (the packaged example's) and the 6411E on a shaft under a gear
-    load: the roller bearing's radial displacement and tilt, and its L10r, equal the whole roller
+    load: the roller bearing's radial displacement and tilt, roller loads and its L10r equal the whole roller
     bearing scene's under the load and moment it carries on the shaft, to 1e-9, both with 20 laminae."""
     shaft = _run(tmp_path, CYLINDRICAL + ENTRY + 'position = "100 mm"\n[[loads]]\nposition = "20 mm"\n'
                  'force = ["5 kN", "2 kN", "1 kN"]\n[shaft]\nspeed = "1500 rpm"\n[effects]\nlife = true\nsafety = true\n'
@@ -136,3 +142,10 @@ def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
         float(alone.values["frequencies.ball_pass_inner"]), rel=1e-12)
     assert float(shaft.values["bearings.friction.torque"][0]) == pytest.approx(float(alone.values["friction.torque"]),
                                                                                rel=1e-9)
+    rollers = len(alone.values["rollers.azimuth"])  # 12, the 6411E's 7 balls padded with NaN to 12
+    assert np.isnan(shaft.values["bearings.elements.inner_contact_angle"][0]).all()
+    assert np.isnan(shaft.values["bearings.elements.inner_load"][1][7:]).all()
+    for side in ("inner", "outer"):
+        loads = np.asarray(alone.values[f"rollers.{side}.load"])
+        np.testing.assert_allclose(shaft.values[f"bearings.elements.{side}_load"][0][:rollers], loads, rtol=1e-9,
+                                   atol=1e-9 * loads.max())

@@ -164,6 +164,24 @@ def _frequencies(support, elements, speed):
 
 
 FREQUENCIES = ("cage", "ball_pass_outer", "ball_pass_inner", "ball_spin")
+# per-element fields of BallResults and RollerResults both, and the balls' own
+ELEMENT_FIELDS = ("azimuth", "inner_load", "outer_load", "inner_max_pressure", "outer_max_pressure")
+BALL_ELEMENT_FIELDS = ("inner_contact_angle", "outer_contact_angle")
+
+
+def _elements(per_bearing) -> dict:
+    """`bearings.elements.*`: each bearing's per-element results (bearings × the most elements), NaN
+    beyond a bearing's own element count and for the balls' contact angles of a roller bearing."""
+    count = max(elements.azimuth.shape[0] for elements in per_bearing)
+
+    def padded(elements, field):
+        own = getattr(elements, field, None)
+        if own is None:
+            return jnp.full(count, jnp.nan)
+        return jnp.pad(own, (0, count - own.shape[0]), constant_values=jnp.nan)
+
+    return {f"bearings.elements.{field}": jnp.stack([padded(elements, field) for elements in per_bearing])
+            for field in ELEMENT_FIELDS + BALL_ELEMENT_FIELDS}
 
 
 def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
@@ -187,7 +205,7 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
                                             for elements in per_bearing]),
         "bearings.validity": jnp.stack([_validity(support, elements)
                                         for support, elements in zip(shaft.supports, per_bearing)]),
-    }
+    } | _elements(per_bearing)
     if settings["effects"].get("stiffness", False) is True:
         out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at)
     if settings["effects"].get("life", False) is True:
@@ -214,14 +232,14 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
 
 
 def _plot(result, figure):
-    """The shaft's radial displacement along its length and the bearings' radial reactions."""
+    """The shaft's radial displacement along its length, the bearings' reactions and their element loads."""
     values, layout = result.values, result.model.inputs["shaft"]
     positions = np.asarray(layout.positions)
     span = np.linspace(min(positions.min(), np.asarray(layout.loads.positions).min()),
                        max(positions.max(), np.asarray(layout.loads.positions).max()), 101)
     u = np.asarray(values["shaft.displacement"])
     moved = np.array([np.asarray(transfer(z)) @ u for z in span])
-    line, bars = figure.subplots(1, 2)
+    line, bars, elements = figure.subplots(1, 3)
     line.plot(span * 1e3, moved[:, 0] * 1e6, label="x")
     line.plot(span * 1e3, moved[:, 1] * 1e6, label="y")
     for z in positions:
@@ -232,7 +250,13 @@ def _plot(result, figure):
     bars.bar(numbers - 0.2, np.hypot(reaction[:, 0], reaction[:, 1]) / 1e3, 0.4, label="radial")
     bars.bar(numbers + 0.2, np.abs(reaction[:, 2]) / 1e3, 0.4, label="axial")
     bars.set(xlabel="bearing", ylabel="load [kN]", title="bearing loads", xticks=numbers)
-    for axis in (line, bars):
+    azimuths, loads = (np.asarray(values[f"bearings.elements.{field}"]) for field in ("azimuth", "inner_load"))
+    for number, (azimuth, load) in enumerate(zip(azimuths, loads)):
+        held = np.isfinite(azimuth)
+        elements.plot(np.degrees(azimuth[held]), load[held] / 1e3, "o-", label=f"bearing {number}")
+    elements.set(xlabel="azimuth ψ in the bearing's frame [°]", ylabel="element load, inner raceway [kN]",
+                 title="element loads")
+    for axis in (line, bars, elements):
         axis.grid(alpha=0.3)
         axis.legend()
     figure.suptitle(result.model.scene.title)
@@ -265,6 +289,20 @@ BLOCK = Block(
                in_report=False),
         Output("bearings.validity", "-, rad", "", "each bearing's largest approach / Dw and |contact angle| "
                "(model limits 1 %, 90°)", in_report=False),
+        Output("bearings.elements.azimuth", "rad", "deg", "each bearing's element azimuths ψ in its own frame "
+               "(NaN beyond its element count)", in_report=False),
+        Output("bearings.elements.inner_load", "N", "kN", "each bearing's element loads at the inner raceway (rollers: "
+               "the roller load)", in_report=False),
+        Output("bearings.elements.outer_load", "N", "kN", "each bearing's element loads at the outer raceway",
+               in_report=False),
+        Output("bearings.elements.inner_max_pressure", "Pa", "GPa", "each bearing's element peak pressures, inner "
+               "raceway", in_report=False),
+        Output("bearings.elements.outer_max_pressure", "Pa", "GPa", "each bearing's element peak pressures, outer "
+               "raceway", in_report=False),
+        Output("bearings.elements.inner_contact_angle", "rad", "deg", "each ball bearing's inner contact angles "
+               "(NaN for a roller bearing)", in_report=False),
+        Output("bearings.elements.outer_contact_angle", "rad", "deg", "each ball bearing's outer contact angles "
+               "(NaN for a roller bearing)", in_report=False),
         Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
                in_report=False),
         *(Output(f"bearings.frequencies.{field}", "Hz", "Hz", f"each bearing's {text} at its solved contact angles",
@@ -327,6 +365,9 @@ def _report(result) -> list[str]:
         if "bearings.friction.torque" in values:
             row += f"{float(values['bearings.friction.torque'][number]) * 1e3:>10.2f}"
         lines.append(row)
+    lines += ["", "Element loads at the inner raceway [kN], from azimuth ψ = 0 in each bearing's frame"]
+    for number, loads in enumerate(np.asarray(values["bearings.elements.inner_load"])):
+        lines.append(f"  {number:<4}" + " ".join(f"{load / 1e3:.3f}" for load in loads[np.isfinite(loads)]))
     if "bearings.frequencies.cage" in values:
         lines += ["", "Overrolling frequencies at the solved contact angles [Hz]",
                   f"  {'#':<4}{'cage FTF':>12}{'BPFO':>12}{'BPFI':>12}{'BSF':>12}"]
