@@ -6,7 +6,6 @@ import resource
 import statistics
 import time
 import tracemalloc
-from pathlib import Path
 
 import jax
 
@@ -50,18 +49,6 @@ def traced_peak_mib(function):
 def peak_rss_mib():
     """Peak resident memory of this process so far [MiB] (Linux ru_maxrss is in KiB)."""
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-
-
-def reset_peak_rss():
-    """Starts this process's resident peak (VmHWM) afresh from its current resident size (Linux:
-    writing 5 to /proc/self/clear_refs), so that `resident_peak_mib` measures what follows alone."""
-    Path("/proc/self/clear_refs").write_text("5")
-
-
-def resident_peak_mib():
-    """Peak resident memory since `reset_peak_rss` (or the start) [MiB] (Linux VmHWM)."""
-    status = Path("/proc/self/status").read_text()
-    return int(next(line.split()[1] for line in status.splitlines() if line.startswith("VmHWM:"))) / 1024
 
 
 def machine():
