@@ -22,9 +22,10 @@ def _run(tmp_path, text, name):
 def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     """Issue 26: the 6411E alone on a shaft (at z = 40 mm, loaded there, turned "-z" with the load
     turned too) against the single-bearing scene: its displacement in its own frame, its load, its
-    largest ball load, every ball's loads, contact angles and pressures (`bearings.elements.*`), its L10r and a_ISO life L10rm, its static safety, overrolling frequencies and
-    friction torque to 1e-9, with the same [fidelity] (Brewe–Hamrock contacts, inner-raceway
-    control); the shaft's lives and friction are that bearing's."""
+    largest ball load, every ball's loads, contact angles and pressures (`bearings.elements.*`), its
+    L10r and a_ISO life L10rm, its static safety, overrolling frequencies and friction torque to
+    1e-9, with the same [fidelity] (Brewe–Hamrock contacts, inner-raceway control); the shaft's
+    lives and friction are that bearing's."""
     effects = ('[effects]\nlife = true\nsafety = true\nfrequencies = true\nfriction = "palmgren"\n'
                '[fidelity]\nhertz = "brewe_hamrock"\nrace_control = "inner"\n'
                '[lubricant]\npreset = "iso_vg_68"\ntemperature = "90 degC"\nsupply = "grease"\ncleanliness = "custom"\n'
