@@ -42,7 +42,7 @@ from .roller_profile import RollerProfile, crown_drop
 
 COARSEST_NODES = 33  # nodes along rolling of the coarsest (dense) grid
 COARSEST_CELLS = 32  # fewest cells on the half roller of a coarser grid: fewer put h < 0 at the roller end
-NEWTON_STEPS = 80  # Newton–Krylov steps per level: 257 × 257 flooded at 1028 N takes 48 (docs/benchmarks.md)
+NEWTON_STEPS = 80  # Newton–Krylov steps per level: 257 × 257 flooded at 1028 N takes 50 (docs/benchmarks.md)
 STARVED_FORCING = 1e-6  # the loosest linear solve of a starved level: at 1e-3 the 65 × 48 starved case stalls
 BAND = 5  # colors along x: a Reynolds row reads nodes i − 2 … i + 1
 READ_BAND = (-2, -1, 0, 1)  # those nodes, from the row's own

@@ -8,8 +8,7 @@ edit of the code invalidates it); the next process deserializes it and gets the 
 the persistent cache. Without a compilation cache folder (`jax_compilation_cache_dir` unset, as in
 a notebook that does not set it) nothing is stored, nor is a model whose lowering holds host
 callbacks or LAPACK calls without a stability guarantee (`jax.export` cannot serialize them: the
-cage dynamics' diffrax integration, the GMRES of the Newton–Krylov film), which is
-traced anew in each process.
+cage dynamics' diffrax integration), which is traced anew in each process.
 """
 
 import functools
@@ -57,8 +56,8 @@ def compile_stored(function, inputs, key: str):
             exported = export.export(jax.jit(flat))(*leaves)
         except (NotImplementedError, ValueError):
             # host callbacks (diffrax's cage dynamics) and LAPACK calls without a stability
-            # guarantee (lineax's QR in GMRES) cannot be serialized; a ValueError of the model
-            # itself is raised again by the plain lowering below
+            # guarantee cannot be serialized; a ValueError of the model itself is raised again by
+            # the plain lowering below
             return jax.jit(function).lower(inputs).compile()
         folder.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=folder, suffix=".partial", delete=False) as temporary:

@@ -73,8 +73,8 @@ def _skf_bearing(v, built) -> dict:
     drag = v.get("friction.drag_loss_factor")
     width = None
     if drag is not None:
-        check_range("friction.drag_loss_factor", drag, low=0.0, low_open=False, high=1e-3,
-                    why="V_M read off SKF's diagram against the oil level H/d_m, up to about 1e-3")
+        check_range("friction.drag_loss_factor", drag, low=0.0, low_open=False, high=0.01,
+                    why="V_M read off SKF's diagram against the oil level H/d_m, of order 1e-5 to 1e-3")
         if supply != "oil_bath":
             raise ValueError(f"friction.drag_loss_factor: the drag loss is an oil bath's (lubricant.supply = "
                              f"'oil_bath'), got lubricant.supply = {supply!r}")
@@ -232,6 +232,26 @@ SKF_OUTPUTS = (
     Output("friction.sliding_coefficient", "", "", "sliding friction coefficient μ_sl (SKF)"),
 )
 
+def _single_bearing_blocks(model: str, constants: str, outputs, ball_compute, roller_compute) -> tuple[Block, Block]:
+    """The blocks of a single ball and a whole roller bearing for `effects.friction = model`, reading
+    the input `constants`."""
+    prefix = "" if model == "palmgren" else f"{model}_"
+    return (Block(name=f"{prefix}friction", bearing_types=BALL_BEARING_KINDS, enabled_by=("friction", model),
+                  requires=("equilibrium",), inputs=("bearing", "operating", "lubricant", constants), outputs=outputs,
+                  compute=ball_compute),
+            Block(name=f"roller_{prefix}friction", bearing_types=ROLLER_KINDS, enabled_by=("friction", model),
+                  requires=(EQUILIBRIUM_BLOCK,), inputs=("bearing", "raceways", "operating", "lubricant", constants),
+                  outputs=outputs, compute=roller_compute, scene_keys=WHOLE_BEARING))
+
+
+def _set_block(model: str, constants: str, compute) -> Block:
+    """The block of a bearing set for `effects.friction = model`, reading the input `constants`."""
+    prefix = "" if model == "palmgren" else f"{model}_"
+    return Block(name=f"set_{prefix}friction", bearing_types=BALL_BEARING_KINDS, enabled_by=("friction", model),
+                 requires=("bearing_set",), inputs=("bearing", "operating", "lubricant", constants), outputs=SET_OUTPUTS,
+                 compute=compute, scene_keys=SET)
+
+
 SET_OUTPUTS = (*(Output(f"set.bearings.{number}.friction.torque", "N*m", "N*mm", f"bearing {number}: friction torque")
                   for number in range(SET_SIZE)),
                Output("set.friction.torque", "N*m", "N*mm", "friction torque of the set"),
@@ -256,68 +276,15 @@ ADAPTER = register(Adapter(
     inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),
             InputBuilder(("skf_bearing",), BALL_BEARING_KINDS + ROLLER_KINDS, _skf_bearing, after=("bearing",)),
             InputBuilder(("friction_constants",), SHAFT, _shaft_constants, after=("shaft",))),
-    blocks=(Block(
-        name="friction",
-        bearing_types=BALL_BEARING_KINDS,
-        enabled_by=("friction", "palmgren"),
-        requires=("equilibrium",),
-        inputs=("bearing", "operating", "lubricant", "friction_constants"),
-        outputs=OUTPUTS,
-        compute=_ball_friction,
-    ), Block(
-        name="roller_friction",
-        bearing_types=ROLLER_KINDS,
-        enabled_by=("friction", "palmgren"),
-        requires=(EQUILIBRIUM_BLOCK,),
-        inputs=("bearing", "raceways", "operating", "lubricant", "friction_constants"),
-        outputs=OUTPUTS,
-        compute=_roller_friction,
-        scene_keys=WHOLE_BEARING,
-    ), Block(
-        name="skf_friction",
-        bearing_types=BALL_BEARING_KINDS,
-        enabled_by=("friction", "skf"),
-        requires=("equilibrium",),
-        inputs=("bearing", "operating", "lubricant", "skf_bearing"),
-        outputs=SKF_OUTPUTS,
-        compute=_ball_skf_friction,
-    ), Block(
-        name="roller_skf_friction",
-        bearing_types=ROLLER_KINDS,
-        enabled_by=("friction", "skf"),
-        requires=(EQUILIBRIUM_BLOCK,),
-        inputs=("bearing", "raceways", "operating", "lubricant", "skf_bearing"),
-        outputs=SKF_OUTPUTS,
-        compute=_roller_skf_friction,
-        scene_keys=WHOLE_BEARING,
-    ), Block(
-        name="set_friction",
-        bearing_types=BALL_BEARING_KINDS,
-        enabled_by=("friction", "palmgren"),
-        requires=("bearing_set",),
-        inputs=("bearing", "operating", "lubricant", "friction_constants"),
-        outputs=SET_OUTPUTS,
-        compute=_set_friction,
-        scene_keys=SET,
-    ), Block(
-        name="set_skf_friction",
-        bearing_types=BALL_BEARING_KINDS,
-        enabled_by=("friction", "skf"),
-        requires=("bearing_set",),
-        inputs=("bearing", "operating", "lubricant", "skf_bearing"),
-        outputs=SET_OUTPUTS,
-        compute=_set_skf_friction,
-        scene_keys=SET,
-    ), Block(
-        name="shaft_friction",
-        bearing_types=SHAFT,
-        enabled_by=("friction", "palmgren"),
-        requires=("shaft",),
-        inputs=("shaft", "lubricant", "friction_constants"),
-        outputs=(Output("bearings.friction.torque", "N*m", "N*mm", "each bearing's friction torque M0 + M1",
-                        in_report=False),
-                 Output("shaft.friction.torque", "N*m", "N*mm", "friction torque of the shaft's bearings"),
-                 Output("shaft.friction.power", "W", "W", "power loss of the shaft's bearings")),
-        compute=_shaft_friction,
-    )),
+    blocks=(*_single_bearing_blocks("palmgren", "friction_constants", OUTPUTS, _ball_friction, _roller_friction),
+            *_single_bearing_blocks("skf", "skf_bearing", SKF_OUTPUTS, _ball_skf_friction, _roller_skf_friction),
+            _set_block("palmgren", "friction_constants", _set_friction),
+            _set_block("skf", "skf_bearing", _set_skf_friction),
+            Block(name="shaft_friction", bearing_types=SHAFT, enabled_by=("friction", "palmgren"), requires=("shaft",),
+                  inputs=("shaft", "lubricant", "friction_constants"),
+                  outputs=(Output("bearings.friction.torque", "N*m", "N*mm", "each bearing's friction torque M0 + M1",
+                                  in_report=False),
+                           Output("shaft.friction.torque", "N*m", "N*mm", "friction torque of the shaft's bearings"),
+                           Output("shaft.friction.power", "W", "W", "power loss of the shaft's bearings")),
+                  compute=_shaft_friction)),
 ))

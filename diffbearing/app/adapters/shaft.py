@@ -291,18 +291,13 @@ BLOCK = Block(
                "(model limits 1 %, 90°)", in_report=False),
         Output("bearings.elements.azimuth", "rad", "deg", "each bearing's element azimuths ψ in its own frame "
                "(NaN beyond its element count)", in_report=False),
-        Output("bearings.elements.inner_load", "N", "kN", "each bearing's element loads at the inner raceway (rollers: "
-               "the roller load)", in_report=False),
-        Output("bearings.elements.outer_load", "N", "kN", "each bearing's element loads at the outer raceway",
-               in_report=False),
-        Output("bearings.elements.inner_max_pressure", "Pa", "GPa", "each bearing's element peak pressures, inner "
-               "raceway", in_report=False),
-        Output("bearings.elements.outer_max_pressure", "Pa", "GPa", "each bearing's element peak pressures, outer "
-               "raceway", in_report=False),
-        Output("bearings.elements.inner_contact_angle", "rad", "deg", "each ball bearing's inner contact angles "
-               "(NaN for a roller bearing)", in_report=False),
-        Output("bearings.elements.outer_contact_angle", "rad", "deg", "each ball bearing's outer contact angles "
-               "(NaN for a roller bearing)", in_report=False),
+        *(output for side in ("inner", "outer") for output in (
+            Output(f"bearings.elements.{side}_load", "N", "kN", f"each bearing's element loads, {side} raceway",
+                   in_report=False),
+            Output(f"bearings.elements.{side}_max_pressure", "Pa", "GPa", f"each bearing's element peak pressures, "
+                   f"{side} raceway", in_report=False),
+            Output(f"bearings.elements.{side}_contact_angle", "rad", "deg", f"each ball bearing's {side} contact "
+                   "angles (NaN for a roller bearing)", in_report=False))),
         Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
                in_report=False),
         *(Output(f"bearings.frequencies.{field}", "Hz", "Hz", f"each bearing's {text} at its solved contact angles",
