@@ -151,6 +151,7 @@ def test_preload_offset_is_the_matched_bearings_when_the_fit_closes_the_clearanc
     assert bool(tight.values["set.converged"])
 
 
+@pytest.mark.slow  # 10 s (2 cores)
 def test_pair_skf_friction_is_each_bearings_at_its_load():
     """effects.friction = "skf" on the DB pair (8000 r/min, speed effects off, VG 32 grease) under 1.2 kN
     axial: each bearing's SKF moment is the physics function's at that bearing's solved load (1e-12),

@@ -114,6 +114,7 @@ def test_preload_is_lost_near_harris_factor(solve, offset):
     np.testing.assert_allclose(low / PRELOAD, 2.0**1.5, rtol=0.02)
 
 
+@pytest.mark.slow  # 13 s (2 cores)
 def test_system_stiffness_is_assembled_from_the_bearings(solve, offset):
     """Exact identity: K_shaft = Σ_k G_kᵀ P_k K_k P_k G_k, each K_k the single bearing's stiffness
     at its own displacement; and at another point z_p, G(−z_p)ᵀ K G(−z_p)."""
