@@ -24,7 +24,7 @@ import jax.numpy as jnp
 ARMIJO = 1e-4  # c of the sufficient-decrease test
 FORCING_LARGEST = 1e-3  # η_max: the loosest linear solve, unless the caller asks a tighter one
 FORCING_SMALLEST = 1e-10  # η_min
-TANGENT_TOLERANCE = 1e-12  # relative tolerance of the tangent (derivative) solves: forward and reverse agree to ~1e-11
+TANGENT_TOLERANCE = 1e-14  # relative tolerance of the tangent (derivative) solves: forward and reverse agree to ~1e-12
 
 
 def gmres(linear, rhs, preconditioner, tolerance, *, restart: int, max_steps: int):
