@@ -23,6 +23,7 @@ f₁ for angular-contact ones (0.00025 against 0.00037).
 import jax.numpy as jnp
 
 from .numerics import positive_power
+from .roller_life import axial_load_factor
 
 # bearing kind → (f₀ grease or oil mist, f₀ oil bath or recirculating oil, a, b) with f₁ = a (P₀/C₀)^b
 PALMGREN_CONSTANTS = {
@@ -55,7 +56,7 @@ def friction_load(kind: str, radial, axial, contact_angle=0.0):
     elif kind == "angular_contact_ball":
         load = axial - 0.1 * radial
     elif kind == "tapered_roller":
-        load = 2.0 * 0.4 / jnp.tan(contact_angle) * axial
+        load = 2.0 * axial_load_factor(contact_angle) * axial
     elif kind == "cylindrical_roller":
         load = radial
     else:

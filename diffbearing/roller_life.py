@@ -125,6 +125,12 @@ def roller_reference_rating_life(rating, roller_count, roller_diameter, contact_
     return jnp.where(loaded, safe_damage ** (-8.0 / 9.0), jnp.inf)
 
 
+def axial_load_factor(contact_angle):
+    """Y = 0.4 cot α [-] of a single-row tapered roller bearing with cup angle α > 0 (ISO 281:2007,
+    Table 8)."""
+    return 0.4 / jnp.tan(contact_angle)
+
+
 def roller_equivalent_dynamic_load(force, contact_angle):
     """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row radial roller
     bearing for force [Fx, Fy, Fz] [N]: α = 0 (cylindrical) gives P = F_r; α > 0 (tapered) takes

@@ -41,7 +41,7 @@ d_m^−0.145): the catalogue's own jump, kept as printed. Y is the bearing's axi
 Every function takes and returns SI quantities (N, m, rad/s, m²/s, N·m) and converts to the
 catalogue's units inside, as `friction_torque` does; the exceptions are G_rr, G_sl and the drag
 constants K_ball, K_roll, which exist only in the catalogue's units and are returned in them.
-Power loss N = M ω [W].
+Power loss N = M ω [W] (`friction_torque.friction_power`).
 """
 
 import equinox as eqx
@@ -49,8 +49,9 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from .friction_torque import friction_power
 from .numerics import positive_power
-from .params import _is_concrete, check_range
+from .params import BALL_BEARING_KINDS, _is_concrete, check_range
 
 # Geometry constants by bearing series (SKF General Catalogue 6000, Friction, Table 3).
 # deep groove ball bearings: series → (R1, R2, S1, S2)
@@ -377,11 +378,6 @@ def seal_moment(diameter_coefficient, exponent, constant_term, counterface_diame
     return _newton_metre(0.5 * seals * moment)
 
 
-def frictional_power(moment, speed):
-    """Power loss N = M ω [W] of a frictional moment [N·m] at the relative ring speed [rad/s]."""
-    return moment * jnp.abs(speed)
-
-
 # ---- the whole model -----------------------------------------------------------------------------
 
 def frictional_moment(kind: str, constants, radial, axial, speed, kinematic_viscosity, bore, outside_diameter, *,
@@ -418,7 +414,7 @@ def frictional_moment(kind: str, constants, radial, axial, speed, kinematic_visc
     if seals not in (1, 2):
         raise ValueError(f"seals must be 1 or 2, got {seals!r}")
 
-    needs_length = kind not in ("deep_groove_ball", "angular_contact_ball")
+    needs_length = kind not in BALL_BEARING_KINDS
     if geometry_constant is None or (needs_length and roller_length_constant is None):
         if not isinstance(constants, str):
             raise ValueError("geometry_constant: K_Z (and K_L for roller bearings) must be given with a tuple of constants")
@@ -450,7 +446,7 @@ def frictional_moment(kind: str, constants, radial, axial, speed, kinematic_visc
     total = inlet_shear * replenishment * rolling + sliding + seal_part + drag
     return FrictionalMoment(rolling=rolling, sliding=sliding, seal=seal_part, drag=drag, inlet_shear=inlet_shear,
                             replenishment=replenishment, sliding_coefficient=mu, rolling_variable=rolling_variable,
-                            sliding_variable=sliding_variable, total=total, power=frictional_power(total, speed))
+                            sliding_variable=sliding_variable, total=total, power=friction_power(total, speed))
 
 
 def _drag(kind, series, supply, drag_loss_factor, speed, bore, outside_diameter, inner_ring_width, rows, geometry_constant,
@@ -460,7 +456,7 @@ def _drag(kind, series, supply, drag_loss_factor, speed, bore, outside_diameter,
     if supply != "oil_bath":
         raise ValueError(f"drag_loss_factor: the drag loss applies to supply 'oil_bath' only, got supply {supply!r}")
     check_range("drag_loss_factor", drag_loss_factor, low=0.0, low_open=False, why="V_M of the catalogue's diagram")
-    if kind in ("deep_groove_ball", "angular_contact_ball"):
+    if kind in BALL_BEARING_KINDS:
         rows = (2 if series == "double_row" else 1) if rows is None else rows
         return drag_moment_ball(drag_loss_factor, speed, bore, outside_diameter, geometry_constant, rows)
     _require("inner_ring_width", inner_ring_width, "the drag loss of roller bearings (B [m])")

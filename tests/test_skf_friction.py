@@ -7,7 +7,7 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import build_model, load_scene, run_model, skf_friction, static_safety
+from diffbearing import build_model, friction_torque, load_scene, run_model, skf_friction, static_safety
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 
@@ -87,7 +87,7 @@ def test_angular_contact_at_standstill_and_power():
     assert float(rolling) == pytest.approx(r1 * 65.0**1.97 * (2000.0 + r2 * 1500.0) ** 0.54, rel=1e-12)
     result = _example()
     assert float(result.power) == pytest.approx(float(result.total) * 3500 * RPM, rel=1e-14)
-    assert float(skf_friction.frictional_power(0.1, -3000 * RPM)) == pytest.approx(0.1 * 3000 * RPM, rel=1e-14)
+    assert float(friction_torque.friction_power(0.1, -3000 * RPM)) == pytest.approx(0.1 * 3000 * RPM, rel=1e-14)
 
 
 def test_seal_moment():

@@ -7,7 +7,7 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from ... import friction_torque, skf_friction, static_safety
+from ... import friction_torque, roller_life, skf_friction, static_safety
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
@@ -183,7 +183,7 @@ def _roller_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
     return _skf_outputs(skf_friction.frictional_moment(
         bearing.kind, skf.series, *_split(results["force"][:3]), _speed(inputs["operating"]),
         lubricant.viscosity / lubricant.density, skf.bore, skf.outside_diameter, supply=skf.supply,
-        axial_load_factor=0.4 / jnp.tan(inputs["raceways"].cup_angle), drag_loss_factor=skf.drag_loss_factor,
+        axial_load_factor=roller_life.axial_load_factor(inputs["raceways"].cup_angle), drag_loss_factor=skf.drag_loss_factor,
         inner_ring_width=skf.inner_ring_width))
 
 

@@ -234,12 +234,16 @@ def _modified_checks(values: dict) -> tuple[list[str], list[str]]:
     return [], warnings
 
 
-_MODIFIED_OUTPUTS = (
+# the lubrication and the limits behind a_ISO: the same for each bearing of a set
+_LUBRICATION_OUTPUTS = (
     Output("life.kinematic_viscosity", "m^2/s", "mm^2/s", "kinematic viscosity ν at the operating temperature"),
     Output("life.reference_viscosity", "m^2/s", "mm^2/s", "rated viscosity ν1 (ISO 281 eqs. 28–29)"),
     Output("life.viscosity_ratio", "", "", "viscosity ratio κ = ν/ν1"),
     Output("life.contamination_factor", "", "", "contamination factor e_C (ISO 281 Annex A)"),
     Output("life.fatigue_load_limit", "N", "kN", "fatigue load limit C_u (the scene's, else Annex B)"),
+)
+_MODIFIED_OUTPUTS = (
+    *_LUBRICATION_OUTPUTS,
     Output("life.a_iso", "", "", "life modification factor a_ISO at P"),
     Output("life.L10m", "1e6 rev", "1e6 rev", "modified rating life L10m = a_ISO L10"),
     Output("life.reference_equivalent_load", "N", "kN", "P_ref = C_r L10r^(−1/p) of the load distribution",
@@ -341,7 +345,7 @@ ADAPTER = register(Adapter(
         enabled_by=("life", True),
         requires=("set_life",),
         inputs=("bearing", "operating", "lubricant", "contamination", "fatigue_load_limit"),
-        outputs=(*_MODIFIED_OUTPUTS[:5],
+        outputs=(*_LUBRICATION_OUTPUTS,
                  *(output for number in range(SET_SIZE) for output in (
                      Output(f"set.bearings.{number}.a_iso", "", "", f"bearing {number}: a_ISO at its P_ref"),
                      Output(f"set.bearings.{number}.L10rm", "1e6 rev", "1e6 rev",
