@@ -150,3 +150,23 @@ def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
         loads = np.asarray(alone.values[f"rollers.{side}.load"])
         np.testing.assert_allclose(shaft.values[f"bearings.elements.{side}_load"][0][:rollers], loads, rtol=1e-9,
                                    atol=1e-9 * loads.max())
+
+
+@pytest.mark.slow
+def test_element_loads_derivatives_through_the_shaft():
+    """d(every ball's inner load, both bearings)/d(the gear load) through the gearbox shaft's equilibrium
+    against a central difference, forward and reverse (the balls out of contact stay at zero)."""
+    import equinox as eqx
+
+    from .helpers import assert_jvp_matches_central_difference, example_scene
+
+    model = build_model(load_scene(example_scene("gearbox_shaft"), ["effects.stiffness=false"]))
+    function = model.function()
+
+    def element_loads(forces):
+        inputs = eqx.tree_at(lambda i: i["shaft"].loads.forces, model.inputs, forces)
+        return function(inputs)["bearings.elements.inner_load"]
+
+    forces = model.inputs["shaft"].loads.forces
+    direction = np.ones_like(forces) * np.array([100.0, -50.0, 30.0])
+    assert_jvp_matches_central_difference(element_loads, forces, direction, 1e-3, rtol=1e-6, atol=1e-6)

@@ -176,3 +176,22 @@ def test_tapered_roller_scene_uses_its_axial_load_factor():
         axial_load_factor=0.4 / np.tan(float(model.inputs["raceways"].cup_angle)))
     assert float(values["friction.torque"]) == pytest.approx(float(want.total), rel=1e-12)
     assert float(values["friction.sliding_coefficient"]) == pytest.approx(0.002, rel=1e-3)  # μ_EHL of tapered bearings
+
+
+@pytest.mark.slow
+def test_scene_torque_derivatives_through_the_solved_bearing():
+    """d M_SKF / d(applied force, viscosity) through the 6411E's ball equilibrium against a central
+    difference, forward and reverse."""
+    import equinox as eqx
+
+    model = build_model(load_scene(example_scene("gearbox_6411_ratings"), overrides=[
+        "effects.friction=skf", 'friction.series="64"']))
+    function = model.function()
+
+    def torque(point):
+        inputs = eqx.tree_at(lambda i: (i["operating"].force, i["lubricant"].viscosity), model.inputs, point)
+        return function(inputs)["friction.torque"]
+
+    point = (jnp.asarray(model.inputs["operating"].force), jnp.asarray(model.inputs["lubricant"].viscosity))
+    direction = (jnp.array([100.0, -50.0, 80.0]), 0.1 * point[1])
+    assert_jvp_matches_central_difference(torque, point, direction, 1e-4, rtol=1e-6)
