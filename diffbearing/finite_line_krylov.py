@@ -22,12 +22,25 @@ columns that the blocks leave out is what GMRES iterates on (docs/benchmarks.md 
 by Newton–Krylov). Newton steps are limited (`UniformLevel.limit`): no meniscus moves more than
 a cell, and, where a caller asks, no pressure and H₀ more than given amounts.
 
+Starved, each finer level (`solve_nested`): the interpolated menisci are moved upstream of where
+the fine column's gap closes below the oil layer, or to the highest where it never does
+(`interpolate_level`); Newton–Krylov solves for the pressure and H₀ with the menisci held
+(`UniformLevel.holding`); the flux that this solution carries differs from the supply (by 9 %
+at 1607 N from 33 × 65 to 65 × 65: the inlet is resolved anew), and a Newton step that moves
+every meniscus at once stalls on near-singular modes of single columns' menisci (singular values
+of 1e-5 where it stalled at 1607 N on 65 × 65, 3e-2 at the 1028 N solution); so the supply is
+continued from the one the held solution carries to the oil layer's, in stages of ln H_oil that
+double when a stage converges and halve when it does not (`UniformLevel.supplied`). The coarsest
+starved grid keeps 64 cells or more along the half roller (`STARVED_COARSEST_CELLS`).
+
 Derivatives: implicit, through the finest solution (`newton_krylov.krylov_root`), the tangent
 systems solved by the same preconditioned GMRES.
 """
 
+import copy
 import math
 
+import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -42,7 +55,12 @@ from .roller_profile import RollerProfile, crown_drop
 
 COARSEST_NODES = 33  # nodes along rolling of the coarsest (dense) grid
 COARSEST_CELLS = 32  # fewest cells on the half roller of a coarser grid: fewer put h < 0 at the roller end
+STARVED_COARSEST_CELLS = 64  # starved: 33 × 33 solves with h < 0 at the roller end (0.8 µm, 1028 N), 33 × 65 not
 NEWTON_STEPS = 80  # Newton–Krylov steps per level: 257 × 257 flooded at 1028 N takes 50 (docs/benchmarks.md)
+HELD_MENISCUS_STEPS = 15  # starved levels: Newton–Krylov steps on the pressure and H₀ before the menisci move
+SUPPLY_STAGE_STEPS = 20  # Newton–Krylov steps of one stage of the supply continuation
+SUPPLY_STAGES = 24  # the most stages tried (accepted or halved) of one level's supply continuation
+SUPPLY_SMALLEST_STAGE = 2e-3  # the smallest change of ln H_oil the continuation tries
 STARVED_FORCING = 1e-6  # the loosest linear solve of a starved level: at 1e-3 the 65 × 48 starved case stalls
 BAND = 5  # colors along x: a Reynolds row reads nodes i − 2 … i + 1
 READ_BAND = (-2, -1, 0, 1)  # those nodes, from the row's own
@@ -91,6 +109,7 @@ class UniformLevel:
         self.load_target = load_target
         self.largest_step = largest_step
         self.starved = supply is not None
+        self.held = False  # the menisci held where the unknowns have them (`holding`)
         self.interior = (nx - 2) * ny
         offsets = np.arange(-(nx - 1), nx)[:, None] * self.spacing  # node offset, then cell offset −1 … 2ny
         cells = np.arange(-1, 2 * ny + 1)[None, :] * self.cell
@@ -109,6 +128,27 @@ class UniformLevel:
                                                    jnp.abs(step[self.interior]) / offset_step))
         return step / jnp.maximum(ratio, 1.0)
 
+    def supplied(self, factor):
+        """This level with its oil layer H_oil multiplied by `factor` (the supply continuation)."""
+        scaled = copy.copy(self)
+        scaled.columns = eqx.tree_at(lambda columns: columns.supply, self.columns, self.columns.supply * factor)
+        return scaled
+
+    def flux_ratio(self, unknowns):
+        """[-] The median over the columns with a meniscus inside the grid of the flux each carries
+        over the supply, 1 − F_m (the meniscus equation is −(flux/H_oil − 1) away from its bounds)."""
+        _, _, meniscus = self.unpack(unknowns)
+        inside = (meniscus > INLET + self.spacing) & (meniscus < OUTLET - self.spacing)
+        ratio = 1.0 - self.residual(unknowns)[self.interior + 1:]
+        return jnp.where(inside.any(), jnp.nanmedian(jnp.where(inside, ratio, jnp.nan)), 1.0)
+
+    def holding(self):
+        """This level with its menisci held (starved): each meniscus equation replaced by
+        X_m − X_m,now = 0, so that Newton moves only the pressure and H₀."""
+        held = copy.copy(self)
+        held.held = True
+        return held
+
     def elastic(self, pressure):
         """H_el (nx, ny) of P (nx, ny) on y ≥ 0 and its mirror image."""
         whole = jnp.concatenate([pressure[:, ::-1], pressure], axis=1)
@@ -126,10 +166,10 @@ class UniformLevel:
 
     def row_scale(self, unknowns):
         """(nx − 2, ny) [-]: 1 + |∂L/∂P| of each Reynolds row at its own node from the Poiseuille
-        terms, (ε_{i−½} + ε_{i+½})/ΔX + ΔX (ε_{j−½}/ΔY_{j−½} + ε_{j+½}/ΔY_{j+½})/w_j
-        (`local_equations`: L is the Reynolds residual × ΔX)."""
+        terms, (ε_{i−½} + ε_{i+½})/ΔX + ΔX (ε_{j−½}/ΔY_{j−½} + ε_{j+½}/ΔY_{j+½})/w_j with |ε| (a
+        start's film may be negative) (`local_equations`: L is the Reynolds residual × ΔX)."""
         pressure, offset, _ = self.unpack(unknowns)
-        _, flow = reynolds_coefficients(pressure, self.film(pressure, offset), self.columns.fluid)
+        flow = jnp.abs(reynolds_coefficients(pressure, self.film(pressure, offset), self.columns.fluid)[1])
         along_x = 0.5 * (flow[2:] + 2.0 * flow[1:-1] + flow[:-2]) / self.spacing
         faces = 0.5 * (flow[:, 1:] + flow[:, :-1]) / jnp.diff(self.columns.y)  # no flux at y = 0; p = 0 at the end
         end = flow[:, -1:] / (self.columns.edges[-1] - self.columns.y[-1])
@@ -163,7 +203,9 @@ class UniformLevel:
         pressure, offset, meniscus = self.unpack(unknowns)
         local = local_equations(pressure, self.film(pressure, offset), meniscus, self.columns)
         result = jnp.append(local[:self.nx - 2].reshape(-1), self.balance(pressure))
-        return jnp.concatenate([result, local[self.nx - 2]]) if self.starved else result
+        if not self.starved:
+            return result
+        return jnp.concatenate([result, meniscus - jax.lax.stop_gradient(meniscus) if self.held else local[self.nx - 2]])
 
     def preconditioner(self, unknowns, _=None):
         """v ↦ M⁻¹v: the column blocks of J at `unknowns`, bordered by H₀ and the load balance
@@ -230,15 +272,19 @@ class UniformLevel:
             offset_column = by_offset[:rows, j]
             if self.starved:
                 block = block.at[:rows, rows].set(by_meniscus[:rows, j])
-                block = block.at[rows, rows].set(by_meniscus[rows, j])
-                meniscus_row = meniscus_by_pressure[j % 3, :, j]
-                for shift in (-1, 0, 1):  # the meniscus row reads the whole film of its column and its neighbours'
-                    neighbour = j + shift
-                    inside = (neighbour >= 0) & (neighbour < ny)
-                    sensitivity = meniscus_by_height[j % 3, :, jnp.clip(neighbour, 0, ny - 1)]
-                    meniscus_row = meniscus_row + inside * sensitivity @ elastic(shift, j, node, target)
-                block = block.at[rows, :rows].add(meniscus_row)
-                offset_column = jnp.append(offset_column, by_offset[rows, j])
+                if self.held:  # the meniscus row X_m − X_m,now
+                    block = block.at[rows, rows].set(1.0)
+                    offset_column = jnp.append(offset_column, 0.0)
+                else:
+                    block = block.at[rows, rows].set(by_meniscus[rows, j])
+                    meniscus_row = meniscus_by_pressure[j % 3, :, j]
+                    for shift in (-1, 0, 1):  # the meniscus row reads the whole film of its column and its neighbours'
+                        neighbour = j + shift
+                        inside = (neighbour >= 0) & (neighbour < ny)
+                        sensitivity = meniscus_by_height[j % 3, :, jnp.clip(neighbour, 0, ny - 1)]
+                        meniscus_row = meniscus_row + inside * sensitivity @ elastic(shift, j, node, target)
+                    block = block.at[rows, :rows].add(meniscus_row)
+                    offset_column = jnp.append(offset_column, by_offset[rows, j])
             inverse = jnp.linalg.inv(block)
             return inverse, inverse @ offset_column
 
@@ -268,7 +314,8 @@ class UniformLevel:
 
 def interpolate_level(unknowns, coarse: UniformLevel, fine: UniformLevel):
     """Unknowns of `coarse` on `fine`: P bilinear (p = 0 at the roller end; wet only where every
-    coarse node around is), H₀ kept, menisci linear along y."""
+    coarse node around is), H₀ kept, menisci linear along y, moved upstream of where the fine
+    column's gap closes below the oil layer."""
     pressure, offset, meniscus = coarse.unpack(unknowns)
     y_coarse = jnp.append(coarse.columns.y, coarse.columns.edges[-1])
 
@@ -280,9 +327,18 @@ def interpolate_level(unknowns, coarse: UniformLevel, fine: UniformLevel):
     wet = bilinear((pressure > 0).astype(float)) > 1.0 - 1e-9
     fine_pressure = jnp.where(wet, bilinear(pressure), 0.0)
     result = jnp.append(fine_pressure[1:-1].reshape(-1), offset)
-    if fine.starved:
-        result = jnp.concatenate([result, jnp.interp(fine.columns.y, coarse.columns.y, meniscus)])
-    return result
+    if not fine.starved:
+        return result
+    # a meniscus lies upstream of where its column's gap first closes below the oil layer (a cell
+    # upstream); where it never closes, no full film forms (at its pressure peak the film would carry
+    # ρ̄h > h_oil): the meniscus is the highest. The fine grid's end columns close where the coarse
+    # ones they come from did not, and the other way round.
+    highest = OUTLET - 0.5 * fine.spacing
+    closes = fine.film(fine_pressure, offset) <= fine.columns.supply
+    closure = fine.columns.x[jnp.argmax(closes, axis=0)] - fine.spacing
+    menisci = jnp.interp(fine.columns.y, coarse.columns.y, meniscus)
+    menisci = jnp.where(closes.any(axis=0), jnp.minimum(menisci, closure), highest)
+    return jnp.concatenate([result, jnp.clip(menisci, INLET, highest)])
 
 
 def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=None):
@@ -298,13 +354,39 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
                              max_steps=steps, limit=level.limit, scale=level.residual_scale,
                              loosest=STARVED_FORCING if level.starved else FORCING_LARGEST)[0]
 
+    def solved(level, unknowns):
+        return jnp.max(jnp.abs(level.residual(unknowns) / level.residual_scale(unknowns))) <= tolerance
+
+    def solve_finer(level, unknowns):
+        """Starved: the pressure and H₀ first with the menisci held; then the supply continued
+        from the one that the flux of that solution carries to the oil layer's (`supply_path`)."""
+        if not level.starved:
+            return solve(level, unknowns, NEWTON_STEPS)
+        unknowns = solve(level.holding(), unknowns, HELD_MENISCUS_STEPS)
+
+        def stage(state):
+            unknowns, factor, stride, count = state
+            target = factor * jnp.exp(-jnp.clip(jnp.log(factor), -stride, stride))
+            trial = solve(level.supplied(target), unknowns, SUPPLY_STAGE_STEPS)
+            accepted = solved(level.supplied(target), trial)
+            return (jnp.where(accepted, trial, unknowns), jnp.where(accepted, target, factor),
+                    jnp.where(accepted, 2.0 * stride, 0.5 * stride), count + 1)
+
+        def more(state):
+            _, factor, stride, count = state
+            return (factor != 1.0) & (stride >= SUPPLY_SMALLEST_STAGE) & (count < SUPPLY_STAGES)
+
+        ratio = level.flux_ratio(unknowns)
+        unknowns = jax.lax.while_loop(more, stage, (unknowns, ratio, jnp.abs(jnp.log(ratio)), 0))[0]
+        return solve(level, unknowns, NEWTON_STEPS)
+
     previous = solving(*levels[0])
     unknowns = start(previous)
     if coarsest_steps is not None:
         unknowns = solve(previous, unknowns, coarsest_steps)
     for nx, ny in levels[1:]:
         current = solving(nx, ny)
-        unknowns = solve(current, interpolate_level(unknowns, previous, current), NEWTON_STEPS)
+        unknowns = solve_finer(current, interpolate_level(unknowns, previous, current))
         previous = current
     finest = level_at(*arguments)(*levels[-1])
     return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns))
@@ -323,11 +405,11 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
     the pressure change it asks (`UniformLevel.residual_scale`), below `tolerance` and a positive film on the
     finest grid (at most NEWTON_STEPS per level)."""
     require_float64()
-    levels = krylov_levels(grid)
+    starved = oil_layer is not None
+    levels = krylov_levels(grid, STARVED_COARSEST_CELLS if starved else COARSEST_CELLS)
     if not 0.0 <= side_inflow <= 1.0:
         raise ValueError(f"side_inflow: the fraction of the side inflow in the meniscus balance, in [0, 1], "
                          f"got {side_inflow}")
-    starved = oil_layer is not None
     fixed = jax.lax.stop_gradient
     arguments = (load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length, flat_length,
                  oil_layer)

@@ -9,8 +9,8 @@ forcing terms in an inexact Newton method, SIAM J. Sci. Comput. 17, 1996, choice
 η_k = 0.9 (‖F_k‖/‖F_{k−1}‖)², safeguarded by 0.9 η²_{k−1} where that exceeds 0.1), so that early
 steps cost few Krylov iterations and the last ones converge fast. Globalised by Armijo backtracking
 on ½‖F/s‖² (each equation divided by its size s, `newton_krylov`) as `newton.newton` (Nocedal &
-Wright, Numerical Optimization, 2nd ed. 2006, §11.5), with the inexact slope −(1 − η)‖F/s‖²
-(Eisenstat & Walker, Globally convergent inexact Newton methods, SIAM J. Optim. 4, 1994); a step
+Wright, Numerical Optimization, 2nd ed. 2006, §11.5), with the slope of the step taken (one more
+Jacobian-vector product: where the step is limited it is not −(1 − η)‖F/s‖²); a step
 that lowers nothing is not taken, and the iteration stops there.
 
 `krylov_root` differentiates the root by the implicit function theorem (`jax.lax.custom_root`),
@@ -50,8 +50,7 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         max_steps: the most Newton steps.
         restart, linear_steps: GMRES's Krylov dimension and its most restarts per step.
         shortest: the shortest step length the backtracking tries.
-        limit: d → d shortened (e.g. a largest change per unknown), applied to every step; the
-            sufficient decrease is then asked of the shortened step's fraction of the Newton step.
+        limit: d → d shortened (e.g. a largest change per unknown), applied to every step.
         loosest: the largest forcing term η_k (the loosest relative tolerance of a linear solve).
         scale: y → s > 0 of F's shape, the size of each equation (None: 1): the stopping test and
             the merit ½‖F/s‖² of the backtracking read F/s, s taken at each step's start point
@@ -77,15 +76,13 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         _, linear = jax.linearize(lambda point: function(point, args), y)
         direction = gmres(linear, -residual, preconditioner_at(y, args), forcing, restart=restart,
                           max_steps=linear_steps)
-        fraction = 1.0  # of the Newton step that the limited step is
         if limit is not None:
-            full, direction = direction, limit(direction)
-            fraction = jnp.vdot(direction, full) / jnp.maximum(jnp.vdot(full, full), 1e-300)
+            direction = limit(direction)
+        slope = jnp.vdot(residual / size, linear(direction) / size)  # d(½‖F/s‖²) along the step taken
 
         def shorter(search):
             length, trial_merit, _ = search
-            return ((trial_merit > merit * (1.0 - 2.0 * ARMIJO * length * fraction * (1.0 - forcing)))
-                    & (length > shortest))
+            return (trial_merit > merit + ARMIJO * length * jnp.minimum(slope, 0.0)) & (length > shortest)
 
         def halve(search):
             length = 0.5 * search[0]

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from diffbearing.finite_line_ehl import finite_line_film
-from diffbearing.finite_line_krylov import UniformLevel, finite_line_film_krylov, krylov_levels
+from diffbearing.finite_line_krylov import UniformLevel, finite_line_film_krylov, interpolate_level, krylov_levels
 from diffbearing.influence import love_rectangle
 from diffbearing.line_ehl import FluidParameters, moes_load_parameter
 from diffbearing.roller_profile import roller_profile
@@ -35,6 +35,7 @@ def _level(nx, ny, supply=None):
 
 def test_levels_halve_to_the_dense_grid_and_bad_grids_are_refused():
     assert krylov_levels((257, 257)) == [(33, 33), (65, 65), (129, 129), (257, 257)]
+    assert krylov_levels((257, 257), 64) == [(33, 65), (65, 65), (129, 129), (257, 257)]  # starved
     assert krylov_levels((129, 40)) == [(33, 40), (65, 40), (129, 40)]
     for grid in ((100, 64), (16, 64), (129, 4)):
         with pytest.raises(ValueError, match="grid"):
@@ -56,12 +57,13 @@ def test_fft_film_is_the_dense_love_sum_with_the_mirror_image():
 
 
 @pytest.mark.slow  # 14 s flooded, more starved (2 cores)
-@pytest.mark.parametrize("supply", [None, 3.0])
-def test_preconditioner_blocks_are_the_exact_column_blocks_of_the_jacobian(supply):
+@pytest.mark.parametrize("supply, held", [(None, False), (3.0, False), (3.0, True)])
+def test_preconditioner_blocks_are_the_exact_column_blocks_of_the_jacobian(supply, held):
     """Applied to J's own columns of one y cell, the preconditioner returns the unit vectors where J
     has no coupling to other columns: so the blocks are the exact ones. Checked as M⁻¹(J e) = e
-    for J restricted to block-diagonal plus the H₀ border, assembled from jax.jacfwd."""
-    level = _level(17, 6, supply)
+    for J restricted to block-diagonal plus the H₀ border, assembled from jax.jacfwd; starved,
+    also with the menisci held."""
+    level = _level(17, 6, supply).holding() if held else _level(17, 6, supply)
     key = jax.random.key(1)
     pressure = jax.random.uniform(key, (15, 6)) * jnp.exp(-jnp.arange(15.0) / 4)[:, None]
     unknowns = jnp.append(pressure.reshape(-1), -0.5)
@@ -77,6 +79,43 @@ def test_preconditioner_blocks_are_the_exact_column_blocks_of_the_jacobian(suppl
     apply = level.preconditioner(unknowns)
     for index in (0, 7, 40, interior - 1, interior, len(unknowns) - 1):
         np.testing.assert_allclose(apply(block_jacobian[:, index]), jnp.eye(len(unknowns))[index], atol=1e-9)
+
+
+def test_held_menisci_leave_the_pressure_equations_and_stay_where_they_are():
+    """`holding`: the meniscus rows become X_m − X_m,now (zero, with the identity as their
+    Jacobian rows), the Reynolds rows and the load balance are the level's own."""
+    level = _level(17, 6, 3.0)
+    pressure = jax.random.uniform(jax.random.key(2), (15, 6)) * jnp.exp(-jnp.arange(15.0) / 4)[:, None]
+    unknowns = jnp.concatenate([pressure.reshape(-1), jnp.array([-0.5]), jnp.linspace(-4.0, -2.0, 6)])
+    held = level.holding()
+    rows = level.interior + 1
+    np.testing.assert_array_equal(held.residual(unknowns)[:rows], level.residual(unknowns)[:rows])
+    assert float(jnp.max(jnp.abs(held.residual(unknowns)[rows:]))) == 0.0
+    np.testing.assert_array_equal(jax.jacfwd(held.residual)(unknowns)[rows:],
+                                  jnp.eye(len(unknowns))[rows:])
+    assert not level.held  # the level itself is unchanged
+
+
+def test_interpolated_menisci_lie_upstream_of_where_the_fine_gap_closes_below_the_layer():
+    """`interpolate_level`, starved, no pressure: in a column whose gap H₀ + X²/2 + g(Y) closes
+    below H_oil the meniscus is a cell upstream of the first node where it does (the coarse one,
+    downstream of it, is moved); where the crown keeps the gap above H_oil, at the highest."""
+    fluid = FluidParameters(jnp.asarray(2.0e-4), jnp.asarray(0.4e9), jnp.asarray(0.08), jnp.asarray(2.2e-8),
+                            "roelands", "dowson_higginson")
+
+    def level(nx, ny):
+        return UniformLevel(nx, ny, 66.0, lambda y: 0.1 * jnp.maximum(y - 57.0, 0.0) ** 2, fluid, 3.0, 0.0,
+                            57.0 * np.pi)
+
+    coarse, fine = level(17, 8), level(33, 16)
+    unknowns = jnp.concatenate([jnp.zeros(15 * 8), jnp.array([1.0]), jnp.full(8, 0.5)])
+    _, offset, menisci = fine.unpack(interpolate_level(unknowns, coarse, fine))
+    gap = fine.film(jnp.zeros((33, 16)), offset)
+    closes = np.asarray(gap <= 3.0)
+    assert float(offset) == 1.0 and closes.any(axis=0).any() and not closes.any(axis=0).all()
+    x = np.asarray(fine.columns.x)
+    expected = np.where(closes.any(axis=0), x[np.argmax(closes, axis=0)] - fine.spacing, x[-1] - 0.5 * fine.spacing)
+    np.testing.assert_allclose(menisci, expected, rtol=0, atol=1e-12)
 
 
 @pytest.fixture(scope="module")
@@ -97,16 +136,42 @@ def test_newton_krylov_solves_the_dense_solvers_equations(flooded):
     np.testing.assert_allclose(krylov.thickness, dense.thickness, rtol=1e-6)
 
 
+def _dry_under_the_layer(film, layer):
+    """The y cells with no pressure whose gap closes below the oil layer somewhere."""
+    pressure, thickness = np.asarray(film.pressure), np.asarray(film.thickness)
+    return [j for j in range(pressure.shape[1]) if pressure[:, j].max() <= 0 and thickness[:, j].min() < layer]
+
+
 @pytest.mark.slow  # about 80 s (2 cores): both solvers
 def test_newton_krylov_solves_the_dense_solvers_starved_equations():
-    """Starved by 0.8 µm of oil at 1028 N on 65 × 48 uniform cells (33 × 48 dense, then Newton–Krylov
-    with the menisci moving at most a cell per step): the dense Newton's solution, menisci included."""
+    """Starved by 0.8 µm of oil at 1028 N on 65 × 48 uniform cells (33 × 48 dense, then Newton–Krylov):
+    both converge on the same discrete equations and agree over the middle of the roller (y < 3 mm:
+    films to 2e-4, menisci to 0.1 µm), but take different roots at its end: the dense Newton's
+    leaves the first column past the flat's end dry under a gap thinner than the layer (a root that
+    the layer, which passes no gap thinner than itself as a partial film, does not allow:
+    docs/benchmarks.md §Finite line EHL by Newton–Krylov), the Newton–Krylov's, whose menisci start
+    upstream of where each column's gap closes below the layer, forms a full film there."""
     krylov = jax.jit(lambda w: _solve(w, 0.8e-6, grid=(65, 48)))(1028.0)
     dense = jax.jit(lambda w: _solve(w, 0.8e-6, grid=(65, 48), solver=finite_line_film, axial_clustering=0.0))(1028.0)
     assert bool(krylov.converged) and bool(dense.converged)
-    np.testing.assert_allclose(krylov.pressure, dense.pressure, atol=1e-6 * float(jnp.max(dense.pressure)))
-    np.testing.assert_allclose(krylov.thickness, dense.thickness, rtol=1e-6)
-    np.testing.assert_allclose(krylov.meniscus, dense.meniscus, atol=1e-9)
+    middle = np.asarray(dense.y) < 3e-3
+    np.testing.assert_allclose(krylov.thickness[:, middle], dense.thickness[:, middle], rtol=2e-4)
+    np.testing.assert_allclose(krylov.meniscus[middle], dense.meniscus[middle], atol=1e-7)
+    assert _dry_under_the_layer(krylov, 0.8e-6) == [] and len(_dry_under_the_layer(dense, 0.8e-6)) >= 1
+
+
+@pytest.mark.slow  # about a minute (2 cores)
+def test_newton_krylov_starved_at_a_heavier_load_converges_through_the_supply_continuation():
+    """1607 N starved by 0.8 µm on 65 × 65 (33 × 65 dense first): a Newton–Krylov step that moves
+    every meniscus stalled here (scaled residual 0.08); with the menisci held first and the supply
+    continued from the flux of that solution it converges, with a positive film, the menisci of
+    the flat's middle inside the inlet and those of the roller's crowned end at the highest."""
+    film = jax.jit(lambda w: _solve(w, 0.8e-6, grid=(65, 65)))(1607.0)
+    assert bool(film.converged) and float(film.residual) < 1e-10 and float(film.minimum) > 0.0
+    assert _dry_under_the_layer(film, 0.8e-6) == []
+    y, meniscus, x = np.asarray(film.y), np.asarray(film.meniscus), np.asarray(film.x)
+    assert np.all((meniscus[y < 5e-3] > x[0]) & (meniscus[y < 5e-3] < 0.0))
+    assert meniscus[-1] == pytest.approx(x[-1] - 0.5 * (x[1] - x[0]), rel=1e-12)
 
 
 @pytest.mark.slow  # about a minute (2 cores): the solve, its forward and reverse derivatives, two more solves
