@@ -345,7 +345,8 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
     """(the finest UniformLevel built from the live `arguments`, its solution with implicit
     derivatives): `start(coarsest level)` → unknowns there, solved by Newton–Krylov in at most
     `coarsest_steps` (None: taken as solved), then interpolated to each finer level and solved
-    again in at most NEWTON_STEPS; no derivative flows through the iterations.
+    again in at most NEWTON_STEPS (starved: after the held menisci and the supply continuation of
+    the module docstring); no derivative flows through the iterations.
     `level_at(*arguments)` → a function (nx, ny) → UniformLevel."""
     solving = level_at(*jax.lax.stop_gradient(arguments))
 
@@ -359,7 +360,8 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
 
     def solve_finer(level, unknowns):
         """Starved: the pressure and H₀ first with the menisci held; then the supply continued
-        from the one that the flux of that solution carries to the oil layer's (`supply_path`)."""
+        from the one that the flux of that solution carries (`UniformLevel.flux_ratio`) to the oil
+        layer's, each stage's change of ln H_oil doubled where it converges and halved where not."""
         if not level.starved:
             return solve(level, unknowns, NEWTON_STEPS)
         unknowns = solve(level.holding(), unknowns, HELD_MENISCUS_STEPS)
