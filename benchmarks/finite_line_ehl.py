@@ -7,8 +7,10 @@ Roller with a 12.7 mm flat and 10 mm crown radius, 14.7 mm long, on the outer ra
 1000 r/min (docs/papers.md, §The starved-EHL paper). Writes benchmarks/results/finite_line_ehl.{md,png}:
 
 1. accuracy against time at 1028 N, flooded and starved by h_oil = 0.8 µm: the formulas, the 1-D
-   line contact (129 and 513 nodes) and the 2-D solver on 25, 33 and 41 × 48, each against the
-   public scene's grid [65, 129] (65 × 65 on the half domain), the finest the dense Newton takes;
+   line contact (129 and 513 nodes), the dense 2-D solver on 25, 33 and 41 × 48 and the public
+   scene's grid [65, 129] (65 × 65 on the half domain, the finest it takes), and the matrix-free
+   Newton–Krylov on uniform cells, each against the finest Newton–Krylov solution that converges
+   (257 × 257 flooded, 129 × 129 starved: 257 × 257 starved does not, docs/benchmarks.md);
 2. the paper's minimum films at 0.8 µm for 1028 / 1607 / 2471 N (33 × 48; 65 × 65 without 2471 N),
    through the load continuation where Newton at the load fails;
 3. the starvation criterion Er at h_oil = 1.8 and 2.0 µm (33 × 48): from the 1-D start, as the
@@ -38,6 +40,7 @@ from line_ehl import FLAT_LENGTH, LOAD, LUBRICANT, RADIUS, SPEED, formula_rows  
 from timing import median_time  # noqa: E402
 
 from diffbearing.finite_line_ehl import finite_line_film  # noqa: E402
+from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
 from diffbearing.line_ehl import density_ratio, line_film  # noqa: E402
 from diffbearing.roller_profile import roller_profile  # noqa: E402
 
@@ -46,6 +49,8 @@ ROLLER_LOAD = LOAD * FLAT_LENGTH
 OIL_LAYER = 0.8e-6
 GRIDS = ((25, 48), (33, 48), (41, 48))
 REFERENCE_GRID = (65, 65)  # the public scene's [65, 129]
+# Newton–Krylov grids by oil layer, the last the accuracy reference: the finest that converges
+KRYLOV_GRIDS = {None: ((129, 129), (257, 257)), OIL_LAYER: ((129, 129),)}
 # (grid, loads [N], oil layers [m]): on 65 × 65, 2471 N and the Er pair are left out of this run:
 # 2471 N spent over 10 minutes in the continuation's first stage (1606 N) without converging
 # (docs/validation/lubricant_film.md, §The paper's starved minimum films), and the Er pair's
@@ -57,10 +62,10 @@ PAPER_MINIMUM = {1028.0: 0.319e-6, 1607.0: 0.215e-6, 2471.0: 0.159e-6}
 RESULTS = Path(__file__).resolve().parent / "results"
 
 
-def finite_line_solver(grid, oil_layer, **options):
-    """(compiled W → FiniteLineFilm, compile time [s]); `options` go to `finite_line_film`."""
+def finite_line_solver(grid, oil_layer, solver=finite_line_film, **options):
+    """(compiled W → FiniteLineFilm, compile time [s]); `options` go to `solver`."""
     start = time.perf_counter()
-    solve = jax.jit(lambda w: finite_line_film(w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
+    solve = jax.jit(lambda w: solver(w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
                                                LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid,
                                                oil_layer=oil_layer, **options))
     solve = solve.lower(ROLLER_LOAD).compile()
@@ -92,13 +97,19 @@ def level_rows(oil_layer):
         rows.append((f"2-D finite line, {grid[0]} × {grid[1]}", float(result.central), float(result.minimum),
                      bool(result.converged), run, compile_s))
         print(rows[-1], flush=True)
+    for grid in KRYLOV_GRIDS[oil_layer]:
+        solve, compile_s = finite_line_solver(grid, oil_layer, solver=finite_line_film_krylov)
+        result, run = timed(solve, ROLLER_LOAD)
+        rows.append((f"2-D finite line, Newton–Krylov, {grid[0]} × {grid[1]}", float(result.central),
+                     float(result.minimum), bool(result.converged), run, compile_s))
+        print(rows[-1], flush=True)
     return rows
 
 
 def accuracy_table(title, rows):
-    _, reference_central, reference_minimum, *_ = rows[-1]
-    lines = [f"### {title}", "",
-             "| level | central film | minimum film | central vs 65 × 65 | minimum vs 65 × 65 | converged | run | compile |",
+    reference, reference_central, reference_minimum, *_ = rows[-1]
+    lines = [f"### {title} (reference: {reference})", "",
+             "| level | central film | minimum film | central vs reference | minimum vs reference | converged | run | compile |",
              "|---|---|---|---|---|---|---|---|"]
     for name, central, minimum, converged, run, compile_s in rows:
         minimum_text = "–" if np.isnan(minimum) else f"{minimum * 1e6:.4f} µm"
@@ -112,14 +123,14 @@ def accuracy_table(title, rows):
 def plot(flooded, starved, path):
     figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
     for axis, (title, rows) in zip(axes, (("fully flooded", flooded), ("starved, h_oil = 0.8 µm", starved))):
-        _, reference_central, reference_minimum, *_ = rows[-1]
+        reference_name, reference_central, reference_minimum, *_ = rows[-1]
         for index, (name, central, minimum, _, run, _) in enumerate(rows[:-1]):
             for value, reference, marker in ((central, reference_central, "o"), (minimum, reference_minimum, "s")):
                 if not np.isnan(value):
                     axis.loglog(run, abs(value / reference - 1) * 100, marker, color=f"C{index}",
                                 label=name if marker == "o" else None)
-        axis.set(xlabel="wall time per solve [s]", ylabel="error against 2-D 65 × 65 [%]",
-                 title=f"{title}: ○ central film, □ minimum film")
+        axis.set(xlabel="wall time per solve [s]", ylabel="error against the reference [%]",
+                 title=f"{title}: ○ central film, □ minimum film\nreference: {reference_name.removeprefix('2-D finite line, ')}")
         axis.grid(alpha=0.3, which="both")
     axes[1].legend(fontsize=7)
     figure.suptitle("The starved-EHL paper's roller contact at 1028 N: what accuracy costs in time")
@@ -181,9 +192,10 @@ def starvation_criterion(grid, layers):
 
 def main():
     flooded, starved = level_rows(None), level_rows(OIL_LAYER)
-    lines = ["# The starved-EHL paper's finite line contact (2-D, dense Newton): accuracy against time", "",
-             "`python benchmarks/finite_line_ehl.py`: 1028 N, 1000 r/min, errors against the 2-D solution on 65 × 65 "
-             "(the half domain of the public scene's grid [65, 129], the finest the dense Newton takes). 2-D grids are "
+    lines = ["# The starved-EHL paper's finite line contact (2-D): accuracy against time", "",
+             "`python benchmarks/finite_line_ehl.py`: 1028 N, 1000 r/min, errors against the finest Newton–Krylov "
+             "solution that converges (uniform cells: 257 × 257 flooded, 129 × 129 starved); the dense Newton's 65 × 65 "
+             "is the half domain of the public scene's grid [65, 129], the finest it takes. 2-D grids are "
              "named by the half domain solved. Formulas and 1-D: median of 5 runs; 2-D: one run. Formulas and 1-D at "
              "mid-length, load on the flat length; their minimum film is the one of the rolling direction (outlet "
              "constriction), not the roller-end one.", "",
