@@ -66,8 +66,8 @@ def finite_line_solver(grid, oil_layer, solver=finite_line_film, **options):
     """(compiled W → FiniteLineFilm, compile time [s]); `options` go to `solver`."""
     start = time.perf_counter()
     solve = jax.jit(lambda w: solver(w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
-                                               LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid,
-                                               oil_layer=oil_layer, **options))
+                                     LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid,
+                                     oil_layer=oil_layer, **options))
     solve = solve.lower(ROLLER_LOAD).compile()
     return solve, time.perf_counter() - start
 
