@@ -237,6 +237,8 @@ class UniformLevel:
         if self.starved:
             by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
 
+        if self.starved and not self.held:  # held, the meniscus rows are X_m − X_m,now
+
             def meniscus_rows(c):  # cotangent on the meniscus rows of the columns of class c
                 cotangent = jnp.zeros((rows + 1, ny)).at[rows].set((column % 3 == c).astype(float))
                 _, pull = jax.vjp(local, pressure[1:-1], height, meniscus)
@@ -369,8 +371,9 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
         def stage(state):
             unknowns, factor, stride, count = state
             target = factor * jnp.exp(-jnp.clip(jnp.log(factor), -stride, stride))
-            trial = solve(level.supplied(target), unknowns, SUPPLY_STAGE_STEPS)
-            accepted = solved(level.supplied(target), trial)
+            staged = level.supplied(target)
+            trial = solve(staged, unknowns, SUPPLY_STAGE_STEPS)
+            accepted = solved(staged, trial)
             return (jnp.where(accepted, trial, unknowns), jnp.where(accepted, target, factor),
                     jnp.where(accepted, 2.0 * stride, 0.5 * stride), count + 1)
 
