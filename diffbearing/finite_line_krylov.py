@@ -37,7 +37,6 @@ Derivatives: implicit, through the finest solution (`newton_krylov.krylov_root`)
 systems solved by the same preconditioned GMRES.
 """
 
-import copy
 import math
 
 import equinox as eqx
@@ -87,6 +86,15 @@ def krylov_levels(grid, fewest_cells: int = COARSEST_CELLS) -> list[tuple[int, i
     return levels
 
 
+class Stage(eqx.Module):
+    """The equations a starved level solves at one stage of `solve_nested` (the `args` of its
+    residual and preconditioner): with `held`, each meniscus row X_m − X_m,now (the menisci held
+    where the unknowns have them); the oil layer H_oil multiplied by `supply_factor` [-]."""
+
+    held: jax.Array
+    supply_factor: jax.Array
+
+
 class UniformLevel:
     """One grid of the nested iteration: its columns (ColumnGrid), FFT spectrum, rigid film and
     the elastic coefficients the preconditioner reads. Dimensionless, Hertz half-width units:
@@ -109,7 +117,6 @@ class UniformLevel:
         self.load_target = load_target
         self.largest_step = largest_step
         self.starved = supply is not None
-        self.held = False  # the menisci held where the unknowns have them (`holding`)
         self.interior = (nx - 2) * ny
         offsets = np.arange(-(nx - 1), nx)[:, None] * self.spacing  # node offset, then cell offset −1 … 2ny
         cells = np.arange(-1, 2 * ny + 1)[None, :] * self.cell
@@ -128,11 +135,11 @@ class UniformLevel:
                                                    jnp.abs(step[self.interior]) / offset_step))
         return step / jnp.maximum(ratio, 1.0)
 
-    def supplied(self, factor):
-        """This level with its oil layer H_oil multiplied by `factor` (the supply continuation)."""
-        scaled = copy.copy(self)
-        scaled.columns = eqx.tree_at(lambda columns: columns.supply, self.columns, self.columns.supply * factor)
-        return scaled
+    def staged(self, stage):
+        """The columns with the oil layer of `stage` (a Stage or None: the level's own)."""
+        if stage is None:
+            return self.columns
+        return eqx.tree_at(lambda columns: columns.supply, self.columns, self.columns.supply * stage.supply_factor)
 
     def flux_ratio(self, unknowns):
         """[-] The median over the columns with a meniscus inside the grid of the flux each carries
@@ -141,13 +148,6 @@ class UniformLevel:
         inside = (meniscus > INLET + self.spacing) & (meniscus < OUTLET - self.spacing)
         ratio = 1.0 - self.residual(unknowns)[self.interior + 1:]
         return jnp.where(inside.any(), jnp.nanmedian(jnp.where(inside, ratio, jnp.nan)), 1.0)
-
-    def holding(self):
-        """This level with its menisci held (starved): each meniscus equation replaced by
-        X_m − X_m,now = 0, so that Newton moves only the pressure and H₀."""
-        held = copy.copy(self)
-        held.held = True
-        return held
 
     def elastic(self, pressure):
         """H_el (nx, ny) of P (nx, ny) on y ≥ 0 and its mirror image."""
@@ -197,27 +197,32 @@ class UniformLevel:
         return (2.0 * self.spacing * jnp.sum(pressure * self.columns.widths) - self.load_target) / self.load_target \
             * 0.5 * np.pi
 
-    def residual(self, unknowns, _=None):
+    def residual(self, unknowns, stage=None):
         """Reynolds complementarity (row-major), load balance, (starved) menisci: the dense
-        solver's order."""
+        solver's order; starved, the equations of `stage` (a Stage; None: the level's own)."""
         pressure, offset, meniscus = self.unpack(unknowns)
-        local = local_equations(pressure, self.film(pressure, offset), meniscus, self.columns)
+        local = local_equations(pressure, self.film(pressure, offset), meniscus, self.staged(stage))
         result = jnp.append(local[:self.nx - 2].reshape(-1), self.balance(pressure))
         if not self.starved:
             return result
-        return jnp.concatenate([result, meniscus - jax.lax.stop_gradient(meniscus) if self.held else local[self.nx - 2]])
+        menisci = local[self.nx - 2]
+        if stage is not None:
+            menisci = jnp.where(stage.held, meniscus - jax.lax.stop_gradient(meniscus), menisci)
+        return jnp.concatenate([result, menisci])
 
-    def preconditioner(self, unknowns, _=None):
-        """v ↦ M⁻¹v: the column blocks of J at `unknowns`, bordered by H₀ and the load balance
-        (module docstring)."""
+    def preconditioner(self, unknowns, stage=None):
+        """v ↦ M⁻¹v: the column blocks of J at `unknowns` (of the equations of `stage`), bordered
+        by H₀ and the load balance (module docstring)."""
         nx, ny = self.nx, self.ny
         rows = nx - 2
         size = rows + 1 if self.starved else rows  # unknowns of a column: its interior pressures (and meniscus)
         pressure, offset, meniscus = self.unpack(jax.lax.stop_gradient(unknowns))
         height = self.film(pressure, offset)
+        columns = self.staged(stage)
+        held = False if stage is None else stage.held
 
         def local(interior, film, menisci):
-            return local_equations(jnp.pad(interior, ((1, 1), (0, 0))), film, menisci, self.columns)
+            return local_equations(jnp.pad(interior, ((1, 1), (0, 0))), film, menisci, columns)
 
         _, linear = jax.linearize(local, pressure[1:-1], height, meniscus)
         zero_p, zero_h, zero_m = jnp.zeros_like(pressure[1:-1]), jnp.zeros_like(height), jnp.zeros_like(meniscus)
@@ -237,7 +242,7 @@ class UniformLevel:
         if self.starved:
             by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
 
-        if self.starved and not self.held:  # held, the meniscus rows are X_m − X_m,now
+        if self.starved:
 
             def meniscus_rows(c):  # cotangent on the meniscus rows of the columns of class c
                 cotangent = jnp.zeros((rows + 1, ny)).at[rows].set((column % 3 == c).astype(float))
@@ -274,19 +279,16 @@ class UniformLevel:
             offset_column = by_offset[:rows, j]
             if self.starved:
                 block = block.at[:rows, rows].set(by_meniscus[:rows, j])
-                if self.held:  # the meniscus row X_m − X_m,now
-                    block = block.at[rows, rows].set(1.0)
-                    offset_column = jnp.append(offset_column, 0.0)
-                else:
-                    block = block.at[rows, rows].set(by_meniscus[rows, j])
-                    meniscus_row = meniscus_by_pressure[j % 3, :, j]
-                    for shift in (-1, 0, 1):  # the meniscus row reads the whole film of its column and its neighbours'
-                        neighbour = j + shift
-                        inside = (neighbour >= 0) & (neighbour < ny)
-                        sensitivity = meniscus_by_height[j % 3, :, jnp.clip(neighbour, 0, ny - 1)]
-                        meniscus_row = meniscus_row + inside * sensitivity @ elastic(shift, j, node, target)
-                    block = block.at[rows, :rows].add(meniscus_row)
-                    offset_column = jnp.append(offset_column, by_offset[rows, j])
+                meniscus_row = meniscus_by_pressure[j % 3, :, j]
+                for shift in (-1, 0, 1):  # the meniscus row reads the whole film of its column and its neighbours'
+                    neighbour = j + shift
+                    inside = (neighbour >= 0) & (neighbour < ny)
+                    sensitivity = meniscus_by_height[j % 3, :, jnp.clip(neighbour, 0, ny - 1)]
+                    meniscus_row = meniscus_row + inside * sensitivity @ elastic(shift, j, node, target)
+                # held, the meniscus row is X_m − X_m,now
+                unit = jnp.zeros(size).at[rows].set(1.0)
+                block = block.at[rows].set(jnp.where(held, unit, jnp.append(meniscus_row, by_meniscus[rows, j])))
+                offset_column = jnp.append(offset_column, jnp.where(held, 0.0, by_offset[rows, j]))
             inverse = jnp.linalg.inv(block)
             return inverse, inverse @ offset_column
 
@@ -352,38 +354,43 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
     `level_at(*arguments)` → a function (nx, ny) → UniformLevel."""
     solving = level_at(*jax.lax.stop_gradient(arguments))
 
-    def solve(level, unknowns, steps):
-        return newton_krylov(level.residual, unknowns, None, level.preconditioner, tolerance=tolerance,
+    def solve(level, unknowns, steps, stage=None):
+        return newton_krylov(level.residual, unknowns, stage, level.preconditioner, tolerance=tolerance,
                              max_steps=steps, limit=level.limit, scale=level.residual_scale,
                              loosest=STARVED_FORCING if level.starved else FORCING_LARGEST)[0]
-
-    def solved(level, unknowns):
-        return jnp.max(jnp.abs(level.residual(unknowns) / level.residual_scale(unknowns))) <= tolerance
 
     def solve_finer(level, unknowns):
         """Starved: the pressure and H₀ first with the menisci held; then the supply continued
         from the one that the flux of that solution carries (`UniformLevel.flux_ratio`) to the oil
-        layer's, each stage's change of ln H_oil doubled where it converges and halved where not."""
+        layer's, each stage's change of ln H_oil doubled where it converges and halved where not;
+        last, the level's own equations. One Newton–Krylov is traced for all of them: the stage
+        is its argument (`Stage`)."""
         if not level.starved:
             return solve(level, unknowns, NEWTON_STEPS)
-        unknowns = solve(level.holding(), unknowns, HELD_MENISCUS_STEPS)
+        holding, continuing, finishing, done = 0, 1, 2, 3
 
-        def stage(state):
-            unknowns, factor, stride, count = state
-            target = factor * jnp.exp(-jnp.clip(jnp.log(factor), -stride, stride))
-            staged = level.supplied(target)
-            trial = solve(staged, unknowns, SUPPLY_STAGE_STEPS)
-            accepted = solved(staged, trial)
-            return (jnp.where(accepted, trial, unknowns), jnp.where(accepted, target, factor),
-                    jnp.where(accepted, 2.0 * stride, 0.5 * stride), count + 1)
-
-        def more(state):
-            _, factor, stride, count = state
+        def continues(factor, stride, count):
             return (factor != 1.0) & (stride >= SUPPLY_SMALLEST_STAGE) & (count < SUPPLY_STAGES)
 
-        ratio = level.flux_ratio(unknowns)
-        unknowns = jax.lax.while_loop(more, stage, (unknowns, ratio, jnp.abs(jnp.log(ratio)), 0))[0]
-        return solve(level, unknowns, NEWTON_STEPS)
+        def step(state):
+            unknowns, factor, stride, count, phase = state
+            target = jnp.where(phase == continuing, factor * jnp.exp(-jnp.clip(jnp.log(factor), -stride, stride)), 1.0)
+            steps = jnp.select([phase == holding, phase == continuing], [HELD_MENISCUS_STEPS, SUPPLY_STAGE_STEPS],
+                               NEWTON_STEPS)
+            stage = Stage(phase == holding, target)
+            trial = solve(level, unknowns, steps, stage)
+            error = jnp.max(jnp.abs(level.residual(trial, stage) / level.residual_scale(trial)))
+            accepted = (phase != continuing) | (error <= tolerance)
+            ratio = level.flux_ratio(trial)  # after the held stage, where the continuation starts
+            factor = jnp.select([phase == holding, accepted], [ratio, target], factor)
+            stride = jnp.select([phase == holding, accepted], [jnp.abs(jnp.log(ratio)), 2.0 * stride], 0.5 * stride)
+            count = jnp.where(phase == continuing, count + 1, count)
+            phase = jnp.where(phase == finishing, done,
+                              jnp.where(continues(factor, stride, count), continuing, finishing))
+            return jnp.where(accepted, trial, unknowns), factor, stride, count, phase
+
+        state = (unknowns, jnp.asarray(1.0), jnp.asarray(0.0), jnp.asarray(0), jnp.asarray(holding))
+        return jax.lax.while_loop(lambda state: state[-1] != done, step, state)[0]
 
     previous = solving(*levels[0])
     unknowns = start(previous)

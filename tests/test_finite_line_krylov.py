@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from diffbearing.finite_line_ehl import finite_line_film
-from diffbearing.finite_line_krylov import UniformLevel, finite_line_film_krylov, interpolate_level, krylov_levels
+from diffbearing.finite_line_krylov import Stage, UniformLevel, finite_line_film_krylov, interpolate_level, krylov_levels
 from diffbearing.influence import love_rectangle
 from diffbearing.line_ehl import FluidParameters, moes_load_parameter
 from diffbearing.roller_profile import roller_profile
@@ -61,39 +61,44 @@ def test_fft_film_is_the_dense_love_sum_with_the_mirror_image():
 def test_preconditioner_blocks_are_the_exact_column_blocks_of_the_jacobian(supply, held):
     """Applied to J's own columns of one y cell, the preconditioner returns the unit vectors where J
     has no coupling to other columns: so the blocks are the exact ones. Checked as M⁻¹(J e) = e
-    for J restricted to block-diagonal plus the H₀ border, assembled from jax.jacfwd; starved,
-    also with the menisci held."""
-    level = _level(17, 6, supply).holding() if held else _level(17, 6, supply)
+    for J restricted to block-diagonal plus the H₀ border, assembled from jax.jacfwd; starved, at
+    a stage of the supply continuation (the layer × 0.8), free and with the menisci held."""
+    level = _level(17, 6, supply)
+    stage = Stage(jnp.asarray(held), jnp.asarray(0.8)) if supply is not None else None
     key = jax.random.key(1)
     pressure = jax.random.uniform(key, (15, 6)) * jnp.exp(-jnp.arange(15.0) / 4)[:, None]
     unknowns = jnp.append(pressure.reshape(-1), -0.5)
     if supply is not None:
         unknowns = jnp.concatenate([unknowns, jnp.linspace(-4.0, -2.0, 6)])
-    jacobian = jax.jacfwd(level.residual)(unknowns)
+    jacobian = jax.jacfwd(level.residual)(unknowns, stage)
     interior, ny = 15 * 6, 6
     # column of each unknown and equation: pressures row-major (x, y), then H₀ / balance, then menisci
     column = np.concatenate([np.tile(np.arange(ny), 15), [-1], np.arange(ny) if supply is not None else []])
     same = (column[:, None] == column[None, :]) | (column[:, None] == -1) | (column[None, :] == -1)
     same[interior, interior] = False  # the balance does not read H₀
     block_jacobian = jnp.where(same, jacobian, 0.0)
-    apply = level.preconditioner(unknowns)
+    apply = level.preconditioner(unknowns, stage)
     for index in (0, 7, 40, interior - 1, interior, len(unknowns) - 1):
         np.testing.assert_allclose(apply(block_jacobian[:, index]), jnp.eye(len(unknowns))[index], atol=1e-9)
 
 
-def test_held_menisci_leave_the_pressure_equations_and_stay_where_they_are():
-    """`holding`: the meniscus rows become X_m − X_m,now (zero, with the identity as their
-    Jacobian rows), the Reynolds rows and the load balance are the level's own."""
+def test_stages_hold_the_menisci_and_scale_the_supply():
+    """`Stage`: held, the meniscus rows become X_m − X_m,now (zero, with the identity as their
+    Jacobian rows) and the Reynolds rows and the load balance are the level's own; a supply factor
+    is the level with that much oil (its meniscus rows), and the factor 1, free, the level itself."""
     level = _level(17, 6, 3.0)
     pressure = jax.random.uniform(jax.random.key(2), (15, 6)) * jnp.exp(-jnp.arange(15.0) / 4)[:, None]
     unknowns = jnp.concatenate([pressure.reshape(-1), jnp.array([-0.5]), jnp.linspace(-4.0, -2.0, 6)])
-    held = level.holding()
+    held = Stage(jnp.asarray(True), jnp.asarray(1.0))
     rows = level.interior + 1
-    np.testing.assert_array_equal(held.residual(unknowns)[:rows], level.residual(unknowns)[:rows])
-    assert float(jnp.max(jnp.abs(held.residual(unknowns)[rows:]))) == 0.0
-    np.testing.assert_array_equal(jax.jacfwd(held.residual)(unknowns)[rows:],
-                                  jnp.eye(len(unknowns))[rows:])
-    assert not level.held  # the level itself is unchanged
+    np.testing.assert_array_equal(level.residual(unknowns, held)[:rows], level.residual(unknowns)[:rows])
+    assert float(jnp.max(jnp.abs(level.residual(unknowns, held)[rows:]))) == 0.0
+    np.testing.assert_array_equal(jax.jacfwd(level.residual)(unknowns, held)[rows:], jnp.eye(len(unknowns))[rows:])
+    np.testing.assert_array_equal(level.residual(unknowns, Stage(jnp.asarray(False), jnp.asarray(1.0))),
+                                  level.residual(unknowns))
+    thinner = _level(17, 6, 3.0 * 0.7)
+    np.testing.assert_allclose(level.residual(unknowns, Stage(jnp.asarray(False), jnp.asarray(0.7))),
+                               thinner.residual(unknowns), rtol=1e-14, atol=1e-14)
 
 
 def test_interpolated_menisci_lie_upstream_of_where_the_fine_gap_closes_below_the_layer():
