@@ -141,6 +141,7 @@ SEAL_CONSTANTS = {
     "cylindrical_roller.LS": (2.0, 0.032, 50.0),
 }
 
+SEALS = ("RS1", "RSH", "LS")  # the seal designations of SEAL_CONSTANTS
 KINDS = tuple(SERIES_CONSTANTS)
 SUPPLIES = tuple(REPLENISHMENT_CONSTANTS)
 
@@ -368,6 +369,24 @@ def drag_moment_roller(drag_loss_factor, speed, bore, outside_diameter, inner_ri
     dm = 0.5 * (_mm(bore) + _mm(outside_diameter))
     constant = roller_drag_constant(geometry_constant, roller_length_constant, bore, outside_diameter)
     return _newton_metre(10.0 * drag_loss_factor * constant * _mm(inner_ring_width) * dm**4 * _rpm(speed) ** 2)
+
+
+def seal_row(kind: str, seal: str, outside_diameter) -> str:
+    """The key of `SEAL_CONSTANTS` for the seal `seal` (one of `SEALS`) of a `kind` bearing of outside
+    diameter D [m] (a concrete number); ValueError naming the rows there are where none holds (a
+    seal of another size takes its own (β, K_S1, K_S2) in `frictional_moment`)."""
+    outside = float(_mm(outside_diameter))
+    rows = [key for key in SEAL_CONSTANTS if key.split(".")[:2] == [kind, seal]]
+    for key in rows:
+        bounds = key.split(".", 2)[2:]  # [] (any D), ["D<=62"], ["62<D<=80"]
+        low, _, high = bounds[0].partition("D<=") if bounds else ("", "", "")
+        if (not low or outside > float(low.rstrip("<"))) and (not high or outside <= float(high)):
+            return key
+    if not rows:
+        raise ValueError(f"seal: SKF's seal constants give no {seal} seal on a {kind} bearing (rows: "
+                         f"{tuple(SEAL_CONSTANTS)})")
+    raise ValueError(f"seal: SKF's constants of the {seal} seal on a {kind} bearing hold for {rows}, not for "
+                     f"D = {outside:g} mm")
 
 
 def seal_moment(diameter_coefficient, exponent, constant_term, counterface_diameter, seals=2):

@@ -195,3 +195,42 @@ def test_scene_torque_derivatives_through_the_solved_bearing():
     point = (jnp.asarray(model.inputs["operating"].force), jnp.asarray(model.inputs["lubricant"].viscosity))
     direction = (jnp.array([100.0, -50.0, 80.0]), 0.1 * point[1])
     assert_jvp_matches_central_difference(torque, point, direction, 1e-4, rtol=1e-6)
+
+
+def test_seal_rows_by_outside_diameter():
+    """`seal_row` picks SKF's seal constants by the outside diameter's range (D ≤ 62 mm, 62 < D ≤ 80 mm for
+    RS1 on deep groove ball bearings) and refuses a D that no row holds."""
+    assert skf_friction.seal_row("deep_groove_ball", "RS1", 62e-3) == "deep_groove_ball.RS1.D<=62"
+    assert skf_friction.seal_row("deep_groove_ball", "RS1", 62.5e-3) == "deep_groove_ball.RS1.62<D<=80"
+    assert skf_friction.seal_row("cylindrical_roller", "LS", 400e-3) == "cylindrical_roller.LS"
+    with pytest.raises(ValueError, match="not for D = 81 mm"):
+        skf_friction.seal_row("deep_groove_ball", "RS1", 81e-3)
+    with pytest.raises(ValueError, match="no LS seal on a deep_groove_ball bearing"):
+        skf_friction.seal_row("deep_groove_ball", "LS", 50e-3)
+
+
+def test_scene_seals_add_skfs_seal_moment():
+    """friction.seal = "LS" on the cylindrical roller bearing scene (d_s = 60 mm): the moment grows by
+    M_seal = K_S1 d_s² + K_S2 = 0.032 · 60² + 50 N·mm for two seals (SKF seal constants), half for one;
+    the seal keys are refused without a seal, without d_s and with 3 seals."""
+    base = ["effects.friction=skf", "bearing.bore=50 mm", "bearing.outer_diameter=110 mm", "lubricant.preset=iso_vg_68"]
+    sealed = ["friction.seal=LS", "friction.seal_counterface_diameter=60 mm"]
+
+    def torque(*overrides):
+        values = run_model(build_model(load_scene(example_scene("cylindrical_roller_bearing"),
+                                                  overrides=base + list(overrides))), progress=False).values
+        return float(values["friction.torque"]), float(values["friction.seal_torque"])
+
+    open_torque, open_seal = torque()
+    two, two_seal = torque(*sealed)
+    one, one_seal = torque(*sealed, "friction.seals=1")
+    want = (0.032 * 60.0**2 + 50.0) * 1e-3
+    assert open_seal == 0.0
+    assert two_seal == pytest.approx(want, rel=1e-13) and two - open_torque == pytest.approx(want, rel=1e-12)
+    assert one_seal == pytest.approx(want / 2, rel=1e-13) and one - open_torque == pytest.approx(want / 2, rel=1e-12)
+    for overrides, message in ((sealed[1:], "friction.seal_counterface_diameter needs friction.seal"),
+                               (sealed[:1], "friction.seal needs friction.seal_counterface_diameter"),
+                               ([*sealed, "friction.seals=3"], "friction.seals: 1 .* or 2, got 3"),
+                               (["friction.seal=RS1", sealed[1]], "friction.seal: SKF's seal constants give no RS1")):
+        with pytest.raises(ValueError, match=message):
+            build_model(load_scene(example_scene("cylindrical_roller_bearing"), overrides=base + overrides))

@@ -26,8 +26,9 @@ SKF_SUPPLY = {"circulating": "oil_jet", "oil_bath": "oil_bath", "grease": "greas
 
 class SkfBearing(eqx.Module):
     """What SKF's model reads beyond the bearing: its series (Table 3), lubrication (K_rs), bore and
-    outside diameter [m], and for the drag in an oil bath V_M [-] and (roller bearings) the inner
-    ring width B [m]."""
+    outside diameter [m], for the drag in an oil bath V_M [-] and (roller bearings) the inner ring
+    width B [m], and its seals: the row of SKF's seal constants (None: open), their counterface
+    diameter d_s [m] and count."""
 
     series: str = eqx.field(static=True)
     supply: str = eqx.field(static=True)
@@ -35,6 +36,9 @@ class SkfBearing(eqx.Module):
     outside_diameter: jax.Array
     drag_loss_factor: jax.Array | None
     inner_ring_width: jax.Array | None
+    seal: str | None = eqx.field(static=True, default=None)
+    counterface_diameter: jax.Array | None = None
+    seals: int = eqx.field(static=True, default=2)
 
 
 def _f0(v, kind: str):
@@ -84,7 +88,33 @@ def _skf_bearing(v, built) -> dict:
                                  "(SKF's roller drag reads the inner ring width B)")
             width = v["bearing.width"]
     return {"skf_bearing": SkfBearing(series, SKF_SUPPLY[supply], v["bearing.bore"], v["bearing.outer_diameter"],
-                                      drag, width)}
+                                      drag, width, *_seals(v, kind))}
+
+
+def _seals(v, kind: str) -> tuple:
+    """(row of SKF's seal constants or None, d_s [m] or None, seals) from friction.seal,
+    friction.seal_counterface_diameter and friction.seals."""
+    seal = v.get("friction.seal")
+    keys = ("friction.seal_counterface_diameter", "friction.seals")
+    if seal is None:
+        given = [key for key in keys if key in v]
+        if given:
+            raise ValueError(f"{given[0]} needs friction.seal (the seal designation, one of {skf_friction.SEALS})")
+        return None, None, 2
+    if keys[0] not in v:
+        raise ValueError(f"friction.seal needs {keys[0]} (d_s, the seal's counterface diameter: the inner ring "
+                         "shoulder diameter of the bearing tables)")
+    counterface = v[keys[0]]
+    check_range(keys[0], counterface, low=0.0, high=v["bearing.outer_diameter"], unit=" m",
+                why="between 0 and the bearing's outer diameter")
+    seals = v.get("friction.seals", 2)
+    if seals not in (1, 2):
+        raise ValueError(f"friction.seals: 1 (sealed on one side) or 2, got {seals}")
+    try:
+        row = skf_friction.seal_row(kind, seal, v["bearing.outer_diameter"])
+    except ValueError as error:
+        raise ValueError(f"friction.{error}") from None
+    return row, counterface, seals
 
 
 def _kind(bearing) -> str:
@@ -149,6 +179,7 @@ def _skf_outputs(moment: skf_friction.FrictionalMoment) -> dict:
     return {"friction.torque": moment.total, "friction.power": moment.power,
             "friction.rolling_torque": moment.inlet_shear * moment.replenishment * moment.rolling,
             "friction.sliding_torque": moment.sliding, "friction.drag_torque": moment.drag,
+            "friction.seal_torque": moment.seal,
             "friction.inlet_shear_factor": moment.inlet_shear, "friction.replenishment_factor": moment.replenishment,
             "friction.sliding_coefficient": moment.sliding_coefficient}
 
@@ -159,7 +190,8 @@ def _ball_skf_moment(inputs: dict, force) -> skf_friction.FrictionalMoment:
     return skf_friction.frictional_moment(
         bearing.kind, skf.series, *_split(force), _speed(inputs["operating"]), lubricant.viscosity / lubricant.density,
         skf.bore, skf.outside_diameter, supply=skf.supply,
-        static_load_rating=static_safety.ball_bearing_static_load_rating(bearing), drag_loss_factor=skf.drag_loss_factor)
+        static_load_rating=static_safety.ball_bearing_static_load_rating(bearing), drag_loss_factor=skf.drag_loss_factor,
+        seal=skf.seal, counterface_diameter=skf.counterface_diameter, seals=skf.seals)
 
 
 def _ball_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
@@ -184,7 +216,8 @@ def _roller_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
         bearing.kind, skf.series, *_split(results["force"][:3]), _speed(inputs["operating"]),
         lubricant.viscosity / lubricant.density, skf.bore, skf.outside_diameter, supply=skf.supply,
         axial_load_factor=roller_life.axial_load_factor(inputs["raceways"].cup_angle), drag_loss_factor=skf.drag_loss_factor,
-        inner_ring_width=skf.inner_ring_width))
+        inner_ring_width=skf.inner_ring_width, seal=skf.seal, counterface_diameter=skf.counterface_diameter,
+        seals=skf.seals))
 
 
 def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
@@ -227,6 +260,7 @@ SKF_OUTPUTS = (
     Output("friction.rolling_torque", "N*m", "N*mm", "rolling moment φ_ish φ_rs M_rr (SKF)"),
     Output("friction.sliding_torque", "N*m", "N*mm", "sliding moment M_sl = G_sl μ_sl (SKF)"),
     Output("friction.drag_torque", "N*m", "N*mm", "drag moment in the oil bath M_drag (SKF)"),
+    Output("friction.seal_torque", "N*m", "N*mm", "seals' moment M_seal (SKF)"),
     Output("friction.inlet_shear_factor", "", "", "inlet shear heating factor φ_ish (SKF)"),
     Output("friction.replenishment_factor", "", "", "kinematic replenishment factor φ_rs (SKF)"),
     Output("friction.sliding_coefficient", "", "", "sliding friction coefficient μ_sl (SKF)"),
@@ -269,6 +303,11 @@ ADAPTER = register(Adapter(
                                              "22 cylindrical; 302, 322 tapered; default 62 / single_row / 2 / 302)"),
           "friction.drag_loss_factor": Key("number", doc="SKF's V_M read off its diagram against the oil level "
                                                          "H/d_m (oil bath only; default: no drag loss)"),
+          "friction.seal": Key("choice", choices=skf_friction.SEALS,
+                               doc="the bearing's contact seals in SKF's model (RS1, RSH deep groove; RS1 angular "
+                                   "contact; LS cylindrical roller; default: open)"),
+          "friction.seal_counterface_diameter": quantity("length", "d_s, the seal's counterface diameter (SKF)"),
+          "friction.seals": Key("integer", doc="seals on the bearing, 1 or 2 (default 2; SKF)"),
           "bearing.bore": quantity("length"),
           "bearing.outer_diameter": quantity("length"),
           "bearing.width": quantity("length", "bearing width B"),
