@@ -234,3 +234,27 @@ def test_scene_seals_add_skfs_seal_moment():
                                (["friction.seal=RS1", sealed[1]], "friction.seal: SKF's seal constants give no RS1")):
         with pytest.raises(ValueError, match=message):
             build_model(load_scene(example_scene("cylindrical_roller_bearing"), overrides=base + overrides))
+
+
+def test_shaft_skf_friction_is_each_bearings_at_its_load():
+    """effects.friction = "skf" on the gearbox shaft (two 6411, series 64, 3000 r/min, VG 68 oil bath): each
+    bearing's moment is the physics function's at the load that bearing carries on the shaft (1e-12), the
+    shaft's their sum; a series not of the bearings' kind and a single bearing's seal key are refused."""
+    overrides = ["effects.friction=skf", 'friction.series="64"', "lubricant.preset=iso_vg_68"]
+    model = build_model(load_scene(example_scene("gearbox_shaft"), overrides=overrides))
+    values = run_model(model, progress=False).values
+    lubricant = model.inputs["lubricant"]
+    want = []
+    for number, bearing in enumerate(model.inputs["shaft"].bearings):
+        force = values["bearings.force"][number]
+        want.append(float(skf_friction.frictional_moment(
+            "deep_groove_ball", "64", float(np.hypot(force[0], force[1])), abs(float(force[2])), 3000 * RPM,
+            lubricant.viscosity / lubricant.density, 55e-3, 140e-3, supply="oil_bath",
+            static_load_rating=static_safety.ball_bearing_static_load_rating(bearing)).total))
+    np.testing.assert_allclose(values["bearings.friction.torque"], want, rtol=1e-12)
+    assert float(values["shaft.friction.torque"]) == pytest.approx(sum(want), rel=1e-12)
+    assert float(values["shaft.friction.power"]) == pytest.approx(sum(want) * 3000 * RPM, rel=1e-12)
+    for extra, message in (('friction.series="302"', "friction.series: a series of every bearing's kind"),
+                           ("friction.seal=RS1", "friction.seal: a single bearing's key, not taken on a shaft")):
+        with pytest.raises(ValueError, match=message):
+            build_model(load_scene(example_scene("gearbox_shaft"), overrides=[*overrides, extra]))

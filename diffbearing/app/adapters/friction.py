@@ -117,6 +117,28 @@ def _seals(v, kind: str) -> tuple:
     return row, counterface, seals
 
 
+def _shaft_skf_bearings(v, built) -> dict:
+    """Each of the shaft's bearings' SKF inputs (a tuple): the scene's friction.series where it is one
+    of every bearing's kind's, else each kind's default; d and D from each [[bearings]] entry. The oil
+    bath's drag and seals are a single bearing's keys (a shaft's bearings have their own)."""
+    layout, supply = built["shaft"], v.get("lubricant.supply", DEFAULT_SUPPLY)
+    for key in ("friction.drag_loss_factor", "friction.seal"):
+        if key in v:
+            raise ValueError(f"{key}: a single bearing's key, not taken on a shaft (its bearings each have their own)")
+    series = v.get("friction.series")
+    bearings = []
+    for number, (bearing, (bore, outside)) in enumerate(zip(layout.bearings, layout.envelopes)):
+        kind = _kind(bearing)
+        if series is not None and series not in skf_friction.SERIES_CONSTANTS[kind]:
+            raise ValueError(f"friction.series: a series of every bearing's kind in SKF's friction model; bearings[{number}] "
+                             f"is {kind}, whose series are {tuple(skf_friction.SERIES_CONSTANTS[kind])}, got {series!r}")
+        if bore is None or outside is None:
+            raise ValueError(f"bearings[{number}]: bore and outer_diameter are needed by effects.friction = 'skf' "
+                             "(SKF's model reads d and D)")
+        bearings.append(SkfBearing(series or SKF_DEFAULT_SERIES[kind], SKF_SUPPLY[supply], bore, outside, None, None))
+    return {"skf_bearing": tuple(bearings)}
+
+
 def _kind(bearing) -> str:
     """The kind of a shaft layout's bearing (a BallBearing, or a (RollerBearing, RollerRaceways) pair)."""
     return bearing[0].kind if isinstance(bearing, tuple) else bearing.kind
@@ -220,6 +242,28 @@ def _roller_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
         seals=skf.seals))
 
 
+def _shaft_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
+    """Each of the shaft's bearings' SKF moment from its own load, and the shaft's together."""
+    layout, lubricant = inputs["shaft"], inputs["lubricant"]
+    torques = []
+    for number, (bearing, skf) in enumerate(zip(layout.bearings, inputs["skf_bearing"])):
+        radial, axial = _split(results["bearings.force"][number][:3])
+        if isinstance(bearing, tuple):
+            roller, raceways = bearing
+            options = dict(axial_load_factor=roller_life.axial_load_factor(raceways.cup_angle))
+        else:
+            roller, options = bearing, dict(static_load_rating=static_safety.ball_bearing_static_load_rating(bearing))
+        torques.append(skf_friction.frictional_moment(
+            roller.kind, skf.series, radial, axial, layout.speed, lubricant.viscosity / lubricant.density, skf.bore,
+            skf.outside_diameter, supply=skf.supply, **options).total)
+    return _shaft_totals(torques, layout.speed)
+
+
+def _shaft_totals(torques, speed) -> dict:
+    return {"bearings.friction.torque": jnp.stack(torques), "shaft.friction.torque": sum(torques),
+            "shaft.friction.power": friction_torque.friction_power(sum(torques), speed)}
+
+
 def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's Palmgren torque from its own load, and the set's together."""
     constants, speed = inputs["friction_constants"], _speed(inputs["operating"])
@@ -238,8 +282,7 @@ def _shaft_friction(inputs: dict, settings: dict, results: dict) -> dict:
                  if isinstance(bearing, tuple) else
                  _ball_torques(bearing, f0, constants["f1"], lubricant, layout.speed, force))
         torques.append(found["friction.torque"])
-    return {"bearings.friction.torque": jnp.stack(torques), "shaft.friction.torque": sum(torques),
-            "shaft.friction.power": friction_torque.friction_power(sum(torques), layout.speed)}
+    return _shaft_totals(torques, layout.speed)
 
 
 TORQUE_AND_POWER = (
@@ -286,6 +329,12 @@ def _set_block(model: str, constants: str, compute) -> Block:
                  compute=compute, scene_keys=SET)
 
 
+def _shaft_outputs(model: str) -> tuple[Output, ...]:
+    return (Output("bearings.friction.torque", "N*m", "N*mm", f"each bearing's friction torque {model}", in_report=False),
+            Output("shaft.friction.torque", "N*m", "N*mm", "friction torque of the shaft's bearings"),
+            Output("shaft.friction.power", "W", "W", "power loss of the shaft's bearings"))
+
+
 SET_OUTPUTS = (*(Output(f"set.bearings.{number}.friction.torque", "N*m", "N*mm", f"bearing {number}: friction torque")
                   for number in range(SET_SIZE)),
                Output("set.friction.torque", "N*m", "N*mm", "friction torque of the set"),
@@ -314,16 +363,16 @@ ADAPTER = register(Adapter(
           "lubricant.supply": SUPPLY_KEY},
     inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),
             InputBuilder(("skf_bearing",), BALL_BEARING_KINDS + ROLLER_KINDS, _skf_bearing, after=("bearing",)),
-            InputBuilder(("friction_constants",), SHAFT, _shaft_constants, after=("shaft",))),
+            InputBuilder(("friction_constants",), SHAFT, _shaft_constants, after=("shaft",)),
+            InputBuilder(("skf_bearing",), SHAFT, _shaft_skf_bearings, after=("shaft",))),
     blocks=(*_single_bearing_blocks("palmgren", "friction_constants", OUTPUTS, _ball_friction, _roller_friction),
             *_single_bearing_blocks("skf", "skf_bearing", SKF_OUTPUTS, _ball_skf_friction, _roller_skf_friction),
             _set_block("palmgren", "friction_constants", _set_friction),
             _set_block("skf", "skf_bearing", _set_skf_friction),
             Block(name="shaft_friction", bearing_types=SHAFT, enabled_by=("friction", "palmgren"), requires=("shaft",),
-                  inputs=("shaft", "lubricant", "friction_constants"),
-                  outputs=(Output("bearings.friction.torque", "N*m", "N*mm", "each bearing's friction torque M0 + M1",
-                                  in_report=False),
-                           Output("shaft.friction.torque", "N*m", "N*mm", "friction torque of the shaft's bearings"),
-                           Output("shaft.friction.power", "W", "W", "power loss of the shaft's bearings")),
-                  compute=_shaft_friction)),
+                  inputs=("shaft", "lubricant", "friction_constants"), outputs=_shaft_outputs("M0 + M1"),
+                  compute=_shaft_friction),
+            Block(name="shaft_skf_friction", bearing_types=SHAFT, enabled_by=("friction", "skf"), requires=("shaft",),
+                  inputs=("shaft", "lubricant", "skf_bearing"), outputs=_shaft_outputs("(SKF)"),
+                  compute=_shaft_skf_friction)),
 ))

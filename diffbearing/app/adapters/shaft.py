@@ -86,7 +86,8 @@ def _load_entry(index: int, table: dict, convert) -> dict:
 class ShaftLayout(eqx.Module):
     """The scene's shaft: its bearings (a BallBearing, or a (RollerBearing, RollerRaceways) pair,
     each), their positions and offsets [m] and orientations (±1), the loads, the shaft speed
-    [rad/s] and the point of the stiffness [m]."""
+    [rad/s], the point of the stiffness [m] and each bearing's bore and outer diameter [m] (None
+    where its entry gives none; read by the ratings that need them)."""
 
     bearings: tuple
     positions: jax.Array = eqx.field(converter=_as_float)
@@ -95,13 +96,15 @@ class ShaftLayout(eqx.Module):
     speed: jax.Array = eqx.field(converter=_as_float)
     stiffness_at: jax.Array = eqx.field(converter=_as_float)
     orientations: tuple = eqx.field(static=True)
+    envelopes: tuple = ()
 
 
 def _layout(v, built) -> dict:
     shared = {key: value for key, value in v.items() if key.startswith("material.")}
-    bearings = []
+    bearings, envelopes = [], []
     for index, entry in enumerate(v["bearings"]):
         reads = Reads({**shared, **entry})
+        envelopes.append((reads.get("bearing.bore"), reads.get("bearing.outer_diameter")))
         if entry["bearing.type"] in BALL_BEARING_KINDS:
             bearings.append(catalogue_bearing(reads, material(reads)))
         else:
@@ -117,7 +120,7 @@ def _layout(v, built) -> dict:
         ShaftLoads(np.array([load["position"] for load in loads]), np.array([load["force"] for load in loads]),
                    np.array([load["moment"] for load in loads])),
         v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
-        tuple(entry["orientation"] for entry in v["bearings"]))}
+        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes))}
 
 
 def _supports(layout: ShaftLayout, settings: dict):
