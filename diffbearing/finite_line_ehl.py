@@ -32,8 +32,9 @@ Solver: Newton with a dense Jacobian, assembled as J = ∂F/∂u|_H + (∂F/∂H
 forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
 was 3× slower on 65 × 65); `newton` with Armijo backtracking and a Levenberg–Marquardt fallback
-where the piecewise smooth equations stall it, the meniscus moving at most a cell per step; from
-the 1-D line solution (starved alike) extruded along the flat. Where that Newton fails (the
+where the piecewise smooth equations stall it, the meniscus moving at most a cell per step,
+stopping once ‖F‖₂ ≤ `tolerance` (steps below it lower round-off only: flooded 65 × 65 took 60
+steps to 21); from the 1-D line solution (starved alike) extruded along the flat. Where that Newton fails (the
 starved-EHL paper's roller starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it
 stalls with h < 0 at the end constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton again at 65, 80,
 90 and 100 % of the load (`LOAD_PATH`), the first stage from the 1-D start at its load, each next
@@ -70,7 +71,6 @@ MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
 HELD_MENISCUS_STEPS = 30  # starved load stages: Newton steps on pressure and H₀ with the menisci held
 NEWTON_STEPS = 60  # per load stage; the starved-EHL paper's roller at 1607 N starved needs 31–60 (short L–M steps)
 SHORTEST_STEP = 1e-4  # the shortest step length the backtracking tries
-NEWTON_FLOOR = 1e-13  # ‖F‖₂ [-] below which Newton takes no step (round-off)
 LOAD_PATH = (0.65, 0.8, 0.9, 1.0)  # the load continuation's stages, fractions of the load
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
 
@@ -474,7 +474,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             return jacobian(jnp.concatenate([point, menisci]))[:interior + 1, :interior + 1]
 
         settled, _ = newton(held, unknowns[:interior + 1], max_steps=HELD_MENISCUS_STEPS, jacobian=held_jacobian,
-                            shortest=SHORTEST_STEP, floor=NEWTON_FLOOR)
+                            shortest=SHORTEST_STEP, floor=tolerance)
         return jnp.concatenate([settled, menisci])
 
     def newton_then_continuation(_, guess, __):
@@ -493,7 +493,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
                                         lambda: unknowns)
             return index + 1, newton(residual, unknowns, stage_loads[index], max_steps=NEWTON_STEPS,
                                      jacobian=lambda point, _: jacobian(point), limit=limited, fallback=True,
-                                     shortest=SHORTEST_STEP, floor=NEWTON_FLOOR)[0]
+                                     shortest=SHORTEST_STEP, floor=tolerance)[0]
 
         def more(state):
             index, unknowns = state
