@@ -14,6 +14,10 @@ contamination (e_C) and the fatigue load limit C_u.
   (c, p) = (2.2649, 0.054381), (1.9987, 0.19087), (1.9987, 0.071739) for the ball and (1.3993,
   0.054381), (1.2348, 0.19087), (1.2348, 0.071739) for the roller over 0.1 ≤ κ < 0.4, 0.4 ≤ κ < 1,
   1 ≤ κ ≤ 4; κ above 4 is taken as 4, below 0.1 (outside the standard) as 0.1; a_ISO ≤ 50.
+* `life_modification_factor_ep` — with a lubricant of proven effective EP additives, where κ < 1
+  and e_C ≥ 0.2: a_ISO at κ = 1, at most 3 and not below a_ISO at the actual κ (DIN ISO 281
+  Beiblatt 1:2003, as SKF's catalogue states it, "Consideration of EP additives"; ISO 281:2007
+  §9.3.3 has the same rule).
 
 Sources: ISO 281 is not public; its equations are taken from open implementations that agree on
 every constant used here (two Python, one Rust, two MATLAB; two Python copies carry a typo 0.019087
@@ -29,6 +33,8 @@ from .numerics import positive_power
 
 KAPPA_RANGE = (0.1, 4.0)
 A_ISO_CAP = 50.0
+EP_ADDITIVE_CAP = 3.0  # a_ISO with EP additives where they count (κ < 1, e_C ≥ 0.2)
+EP_ADDITIVE_CLEANLINESS = 0.2  # the least e_C where EP additives count
 
 # ISO 281 Annex A: (c₁, c₂) of e_C by lubrication and cleanliness; oil by its ISO 4406 code.
 CONTAMINATION_CONSTANTS = {
@@ -91,3 +97,13 @@ def life_modification_factor(viscosity_ratio, contamination_load_ratio, rolling_
     bracket = 1.0 - lubrication * positive_power(contamination_load_ratio, load_exponent)
     capped = bracket <= (A_ISO_CAP / 0.1) ** (1.0 / outer_exponent)
     return jnp.where(capped, A_ISO_CAP, 0.1 * jnp.where(capped, 1.0, bracket) ** outer_exponent)
+
+
+def life_modification_factor_ep(viscosity_ratio, contamination_load_ratio, contamination_factor, rolling_element: str):
+    """a_ISO [-] with a lubricant of proven effective EP additives at κ, x = e_C C_u / P and e_C [-]
+    (module docstring): where κ < 1 and e_C ≥ 0.2, max(a_ISO(κ), min(a_ISO(κ = 1), 3)); elsewhere
+    a_ISO(κ)."""
+    actual = life_modification_factor(viscosity_ratio, contamination_load_ratio, rolling_element)
+    at_unit = life_modification_factor(jnp.ones_like(viscosity_ratio), contamination_load_ratio, rolling_element)
+    counts = (viscosity_ratio < 1.0) & (contamination_factor >= EP_ADDITIVE_CLEANLINESS)
+    return jnp.where(counts, jnp.maximum(actual, jnp.minimum(at_unit, EP_ADDITIVE_CAP)), actual)

@@ -159,3 +159,43 @@ def test_roller_bearing_a_iso_with_a_given_contamination_factor():
 def test_bad_cleanliness_names_its_key(tmp_path, cleanliness, message):
     with pytest.raises(ValueError, match=message):
         _values(tmp_path, MODIFIED.replace("{cleanliness}", cleanliness))
+
+
+def test_ep_additives_take_unit_kappa_below_one_capped_at_three():
+    """ISO 281's rule for effective EP additives (DIN ISO 281 Bbl. 1; SKF, "Consideration of EP additives"):
+    where κ < 1 and e_C ≥ 0.2, a_ISO at κ = 1, at most 3 and not below a_ISO at κ; elsewhere a_ISO."""
+    x = np.array([0.05, 0.3, 1.0])
+    # (κ = 1 raises a_ISO; the cap of 3 bites; a_ISO at κ already above 3 is kept): ball at x = 0.05,
+    # 0.3, 1.0 (a_ISO 0.37, 1.23, 5.78 at κ = 0.5; 1.14, 15.6, 50 at κ = 1), roller at 0.05, 1.0, –
+    for element, raised, capped, kept in (("ball", 0, 1, 2), ("roller", 0, 2, None)):
+        plain = np.asarray(life_modification.life_modification_factor(0.5, x, element))
+        unit = np.asarray(life_modification.life_modification_factor(1.0, x, element))
+        with_ep = np.asarray(life_modification.life_modification_factor_ep(np.full(3, 0.5), x, 0.5, element))
+        np.testing.assert_array_equal(with_ep, np.maximum(plain, np.minimum(unit, 3.0)))
+        assert plain[raised] < with_ep[raised] == unit[raised] < 3.0
+        assert plain[capped] < with_ep[capped] == 3.0 < unit[capped]
+        if kept is not None:
+            assert with_ep[kept] == plain[kept] > 3.0
+        for kappa, factor in ((1.2, 0.5), (0.5, 0.19)):  # κ ≥ 1, or e_C < 0.2: a_ISO itself
+            np.testing.assert_array_equal(
+                life_modification.life_modification_factor_ep(np.full(3, kappa), x, factor, element),
+                life_modification.life_modification_factor(kappa, x, element))
+
+
+def test_ep_additives_through_a_scene():
+    """The gearbox 6411E at 300 r/min (κ ≈ 0.55) in clean oil (−/13/10, e_C ≈ 0.6) with
+    lubricant.ep_additives: a_ISO and L10m follow the EP rule at the scene's own κ, e_C, C_u and P,
+    and exceed the plain oil's."""
+    overrides = ["operating.inner_speed=300 rpm", 'lubricant.cleanliness="-/13/10"']
+    plain = run_model(build_model(load_scene(example_scene("gearbox_6411_ratings"), overrides=overrides)),
+                      progress=False).values
+    values = run_model(build_model(load_scene(example_scene("gearbox_6411_ratings"),
+                                              overrides=[*overrides, "lubricant.ep_additives=true"])),
+                       progress=False).values
+    kappa, factor = float(values["life.viscosity_ratio"]), float(values["life.contamination_factor"])
+    assert kappa < 1.0 and factor >= 0.2
+    ratio = factor * float(values["life.fatigue_load_limit"]) / float(values["life.equivalent_load"])
+    want = float(life_modification.life_modification_factor_ep(kappa, ratio, factor, "ball"))
+    assert float(values["life.a_iso"]) == pytest.approx(want, rel=1e-12)
+    assert float(values["life.a_iso"]) > float(plain["life.a_iso"])
+    assert float(values["life.L10m"]) == pytest.approx(want * float(values["life.L10"]), rel=1e-12)

@@ -98,14 +98,17 @@ CLEANLINESS = tuple(dict.fromkeys(level for table in life_modification.CONTAMINA
 
 
 def _contamination(v, built) -> dict:
-    """The e_C of the scene: (c₁, c₂) of ISO 281 Annex A for the supply and cleanliness, or a given factor."""
+    """The e_C of the scene: (c₁, c₂) of ISO 281 Annex A for the supply and cleanliness, or a given
+    factor; with an "ep_additives" entry (no value: the dict's structure is static under jit) where
+    the lubricant has effective EP additives (lubricant.ep_additives)."""
+    ep_additives = {"ep_additives": None} if v.get("lubricant.ep_additives", False) else {}
     level = v["lubricant.cleanliness"]
     if level == "custom":
         if "lubricant.contamination_factor" not in v:
             raise ValueError("lubricant.cleanliness = \"custom\" needs lubricant.contamination_factor (e_C, 0 to 1)")
         check_range("lubricant.contamination_factor", v["lubricant.contamination_factor"], low=0.0, high=1.0,
                     low_open=False, high_open=False)
-        return {"contamination": {"factor": v["lubricant.contamination_factor"]}}
+        return {"contamination": {"factor": v["lubricant.contamination_factor"], **ep_additives}}
     if "lubricant.contamination_factor" in v:
         raise ValueError("lubricant.contamination_factor is read only with lubricant.cleanliness = \"custom\"")
     tables = life_modification.CONTAMINATION_CONSTANTS
@@ -117,7 +120,7 @@ def _contamination(v, built) -> dict:
     if level not in tables[supply]:
         raise ValueError(f"lubricant.cleanliness: with lubricant.supply = {supply!r} one of "
                          f"{', '.join(tables[supply])} or custom, got {level!r}")
-    return {"contamination": {"constants": tables[supply][level]}}
+    return {"contamination": {"constants": tables[supply][level], **ep_additives}}
 
 
 def _fatigue_load_limit(v, built) -> dict:
@@ -143,17 +146,20 @@ def _lubrication(rolling_element, pitch, static_rating, inputs, speed) -> dict:
 LIFE_EXPONENTS = {"ball": 3.0, "roller": 10.0 / 3.0}  # p of L = (C/P)^p, ISO 281
 
 
-def _a_iso(rolling_element, lubrication, load):
-    """a_ISO [-] at the equivalent load `load` [N] with the bearing's κ, e_C and C_u."""
-    return life_modification.life_modification_factor(
-        lubrication["life.viscosity_ratio"],
-        lubrication["life.contamination_factor"] * lubrication["life.fatigue_load_limit"] / load, rolling_element)
+def _a_iso(rolling_element, lubrication, load, inputs):
+    """a_ISO [-] at the equivalent load `load` [N] with the bearing's κ, e_C and C_u (with the
+    scene's lubricant.ep_additives, ISO 281's rule for EP additives)."""
+    kappa, factor = lubrication["life.viscosity_ratio"], lubrication["life.contamination_factor"]
+    ratio = factor * lubrication["life.fatigue_load_limit"] / load
+    if "ep_additives" in inputs["contamination"]:
+        return life_modification.life_modification_factor_ep(kappa, ratio, factor, rolling_element)
+    return life_modification.life_modification_factor(kappa, ratio, rolling_element)
 
 
-def _reference_modified(rolling_element, lubrication, rating, reference_life):
+def _reference_modified(rolling_element, lubrication, rating, reference_life, inputs):
     """(P_ref = C_r L10r^(−1/p) [N], a_ISO at P_ref, L10rm = a_ISO L10r [10⁶ rev]) (ISO/TS 16281)."""
     load = rating * reference_life ** (-1.0 / LIFE_EXPONENTS[rolling_element])
-    a_iso = _a_iso(rolling_element, lubrication, load)
+    a_iso = _a_iso(rolling_element, lubrication, load, inputs)
     return load, a_iso, a_iso * reference_life
 
 
@@ -162,8 +168,9 @@ def _modified(rolling_element, pitch, static_rating, rating, load, reference_lif
     a_ISO at the reference equivalent load P_ref = C_r L10r^(−1/p))."""
     lubrication = _lubrication(rolling_element, pitch, static_rating, inputs,
                                operating.inner_speed - operating.outer_speed)
-    a_iso = _a_iso(rolling_element, lubrication, load)
-    reference_load, a_reference, modified = _reference_modified(rolling_element, lubrication, rating, reference_life)
+    a_iso = _a_iso(rolling_element, lubrication, load, inputs)
+    reference_load, a_reference, modified = _reference_modified(rolling_element, lubrication, rating, reference_life,
+                                                                inputs)
     return lubrication | {"life.a_iso": a_iso, "life.L10m": a_iso * (rating / load) ** LIFE_EXPONENTS[rolling_element],
                           "life.reference_equivalent_load": reference_load, "life.a_iso_reference": a_reference,
                           "life.L10rm": modified}
@@ -178,7 +185,7 @@ def _set_modified(inputs: dict, settings: dict, results: dict) -> dict:
     out, lives = dict(lubrication), []
     for number in range(SET_SIZE):
         _, a_iso, modified = _reference_modified("ball", lubrication, results["life.basic_dynamic_load_rating"],
-                                                 results[f"set.bearings.{number}.L10r"])
+                                                 results[f"set.bearings.{number}.L10r"], inputs)
         out |= {f"set.bearings.{number}.a_iso": a_iso, f"set.bearings.{number}.L10rm": modified}
         lives.append(modified)
     return out | {"set.L10rm": life.system_life(jnp.stack(lives))}
@@ -199,7 +206,7 @@ def _shaft_modified(inputs: dict, settings: dict, results: dict) -> dict:
             element, pitch = "ball", bearing.pitch_diameter
             static_rating, rating = static_safety.ball_bearing_static_load_rating(bearing), ball_load_rating(bearing)
         lubrication = _lubrication(element, pitch, static_rating, inputs, layout.speed)
-        _, a_iso, modified = _reference_modified(element, lubrication, rating, results["bearings.L10r"][number])
+        _, a_iso, modified = _reference_modified(element, lubrication, rating, results["bearings.L10r"][number], inputs)
         kappas.append(lubrication["life.viscosity_ratio"])
         factors.append(a_iso)
         lives.append(modified)
@@ -277,7 +284,9 @@ ADAPTER = register(Adapter(
                                            "grease, or custom (then lubricant.contamination_factor); with "
                                            "effects.life, a_ISO and the modified lives"),
           "lubricant.supply": SUPPLY_KEY,
-          "lubricant.contamination_factor": Key("number", doc="e_C given directly (lubricant.cleanliness = custom)")},
+          "lubricant.contamination_factor": Key("number", doc="e_C given directly (lubricant.cleanliness = custom)"),
+          "lubricant.ep_additives": Key("boolean", doc="the oil has proven effective EP additives: where κ < 1 and "
+                                                       "e_C ≥ 0.2, a_ISO at κ = 1, at most 3 (ISO 281)")},
     inputs=(InputBuilder(("load_rating",), ROLLER_KINDS, _load_rating, scene_keys=WHOLE_BEARING),
             InputBuilder(("contamination",), BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT, _contamination,
                          scene_keys=MODIFIED),
