@@ -121,7 +121,7 @@ def accuracy_table(title, rows):
 
 
 def plot(flooded, starved, path):
-    figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), layout="constrained")
+    figure, axes = plt.subplots(1, 2, figsize=(13, 4.2), layout="constrained")
     for axis, (title, rows) in zip(axes, (("fully flooded", flooded), ("starved, h_oil = 0.8 µm", starved))):
         reference_name, reference_central, reference_minimum, *_ = rows[-1]
         for index, (name, central, minimum, _, run, _) in enumerate(rows[:-1]):
@@ -132,7 +132,7 @@ def plot(flooded, starved, path):
         axis.set(xlabel="wall time per solve [s]", ylabel="error against the reference [%]",
                  title=f"{title}: ○ central film, □ minimum film\nreference: {reference_name.removeprefix('2-D finite line, ')}")
         axis.grid(alpha=0.3, which="both")
-    axes[1].legend(fontsize=7)
+    figure.legend(*axes[0].get_legend_handles_labels(), loc="outside right upper", fontsize=7)  # flooded: every level
     figure.suptitle("The starved-EHL paper's roller contact at 1028 N: what accuracy costs in time")
     figure.savefig(path, dpi=120)
     plt.close(figure)

@@ -33,11 +33,11 @@ forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
 was 3× slower on 65 × 65); `newton` with Armijo backtracking and a Levenberg–Marquardt fallback
 where the piecewise smooth equations stall it, the meniscus moving at most a cell per step,
-stopping once ‖F‖₂ ≤ `tolerance` (steps below it lower round-off only: flooded 65 × 65 took 60
-steps to 21); from the 1-D line solution (starved alike) extruded along the flat. Where that Newton fails (the
-starved-EHL paper's roller starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it
-stalls with h < 0 at the end constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton again at 65, 80,
-90 and 100 % of the load (`LOAD_PATH`), the first stage from the 1-D start at its load, each next
+stopping once ‖F‖₂ ≤ `tolerance` (below it a step lowers round-off only); from the 1-D line
+solution (starved alike) extruded along the flat. Where that Newton fails (the starved-EHL
+paper's roller starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with
+h < 0 at the end constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton
+again at 65, 80, 90 and 100 % of the load (`LOAD_PATH`), the first stage from the 1-D start at its load, each next
 from the previous solution. Starved, each stage first solves for the pressure and H₀ with the
 menisci held (Newton without the fallback, `HELD_MENISCUS_STEPS`), then releases them: from a
 start's pressure the flux through the columns is off, and menisci that move with it can end
@@ -364,8 +364,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
     edges = axial_cells(ny, 0.5 * flat_length, 0.5 * length, axial_clustering) / half_width
     y, widths = 0.5 * (edges[1:] + edges[:-1]), jnp.diff(edges)
     # elastic film (1/2π) Σ P C: cell (k, l) and its mirror image at −y, seen from node (i, j); C
-    # depends on i − k alone, so it is evaluated on the 2nx − 1 node offsets and gathered (the
-    # terms of Love's formula on the whole (nx, ny, nx, ny) kernel held 1.2 GB at 33 × 65)
+    # depends on i − k alone, so it is evaluated on the 2nx − 1 node offsets and gathered (Love's
+    # formula on the whole (nx, ny, nx, ny) kernel holds a dozen temporaries of the kernel's size)
     offset_x = (np.arange(-(nx - 1), nx) * spacing)[:, None, None]
     below = (y[:, None] - y[None, :])[None]
     above = (y[:, None] + y[None, :])[None]  # the mirror image

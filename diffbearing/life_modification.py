@@ -16,8 +16,7 @@ contamination (e_C) and the fatigue load limit C_u.
   1 ≤ κ ≤ 4; κ above 4 is taken as 4, below 0.1 (outside the standard) as 0.1; a_ISO ≤ 50.
 * `life_modification_factor_ep` — with a lubricant of proven effective EP additives, where κ < 1
   and e_C ≥ 0.2: a_ISO at κ = 1, at most 3 and not below a_ISO at the actual κ (DIN ISO 281
-  Beiblatt 1:2003, as SKF's catalogue states it, "Consideration of EP additives"; ISO 281:2007
-  §9.3.3 has the same rule).
+  Beiblatt 1:2003, as SKF's catalogue states it, "Consideration of EP additives").
 
 Sources: ISO 281 is not public; its equations are taken from open implementations that agree on
 every constant used here (two Python, one Rust, two MATLAB; two Python copies carry a typo 0.019087

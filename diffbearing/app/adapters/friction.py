@@ -248,13 +248,11 @@ def _shaft_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
     torques = []
     for number, (bearing, skf) in enumerate(zip(layout.bearings, inputs["skf_bearing"])):
         radial, axial = _split(results["bearings.force"][number][:3])
-        if isinstance(bearing, tuple):
-            roller, raceways = bearing
-            options = dict(axial_load_factor=roller_life.axial_load_factor(raceways.cup_angle))
-        else:
-            roller, options = bearing, dict(static_load_rating=static_safety.ball_bearing_static_load_rating(bearing))
+        options = (dict(axial_load_factor=roller_life.axial_load_factor(bearing[1].cup_angle))
+                   if isinstance(bearing, tuple) else
+                   dict(static_load_rating=static_safety.ball_bearing_static_load_rating(bearing)))
         torques.append(skf_friction.frictional_moment(
-            roller.kind, skf.series, radial, axial, layout.speed, lubricant.viscosity / lubricant.density, skf.bore,
+            _kind(bearing), skf.series, radial, axial, layout.speed, lubricant.viscosity / lubricant.density, skf.bore,
             skf.outside_diameter, supply=skf.supply, **options).total)
     return _shaft_totals(torques, layout.speed)
 
