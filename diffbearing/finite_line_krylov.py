@@ -25,12 +25,12 @@ a cell, and, where a caller asks, no pressure and H₀ more than given amounts.
 Starved, each finer level (`solve_nested`): the interpolated menisci are moved upstream of where
 the fine column's gap closes below the oil layer, or to the highest where it never does
 (`interpolate_level`); Newton–Krylov solves for the pressure and H₀ with the menisci held
-(`UniformLevel.holding`); the flux that this solution carries differs from the supply (by 9 %
+(`Stage.held`); the flux that this solution carries differs from the supply (by 9 %
 at 1607 N from 33 × 65 to 65 × 65: the inlet is resolved anew), and a Newton step that moves
 every meniscus at once stalls on near-singular modes of single columns' menisci (singular values
 of 1e-5 where it stalled at 1607 N on 65 × 65, 3e-2 at the 1028 N solution); so the supply is
 continued from the one the held solution carries to the oil layer's, in stages of ln H_oil that
-double when a stage converges and halve when it does not (`UniformLevel.supplied`). The coarsest
+double when a stage converges and halve when it does not (`Stage.supply_factor`). The coarsest
 starved grid keeps 64 cells or more along the half roller (`STARVED_COARSEST_CELLS`).
 
 Derivatives: implicit, through the finest solution (`newton_krylov.krylov_root`), the tangent
