@@ -241,13 +241,10 @@ class UniformLevel:
         node = jnp.arange(nx)
         if self.starved:
             by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
-
-        if self.starved:
+            _, pull = jax.vjp(local, pressure[1:-1], height, meniscus)
 
             def meniscus_rows(c):  # cotangent on the meniscus rows of the columns of class c
-                cotangent = jnp.zeros((rows + 1, ny)).at[rows].set((column % 3 == c).astype(float))
-                _, pull = jax.vjp(local, pressure[1:-1], height, meniscus)
-                return pull(cotangent)[:2]
+                return pull(jnp.zeros((rows + 1, ny)).at[rows].set((column % 3 == c).astype(float)))[:2]
 
             by_row = [meniscus_rows(c) for c in range(3)]
             meniscus_by_pressure = jnp.stack([by_row[c][0] for c in range(3)])  # [c, r, j]
