@@ -206,24 +206,31 @@ def _skf_outputs(moment: skf_friction.FrictionalMoment) -> dict:
             "friction.sliding_coefficient": moment.sliding_coefficient}
 
 
-def _ball_skf_moment(inputs: dict, force) -> skf_friction.FrictionalMoment:
-    """SKF's moments of a ball bearing under [Fx, Fy, Fz] [N] (C₀ of ISO 76 for α_F)."""
-    bearing, skf, lubricant = inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"]
+def _skf_moment(bearing, skf: SkfBearing, lubricant, speed, force) -> skf_friction.FrictionalMoment:
+    """SKF's moments of a ball bearing, or a (RollerBearing, RollerRaceways) pair, under [Fx, Fy, Fz]
+    [N] at the relative ring speed [rad/s]: C₀ of ISO 76 for a ball bearing's α_F, Y = 0.4 cot α
+    of the cup for a tapered one (ISO 281)."""
+    options = (dict(axial_load_factor=roller_life.axial_load_factor(bearing[1].cup_angle))
+               if isinstance(bearing, tuple) else
+               dict(static_load_rating=static_safety.ball_bearing_static_load_rating(bearing)))
     return skf_friction.frictional_moment(
-        bearing.kind, skf.series, *_split(force), _speed(inputs["operating"]), lubricant.viscosity / lubricant.density,
-        skf.bore, skf.outside_diameter, supply=skf.supply,
-        static_load_rating=static_safety.ball_bearing_static_load_rating(bearing), drag_loss_factor=skf.drag_loss_factor,
-        seal=skf.seal, counterface_diameter=skf.counterface_diameter, seals=skf.seals)
+        _kind(bearing), skf.series, *_split(force), speed, lubricant.viscosity / lubricant.density, skf.bore,
+        skf.outside_diameter, supply=skf.supply, drag_loss_factor=skf.drag_loss_factor,
+        inner_ring_width=skf.inner_ring_width, seal=skf.seal, counterface_diameter=skf.counterface_diameter,
+        seals=skf.seals, **options)
 
 
 def _ball_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    return _skf_outputs(_ball_skf_moment(inputs, results["force"][:3]))
+    return _skf_outputs(_skf_moment(inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"],
+                                    _speed(inputs["operating"]), results["force"][:3]))
 
 
 def _set_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's SKF moment from its own load, and the set's together."""
-    torques = [_ball_skf_moment(inputs, results[f"set.bearings.{number}.force"][:3]).total for number in range(SET_SIZE)]
-    return _set_totals(torques, _speed(inputs["operating"]))
+    speed = _speed(inputs["operating"])
+    torques = [_skf_moment(inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"], speed,
+                           results[f"set.bearings.{number}.force"][:3]).total for number in range(SET_SIZE)]
+    return _set_totals(torques, speed)
 
 
 def _set_totals(torques, speed) -> dict:
@@ -232,28 +239,16 @@ def _set_totals(torques, speed) -> dict:
 
 
 def _roller_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    """SKF's moments of a roller bearing from its carried load (a tapered one's Y = 0.4 cot α, ISO 281)."""
-    bearing, skf, lubricant = inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"]
-    return _skf_outputs(skf_friction.frictional_moment(
-        bearing.kind, skf.series, *_split(results["force"][:3]), _speed(inputs["operating"]),
-        lubricant.viscosity / lubricant.density, skf.bore, skf.outside_diameter, supply=skf.supply,
-        axial_load_factor=roller_life.axial_load_factor(inputs["raceways"].cup_angle), drag_loss_factor=skf.drag_loss_factor,
-        inner_ring_width=skf.inner_ring_width, seal=skf.seal, counterface_diameter=skf.counterface_diameter,
-        seals=skf.seals))
+    """SKF's moments of a roller bearing from its carried load."""
+    return _skf_outputs(_skf_moment((inputs["bearing"], inputs["raceways"]), inputs["skf_bearing"], inputs["lubricant"],
+                                    _speed(inputs["operating"]), results["force"][:3]))
 
 
 def _shaft_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each of the shaft's bearings' SKF moment from its own load, and the shaft's together."""
-    layout, lubricant = inputs["shaft"], inputs["lubricant"]
-    torques = []
-    for number, (bearing, skf) in enumerate(zip(layout.bearings, inputs["skf_bearing"])):
-        radial, axial = _split(results["bearings.force"][number][:3])
-        options = (dict(axial_load_factor=roller_life.axial_load_factor(bearing[1].cup_angle))
-                   if isinstance(bearing, tuple) else
-                   dict(static_load_rating=static_safety.ball_bearing_static_load_rating(bearing)))
-        torques.append(skf_friction.frictional_moment(
-            _kind(bearing), skf.series, radial, axial, layout.speed, lubricant.viscosity / lubricant.density, skf.bore,
-            skf.outside_diameter, supply=skf.supply, **options).total)
+    layout = inputs["shaft"]
+    torques = [_skf_moment(bearing, skf, inputs["lubricant"], layout.speed, results["bearings.force"][number][:3]).total
+               for number, (bearing, skf) in enumerate(zip(layout.bearings, inputs["skf_bearing"]))]
     return _shaft_totals(torques, layout.speed)
 
 
