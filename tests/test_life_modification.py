@@ -199,3 +199,16 @@ def test_ep_additives_through_a_scene():
     assert float(values["life.a_iso"]) == pytest.approx(want, rel=1e-12)
     assert float(values["life.a_iso"]) > float(plain["life.a_iso"])
     assert float(values["life.L10m"]) == pytest.approx(want * float(values["life.L10"]), rel=1e-12)
+
+
+def test_ep_additive_factor_derivative():
+    """d a_ISO / d(κ, e_C C_u/P) with EP additives against a central difference, where a_ISO at κ = 1
+    rules (x = 0.05: it depends on x alone) and where a_ISO at κ is kept (x = 1.0)."""
+    def factor(point):
+        return life_modification.life_modification_factor_ep(point[0], point[1], 0.5, "ball")
+
+    direction = jax.numpy.array([0.1, 0.02])
+    for point in (jax.numpy.array([0.5, 0.05]), jax.numpy.array([0.5, 1.0])):
+        _, tangent = jax.jvp(factor, (point,), (direction,))
+        assert float(tangent) != 0.0
+        assert float(tangent) == pytest.approx(float(central_difference_jvp(factor, point, direction, 1e-6)), rel=1e-7)

@@ -209,6 +209,13 @@ def test_seal_rows_by_outside_diameter():
         skf_friction.seal_row("deep_groove_ball", "LS", 50e-3)
 
 
+def test_seal_moment_derivative():
+    """d M_seal / d d_s of the RS1 seal (62 < D ≤ 80 mm) against a central difference."""
+    beta, k1, k2 = skf_friction.SEAL_CONSTANTS["deep_groove_ball.RS1.62<D<=80"]
+    assert_jvp_matches_central_difference(lambda d: skf_friction.seal_moment(k1, beta, k2, d), jnp.asarray(52e-3),
+                                          jnp.asarray(1e-3), 1e-6, rtol=1e-8)
+
+
 def test_scene_seals_add_skfs_seal_moment():
     """friction.seal = "LS" on the cylindrical roller bearing scene (d_s = 60 mm): the moment grows by
     M_seal = K_S1 d_s² + K_S2 = 0.032 · 60² + 50 N·mm for two seals (SKF seal constants), half for one;
@@ -258,3 +265,22 @@ def test_shaft_skf_friction_is_each_bearings_at_its_load():
                            ("friction.seal=RS1", "friction.seal: a single bearing's key, not taken on a shaft")):
         with pytest.raises(ValueError, match=message):
             build_model(load_scene(example_scene("gearbox_shaft"), overrides=[*overrides, extra]))
+
+
+@pytest.mark.slow
+def test_shaft_skf_torque_derivatives_through_the_shaft():
+    """d M_SKF (shaft total) / d(load on the shaft, viscosity) through the gearbox shaft's equilibrium
+    against a central difference."""
+    import equinox as eqx
+
+    model = build_model(load_scene(example_scene("gearbox_shaft"), overrides=[
+        "effects.friction=skf", 'friction.series="64"', "lubricant.preset=iso_vg_68"]))
+    function = model.function()
+
+    def torque(point):
+        inputs = eqx.tree_at(lambda i: (i["shaft"].loads.forces, i["lubricant"].viscosity), model.inputs, point)
+        return function(inputs)["shaft.friction.torque"]
+
+    point = (jnp.asarray(model.inputs["shaft"].loads.forces), jnp.asarray(model.inputs["lubricant"].viscosity))
+    direction = (jnp.array([[200.0, -100.0, 150.0]]), 0.1 * point[1])
+    assert_jvp_matches_central_difference(torque, point, direction, 1e-4, rtol=1e-6)
