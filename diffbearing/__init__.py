@@ -26,6 +26,13 @@ from .cage_dynamics import CageOrbit as CageOrbit, DynamicsSettings as DynamicsS
 from .cage_forces import CageForces as CageForces, cage_forces as cage_forces, epicyclic_cage_speed as epicyclic_cage_speed
 from .cage_stability import CageStability as CageStability, cage_stability as cage_stability
 from .elliptic import complete_elliptic_integrals as complete_elliptic_integrals
+from .flexible_shaft import (
+    FlexibleShaft as FlexibleShaft,
+    FlexibleShaftEquilibrium as FlexibleShaftEquilibrium,
+    flexible_shaft as flexible_shaft,
+    flexible_shaft_stiffness as flexible_shaft_stiffness,
+    solve_flexible_shaft as solve_flexible_shaft,
+)
 from .film_formulas import (
     dowson_higginson_line_minimum as dowson_higginson_line_minimum,
     film_parameter as film_parameter,
@@ -124,6 +131,7 @@ from .roller_life import (
     roller_reference_rating_life as roller_reference_rating_life,
 )
 from .roller_profile import RollerProfile as RollerProfile, crown_drop as crown_drop, roller_profile as roller_profile
+from .shaft_beam import ShaftSections as ShaftSections
 from .shaft_equilibrium import (
     BallSupport as BallSupport,
     RollerSupport as RollerSupport,

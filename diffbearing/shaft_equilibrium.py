@@ -148,10 +148,15 @@ def _centring(support):
     return 0.0
 
 
+def local_displacement(point_displacement, support):
+    """Δ_k [m, rad]: the bearing's inner-ring displacement in its own frame from the displacement
+    of the shaft point it sits at, P_k δ + (e_k + c_k) ẑ (module docstring)."""
+    return (turned(support) * point_displacement).at[2].add(support.offset + _centring(support))
+
+
 def support_displacement(shaft_displacement, support):
-    """Δ_k [m, rad]: the bearing's inner-ring displacement in its own frame (module docstring)."""
-    local = turned(support) * (transfer(support.position) @ shaft_displacement)
-    return local.at[2].add(support.offset + _centring(support))
+    """Δ_k [m, rad] of the rigid shaft's displacement u at z = 0 (module docstring)."""
+    return local_displacement(transfer(support.position) @ shaft_displacement, support)
 
 
 def _operating(support, speed):
@@ -175,7 +180,8 @@ def reaction(shaft_displacement, support, speed, table=None):
     return transfer(support.position).T @ (turned(support) * local)
 
 
-def _tables(shaft: Shaft):
+def constant_tables(shaft: Shaft):
+    """Each ball bearing's table of contact constants (`ball_equilibrium.constant_table`); None for a roller bearing."""
     return tuple(ball_equilibrium.constant_table(s.bearing, s.model) if isinstance(s, BallSupport) else None
                  for s in shaft.supports)
 
@@ -183,7 +189,7 @@ def _tables(shaft: Shaft):
 def shaft_force(shaft_displacement, shaft: Shaft, tables=None):
     """Σ_k of the bearings' loads on the shaft at displacement u, about z = 0 [N, N·m]; in
     equilibrium it equals the applied load, and its Jacobian is the system stiffness."""
-    tables = _tables(shaft) if tables is None else tables
+    tables = constant_tables(shaft) if tables is None else tables
     return sum(reaction(shaft_displacement, support, shaft.speed, table)
                for support, table in zip(shaft.supports, tables))
 
@@ -195,9 +201,8 @@ def applied_load(shaft: Shaft):
     return jnp.einsum("lij,li->j", jax.vmap(transfer)(loads.positions), combined)
 
 
-def _support_energy(shaft_displacement, support):
-    """E_k(Δ_k) [J] with the contact constants at the free contact angle (convex in u)."""
-    local = support_displacement(shaft_displacement, support)
+def support_energy(local, support):
+    """E_k(Δ_k) [J] with the contact constants at the free contact angle (convex in Δ_k)."""
     if isinstance(support, BallSupport):
         combined = ball_equilibrium.free_contact_constant(support.bearing, support.model)
         return ball_equilibrium.static_energy(local, support.bearing, combined)
@@ -217,7 +222,7 @@ def _pitch_radius(support):
     return 0.5 * bearing.pitch_diameter
 
 
-def _scales(shaft: Shaft):
+def shaft_scales(shaft: Shaft):
     """Unknown scale s (u = s·y), residual weights w (moments to forces by an arm) and load scale [N].
 
     The arm is the largest of the bearings' distances from z = 0 and pitch radii."""
@@ -231,7 +236,8 @@ def _static_energy(y, args):
     """Scaled potential Σ_k E_k − F·u of the static problem (convex in u)."""
     shaft, unknown, _, load_scale, _ = args
     u = unknown * y
-    energy = sum(_support_energy(u, support) for support in shaft.supports) - jnp.dot(applied_load(shaft), u)
+    energy = sum(support_energy(support_displacement(u, support), support) for support in shaft.supports)
+    energy = energy - jnp.dot(applied_load(shaft), u)
     return energy / (load_scale * DISPLACEMENT_SCALE)
 
 
@@ -241,13 +247,16 @@ def _residual(y, args):
     return (shaft_force(unknown * y, shaft, tables) - applied_load(shaft)) * weight / load_scale
 
 
-def _regularised_jacobian(y, args):
-    jacobian = jax.jacfwd(_residual)(y, args)
-    return jacobian + 1e-12 * (jnp.max(jnp.abs(jnp.diag(jacobian))) + 1.0) * jnp.eye(5)
+def damped_newton(residual, start, args):
+    """(root, steps) of a shaft's scaled residual: damped Newton with Levenberg–Marquardt steps
+    where it stalls, on the dense Jacobian regularised by 1e-12 of its largest diagonal entry (a
+    direction no bearing resists keeps the step finite)."""
 
+    def regularised_jacobian(y, args):
+        jacobian = jax.jacfwd(residual)(y, args)
+        return jacobian + 1e-12 * (jnp.max(jnp.abs(jnp.diag(jacobian))) + 1.0) * jnp.eye(y.shape[0])
 
-def _solve(residual, start, args):
-    y, steps = newton(residual, start, args, max_steps=MAX_STEPS, loop="while", jacobian=_regularised_jacobian,
+    y, steps = newton(residual, start, args, max_steps=MAX_STEPS, loop="while", jacobian=regularised_jacobian,
                       fallback=True, floor=1e-14)
     return y, steps.astype(y.dtype)
 
@@ -274,12 +283,12 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     implicit adjoint, least squares where the system stiffness is singular).
     """
     require_float64()
-    unknown, weight, load_scale = _scales(shaft)
-    tables = _tables(shaft)
+    unknown, weight, load_scale = shaft_scales(shaft)
+    tables = constant_tables(shaft)
     start, static_steps = minimise_convex(_static_energy, jnp.zeros(5), (shaft, unknown, weight, load_scale, None),
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (shaft, unknown, weight, load_scale, tables)
-    y, steps = implicit_root(_residual, jax.lax.stop_gradient(start), args, _solve, least_squares_tangent_solve,
+    y, steps = implicit_root(_residual, jax.lax.stop_gradient(start), args, damped_newton, least_squares_tangent_solve,
                              has_aux=True)
     u = unknown * y
     locals_ = tuple(support_displacement(u, support) for support in shaft.supports)
@@ -293,6 +302,6 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
 def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0):
     """5×5 system stiffness [N/m, N/rad; N·m/m, N·m/rad] at the shaft point z = `at` [m]: the
     Jacobian of the bearings' loads with respect to that point's displacement (exact, jacfwd)."""
-    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, _tables(shaft))
+    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, constant_tables(shaft))
     back = transfer(-jnp.asarray(at, dtype=float))
     return back.T @ stiffness @ back

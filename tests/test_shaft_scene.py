@@ -1,11 +1,16 @@
 """A shaft on several bearings through scenes ([[bearings]], [[loads]], [shaft]): one bearing on the
 shaft against the single-bearing scene, the system life, and the errors a user meets."""
 
+import importlib.resources
+
 import numpy as np
 import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
+from diffbearing.app.adapters.shaft import _supports
+from diffbearing.flexible_shaft import flexible_shaft, solve_flexible_shaft
+from diffbearing.shaft_equilibrium import Shaft
 
 from .helpers import BEARING_6411E
 
@@ -170,3 +175,64 @@ def test_element_loads_derivatives_through_the_shaft():
     forces = model.inputs["shaft"].loads.forces
     direction = np.ones_like(forces) * np.array([100.0, -50.0, 30.0])
     assert_jvp_matches_central_difference(element_loads, forces, direction, 1e-3, rtol=1e-6, atol=1e-6)
+
+
+SECTIONS = """
+[[shaft.sections]]
+from = "-130 mm"
+to = "-60 mm"
+outer_diameter = "55 mm"
+
+[[shaft.sections]]
+from = "-60 mm"
+to = "130 mm"
+outer_diameter = "70 mm"
+inner_diameter = "20 mm"
+"""
+
+
+def test_flexible_shaft_scene(tmp_path):
+    """The gearbox shaft as a Timoshenko beam of two sections ([[shaft.sections]]): the scene's
+    bearing loads and deflection line are `flexible_shaft`'s own (1e-12, 1e-9); the reactions balance the
+    gear's force and moment about z = 0 (1e-9, an identity of any equilibrium: the beam's internal
+    forces cancel); the reference point's displacement is its node's."""
+    text = (importlib.resources.files("diffbearing.scenes").joinpath("gearbox_shaft.toml").read_text()
+            .replace("[shaft]\n", '[shaft]\nstiffness_at = "30 mm"\nelement_length = "20 mm"\n')
+            .replace("stiffness = true\n", "") + SECTIONS)
+    result = _run(tmp_path, text, "flexible.toml")
+    assert bool(result.values["shaft.converged"])
+    layout = result.model.inputs["shaft"]
+    flexible = flexible_shaft(Shaft(_supports(layout, result.model.settings), layout.loads, layout.speed),
+                              layout.sections, 0.03, 0.02)
+    own = solve_flexible_shaft(flexible)
+    np.testing.assert_allclose(result.values["bearings.force"], np.stack(own.bearing_forces), rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(result.values["shaft.deflection"], own.node_displacements, rtol=1e-9, atol=1e-15)
+    nodes = np.asarray(result.values["shaft.nodes"])
+    assert np.max(np.diff(nodes)) <= 0.02 + 1e-15 and nodes[0] == pytest.approx(-0.13) and nodes[-1] == pytest.approx(0.13)
+    at = int(np.argmin(np.abs(nodes - 0.03)))
+    np.testing.assert_allclose(result.values["shaft.displacement"], result.values["shaft.deflection"][at], rtol=1e-15)
+    reaction = np.asarray(result.values["bearings.reaction"])
+    force, positions = np.array([6e3, 2e3, 1.5e3]), np.array([-0.1, 0.1])
+    np.testing.assert_allclose(reaction[:, :3].sum(axis=0), force, rtol=1e-9)
+    moment_x = reaction[:, 3].sum() - (positions * reaction[:, 1]).sum()
+    moment_y = reaction[:, 4].sum() + (positions * reaction[:, 0]).sum()
+    np.testing.assert_allclose([moment_x, moment_y], [-0.03 * force[1], 90.0 + 0.03 * force[0]], rtol=1e-9)
+
+
+@pytest.mark.parametrize("extra, named", [
+    ('[[shaft.sections]]\nfrom = "-130 mm"\nto = "0 mm"\nouter_diameter = "50 mm"\n'
+     '[[shaft.sections]]\nfrom = "10 mm"\nto = "130 mm"\nouter_diameter = "50 mm"\n', "shaft.sections[1]: starts at"),
+    ('[[shaft.sections]]\nfrom = "-50 mm"\nto = "130 mm"\nouter_diameter = "50 mm"\n',
+     "bearings[0].position = -100 mm lies off the shaft, whose sections run from -50 mm to 130 mm"),
+    ('[[shaft.sections]]\nfrom = "-130 mm"\nto = "130 mm"\nouter_diameter = "50 mm"\nbore = "10 mm"\n',
+     "shaft.sections[0]: unknown key 'bore'"),
+    ('[shaft]\nmaterial = "steel"\n', "'shaft.material' not read"),
+])
+def test_bad_flexible_shafts_are_refused(capsys, tmp_path, extra, named):
+    path = tmp_path / "bad.toml"
+    text = (ENTRY + 'position = "-100 mm"\n' + ENTRY + 'position = "100 mm"\n'
+            + '[[loads]]\nposition = "0 mm"\nforce = ["1 kN", "0 N", "0 N"]\n' + extra)
+    path.write_text(text)
+    code = cli.main(["run", str(path)])
+    err = capsys.readouterr().err
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err

@@ -1,10 +1,11 @@
-"""A rigid shaft on several bearings (`[[bearings]]`, `[[loads]]`, `[shaft]`): the shaft's 5-DOF
-equilibrium with all bearings together (`shaft_equilibrium`), each bearing's loads, the system
-stiffness at a point, each bearing's life and the system's. A scene with `[[bearings]]` is a shaft:
-each entry holds the keys of a `[bearing]` table (ball, cylindrical or tapered roller bearings; a
-roller bearing's crowning as its own `profile` sub-table) plus its `position` along the shaft,
-`orientation` ("+z" or "−z") and an optional axial `offset` (preload); the scene's `[material]`
-applies to all."""
+"""A shaft on several bearings (`[[bearings]]`, `[[loads]]`, `[shaft]`): the shaft's equilibrium
+with all bearings together, rigid (`shaft_equilibrium`, five unknowns) or, where the scene gives
+its `[[shaft.sections]]`, a Timoshenko beam (`flexible_shaft`); each bearing's loads, the shaft's
+deflection line, the system stiffness at a point, each bearing's life and the system's. A scene
+with `[[bearings]]` is a shaft: each entry holds the keys of a `[bearing]` table (ball, cylindrical
+or tapered roller bearings; a roller bearing's crowning as its own `profile` sub-table) plus its
+`position` along the shaft, `orientation` ("+z" or "−z") and an optional axial `offset` (preload);
+the scene's `[material]` applies to all."""
 
 import dataclasses
 
@@ -15,9 +16,12 @@ import numpy as np
 
 from ... import ball_validity, life, overrolling
 from ...ball_equilibrium import ball_results
+from ...flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, solve_flexible_shaft
+from ...operating_clearance import SEAT_MATERIALS
 from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
 from ...roller_equilibrium import RollerOperating, roller_results
 from ...roller_geometry import ROLLER_KINDS
+from ...shaft_beam import BeamMesh, ShaftSections, beam_mesh
 from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport, Shaft, ShaftLoads,
                                   shaft_stiffness, solve_shaft, transfer, turned)
 from ..formatting import format_number, stiffness_lines
@@ -83,11 +87,25 @@ def _load_entry(index: int, table: dict, convert) -> dict:
     return entry
 
 
+def _section_entry(index: int, table: dict, convert) -> dict:
+    where = f"shaft.sections[{index}]"
+    unknown = set(table) - {"from", "to", "outer_diameter", "inner_diameter"}
+    if unknown:
+        raise ValueError(f"{where}: unknown key {sorted(unknown)[0]!r} (a section has from, to, outer_diameter, "
+                         "inner_diameter)")
+    missing = [name for name in ("from", "to", "outer_diameter") if name not in table]
+    if missing:
+        raise ValueError(f"{where}: missing required key {missing[0]!r}")
+    return {name: to_si(table.get(name, 0.0), "length", f"{where}.{name}")
+            for name in ("from", "to", "outer_diameter", "inner_diameter")}
+
+
 class ShaftLayout(eqx.Module):
     """The scene's shaft: its bearings (a BallBearing, or a (RollerBearing, RollerRaceways) pair,
     each), their positions and offsets [m] and orientations (±1), the loads, the shaft speed
-    [rad/s], the point of the stiffness [m] and each bearing's bore and outer diameter [m] (None
-    where its entry gives none; read by the ratings that need them)."""
+    [rad/s], the reference point of the displacement and stiffness [m], each bearing's bore and
+    outer diameter [m] (None where its entry gives none; read by the ratings that need them), and
+    for a flexible shaft its sections and mesh (None: rigid)."""
 
     bearings: tuple
     positions: jax.Array = eqx.field(converter=_as_float)
@@ -97,10 +115,36 @@ class ShaftLayout(eqx.Module):
     stiffness_at: jax.Array = eqx.field(converter=_as_float)
     orientations: tuple = eqx.field(static=True)
     envelopes: tuple = ()
+    sections: ShaftSections | None = None
+    mesh: BeamMesh | None = eqx.field(static=True, default=None)
+
+
+def _sections(v, positions, loads) -> tuple:
+    """(ShaftSections, BeamMesh) of `[[shaft.sections]]`, or (None, None) for a rigid shaft."""
+    if "shaft.sections" not in v:
+        return None, None
+    entries = v["shaft.sections"]
+    name = v.get("shaft.material", "steel")
+    sections = ShaftSections([e["from"] for e in entries], [e["to"] for e in entries],
+                             [e["outer_diameter"] for e in entries], [e["inner_diameter"] for e in entries],
+                             SEAT_MATERIALS[name][0])
+    reference = v.get("shaft.stiffness_at", 0.0)
+    points = [*positions, *(load["position"] for load in loads), reference]
+    if not all(isinstance(z, float | int) or np.ndim(z) == 0 and not isinstance(z, jax.core.Tracer) for z in points):
+        raise ValueError("shaft.stiffness_at: a flexible shaft's reference point is a node of its mesh and cannot "
+                         "be swept")
+    start, end = min(e["from"] for e in entries), max(e["to"] for e in entries)
+    names = ([f"bearings[{k}].position" for k in range(len(positions))]
+             + [f"loads[{l}].position" for l in range(len(loads))] + ["shaft.stiffness_at"])
+    for where, z in zip(names, points):
+        if not start - 1e-9 * (end - start) <= float(z) <= end + 1e-9 * (end - start):
+            raise ValueError(f"{where} = {float(z) * 1e3:g} mm lies off the shaft, whose sections run from "
+                             f"{start * 1e3:g} mm to {end * 1e3:g} mm")
+    return sections, beam_mesh(sections, np.array(points, dtype=float), v.get("shaft.element_length"))
 
 
 def _layout(v, built) -> dict:
-    shared = {key: value for key, value in v.items() if key.startswith("material.")}
+    shared = {key: v[key] for key in v if key.startswith("material.")}  # (items() would mark every key read)
     bearings, envelopes = [], []
     for index, entry in enumerate(v["bearings"]):
         reads = Reads({**shared, **entry})
@@ -115,12 +159,14 @@ def _layout(v, built) -> dict:
             raise ValueError(f"bearings[{index}]: key {unread[0].removeprefix('bearing.')!r} is not read by a "
                              "bearing on a shaft")
     loads = v["loads"]
+    positions = [entry["position"] for entry in v["bearings"]]
+    sections, mesh = _sections(v, positions, loads)
     return {"shaft": ShaftLayout(
-        tuple(bearings), [entry["position"] for entry in v["bearings"]], [entry["offset"] for entry in v["bearings"]],
+        tuple(bearings), positions, [entry["offset"] for entry in v["bearings"]],
         ShaftLoads(np.array([load["position"] for load in loads]), np.array([load["force"] for load in loads]),
                    np.array([load["moment"] for load in loads])),
         v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
-        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes))}
+        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), sections, mesh)}
 
 
 def _supports(layout: ShaftLayout, settings: dict):
@@ -187,14 +233,36 @@ def _elements(per_bearing) -> dict:
             for field in ELEMENT_FIELDS + BALL_ELEMENT_FIELDS}
 
 
+def _solve(layout: ShaftLayout, shaft: Shaft, stiffness: bool) -> dict:
+    """The rigid or flexible shaft's equilibrium: {solution, nodes, deflection, displacement at the
+    reference point, and its stiffness there (where asked)}."""
+    if layout.sections is None:
+        solution = solve_shaft(shaft)
+        nodes = jnp.sort(jnp.concatenate([jnp.asarray(layout.positions), jnp.asarray(layout.loads.positions),
+                                          jnp.reshape(layout.stiffness_at, (1,))]))
+        out = {"solution": solution, "shaft.nodes": nodes,
+               "shaft.deflection": jax.vmap(transfer)(nodes) @ solution.displacement,
+               "shaft.displacement": transfer(layout.stiffness_at) @ solution.displacement}
+        if stiffness:
+            out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at)
+        return out
+    flexible = FlexibleShaft(shaft, layout.sections, layout.stiffness_at, layout.mesh)
+    solution = solve_flexible_shaft(flexible)
+    out = {"solution": solution, "shaft.nodes": solution.nodes, "shaft.deflection": solution.node_displacements,
+           "shaft.displacement": solution.displacement}
+    if stiffness:
+        out["shaft.stiffness"] = flexible_shaft_stiffness(solution, flexible)
+    return out
+
+
 def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     layout = inputs["shaft"]
     shaft = Shaft(_supports(layout, settings), layout.loads, layout.speed)
-    solution = solve_shaft(shaft)
+    solved = _solve(layout, shaft, settings["effects"].get("stiffness", False) is True)
+    solution = solved.pop("solution")
     per_bearing = [_results(support, local, layout.speed)
                    for support, local in zip(shaft.supports, solution.bearing_displacements)]
-    out = {
-        "shaft.displacement": solution.displacement,
+    out = solved | {
         "shaft.converged": solution.converged,
         "shaft.residual": solution.residual,
         "bearings.displacement": jnp.stack(solution.bearing_displacements),
@@ -209,8 +277,6 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
         "bearings.validity": jnp.stack([_validity(support, elements)
                                         for support, elements in zip(shaft.supports, per_bearing)]),
     } | _elements(per_bearing)
-    if settings["effects"].get("stiffness", False) is True:
-        out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at)
     if settings["effects"].get("life", False) is True:
         lives = [_life(support, elements) for support, elements in zip(shaft.supports, per_bearing)]
         out["bearings.L10r"] = jnp.stack(lives)
@@ -238,16 +304,14 @@ def _plot(result, figure):
     """The shaft's radial displacement along its length, the bearings' reactions and their element loads."""
     values, layout = result.values, result.model.inputs["shaft"]
     positions = np.asarray(layout.positions)
-    span = np.linspace(min(positions.min(), np.asarray(layout.loads.positions).min()),
-                       max(positions.max(), np.asarray(layout.loads.positions).max()), 101)
-    u = np.asarray(values["shaft.displacement"])
-    moved = np.array([np.asarray(transfer(z)) @ u for z in span])
+    nodes, moved = np.asarray(values["shaft.nodes"]), np.asarray(values["shaft.deflection"])
     line, bars, elements = figure.subplots(1, 3)
-    line.plot(span * 1e3, moved[:, 0] * 1e6, label="x")
-    line.plot(span * 1e3, moved[:, 1] * 1e6, label="y")
+    line.plot(nodes * 1e3, moved[:, 0] * 1e6, ".-" if layout.sections is not None else "-", label="x")
+    line.plot(nodes * 1e3, moved[:, 1] * 1e6, ".-" if layout.sections is not None else "-", label="y")
     for z in positions:
         line.axvline(z * 1e3, color="0.6", lw=0.8)
-    line.set(xlabel="position along the shaft [mm]", ylabel="radial displacement [µm]", title="shaft (rigid)")
+    line.set(xlabel="position along the shaft [mm]", ylabel="radial displacement [µm]",
+             title="shaft (rigid)" if layout.sections is None else "shaft (Timoshenko beam)")
     reaction = np.asarray(values["bearings.reaction"])
     numbers = np.arange(len(positions))
     bars.bar(numbers - 0.2, np.hypot(reaction[:, 0], reaction[:, 1]) / 1e3, 0.4, label="radial")
@@ -273,7 +337,11 @@ BLOCK = Block(
     inputs=("shaft",),
     uses=("centrifugal", "gyroscopic", "stiffness", "life", "frequencies"),
     outputs=(
-        Output("shaft.displacement", "m, rad", "", "shaft displacement at z = 0 [ux, uy, uz, θx, θy]", in_report=False),
+        Output("shaft.displacement", "m, rad", "", "shaft displacement at shaft.stiffness_at (default z = 0) "
+               "[ux, uy, uz, θx, θy]", in_report=False),
+        Output("shaft.nodes", "m", "mm", "z of the shaft's nodes: the mesh of a flexible shaft; a rigid one's bearings, "
+               "loads and reference point, in order", in_report=False),
+        Output("shaft.deflection", "m, rad", "", "each node's displacement [ux, uy, uz, θx, θy]", in_report=False),
         Output("shaft.converged", "", "", "the shaft equilibrium converged", in_report=False),
         Output("shaft.residual", "", "", "largest scaled residual of the shaft equilibrium", in_report=False),
         Output("shaft.stiffness", "N/m, N/rad, N*m/m, N*m/rad", "", "5×5 system stiffness at shaft.stiffness_at (exact)",
@@ -317,8 +385,16 @@ BLOCK = Block(
 
 def _header(result) -> list[str]:
     scene, layout = result.model.scene, result.model.inputs["shaft"]
+    if layout.sections is None:
+        kind = "rigid"
+    else:
+        sections = layout.sections
+        kind = (f"Timoshenko beam of {np.shape(sections.starts)[0]} sections from "
+                f"{float(np.min(sections.starts)) * 1e3:.1f} to {float(np.max(sections.ends)) * 1e3:.1f} mm, "
+                f"{sections.material.name} (E {float(sections.material.elastic_modulus) / 1e9:.0f} GPa), "
+                f"{layout.mesh.node_count} nodes")
     lines = [scene.title, f"scene: {scene.source}", "",
-             f"Shaft      rigid, {len(layout.bearings)} bearings, {float(layout.speed) * 30 / np.pi:.1f} r/min"]
+             f"Shaft      {kind}, {len(layout.bearings)} bearings, {float(layout.speed) * 30 / np.pi:.1f} r/min"]
     for number, (bearing, z, orientation) in enumerate(zip(layout.bearings, np.asarray(layout.positions),
                                                           layout.orientations)):
         where = f"  bearing {number}: at z = {z * 1e3:.2f} mm ({'+z' if orientation > 0 else '−z'}), "
@@ -342,7 +418,7 @@ def _header(result) -> list[str]:
 def _report(result) -> list[str]:
     values = result.values
     u = np.asarray(values["shaft.displacement"])
-    lines = ["", "Shaft at z = 0",
+    lines = ["", f"Shaft at z = {float(result.model.inputs['shaft'].stiffness_at) * 1e3:.2f} mm",
              f"  ux = {u[0] * 1e6:.3f} µm, uy = {u[1] * 1e6:.3f} µm, uz = {u[2] * 1e6:.3f} µm, "
              f"θx = {u[3] * 1e3:.4f} mrad, θy = {u[4] * 1e3:.4f} mrad",
              "", "Bearings (loads from the shaft, shaft frame; Qmax the largest ball or roller load)",
@@ -363,6 +439,11 @@ def _report(result) -> list[str]:
         if "bearings.friction.torque" in values:
             row += f"{float(values['bearings.friction.torque'][number]) * 1e3:>10.2f}"
         lines.append(row)
+    if result.model.inputs["shaft"].sections is not None:
+        nodes, moved = np.asarray(values["shaft.nodes"]), np.asarray(values["shaft.deflection"])
+        radial = np.hypot(moved[:, 0], moved[:, 1])
+        lines.append(f"  largest radial deflection {radial.max() * 1e6:.3f} µm at z = {nodes[radial.argmax()] * 1e3:.2f} mm "
+                     f"(bearings and shaft bending together)")
     lines += ["", "Element loads at the inner raceway [kN], from azimuth ψ = 0 in each bearing's frame"]
     for number, loads in enumerate(np.asarray(values["bearings.elements.inner_load"])):
         lines.append(f"  {number:<4}" + " ".join(f"{load / 1e3:.3f}" for load in loads[np.isfinite(loads)]))
@@ -390,7 +471,15 @@ ADAPTER = register(Adapter(
         "loads": Key("tables", doc="[[loads]]: position, force = [Fx, Fy, Fz], moment = [Mx, My] on the shaft",
                      entry=_load_entry),
         "shaft.speed": quantity("angular_speed", "the shaft's (inner rings') speed; the outer rings stand still"),
-        "shaft.stiffness_at": quantity("length", "the shaft point of the system stiffness (default z = 0)"),
+        "shaft.stiffness_at": quantity("length", "the shaft point of the system stiffness and of shaft.displacement "
+                                                 "(default z = 0)"),
+        "shaft.sections": Key("tables", doc="[[shaft.sections]]: from, to, outer_diameter, inner_diameter (default 0, "
+                                            "solid) of each section of a flexible shaft (Timoshenko beam); without "
+                                            "them the shaft is rigid", entry=_section_entry),
+        "shaft.material": Key("choice", choices=tuple(SEAT_MATERIALS), doc="the flexible shaft's material (default "
+                                                                           "steel: E 207 GPa, ν 0.292)"),
+        "shaft.element_length": quantity("length", "the flexible shaft's longest beam element (default its length / 40; "
+                                                   "the values at bearings and loads do not depend on it)"),
         "effects.centrifugal": Key("boolean"),
         "effects.gyroscopic": Key("boolean"),
         "effects.stiffness": Key("boolean"),
