@@ -1,6 +1,7 @@
 """Effect friction = "palmgren": Palmgren's moments in their catalogue units, the default constants
-against the Timken Engineering Manual's table, the power loss against Schaeffler's, the loads P₁ of
-HR 1 through scenes, and derivatives of the torque through the solved bearing."""
+against the Timken Engineering Manual's table, the power loss against Schaeffler's, KRW's worked
+example, the loads P₁ of HR 1 through scenes, and derivatives of the torque through the solved
+bearing."""
 
 import equinox as eqx
 import jax.numpy as jnp
@@ -39,6 +40,37 @@ def test_default_constants_are_timkens_reference_values():
 def test_power_is_schaeffers():
     """N = M ω equals HR 1's N_R = M_R n / 9550 [W, N·mm, r/min] within the rounding of 9550 (1e-4)."""
     assert float(friction_torque.friction_power(0.1, 3000 * RPM)) == pytest.approx(100.0 * 3000 / 9550, rel=1e-4)
+
+
+# KRW's worked example (KRW Wälzlager, Bearings Delivery Programme 2006, "Reibung", pp. 52–57): a
+# 6220 (d 100, D 180 mm, d_m 140 mm, C₀ 93 kN) at 2200 r/min under F_r 20 kN, F_a 6 kN in oil
+# (f₀ 2); its table of ν [mm²/s] at 40…80 °C against M₀ [N·mm] and the friction power [W], and M₁.
+KRW_VISCOSITY = np.array([100.0, 60.0, 39.0, 26.0, 19.0])
+KRW_VISCOUS_TORQUE = np.array([2000.0, 1423.0, 1062.0, 824.0, 660.0])
+KRW_POWER = np.array([725.0, 592.0, 509.0, 454.0, 417.0])
+KRW_LOAD_TORQUE = 1148.0
+
+
+def test_krw_worked_example_6220():
+    """KRW's 6220 (constants above): f₁ = 0.00089 (P₀/C₀)^0.5 with P₀ = F_r = 20 kN (ISO 76: 0.6 F_r
+    + 0.5 F_a = 15 kN is less) is 0.000413, printed 0.00041; P₁ = F_r (F_a/F_r below HR 1's and
+    KRW's limit); M₁ = f₁ P₁ d_m = 1148 N·mm at the printed f₁ (exact); M₀ at every tabulated ν
+    within the rounding of the printed ν and M₀ (0.9–1.8 %; off by 1.1 % at most, at ν = 26) and
+    N = (M₀ + M₁) ω within 1 % (0.4 % at most). The table's 30 °C row
+    (ν 183, M₀ 2318 N·mm, 954 W) is left out: its power needs M₀ ≈ 2990 N·mm, which the formula
+    gives (2992), so its printed M₀ is a misprint."""
+    speed = 2200.0 * RPM
+    f1 = friction_torque.speed_factor(0.00089, 0.5, 20e3, 93e3)
+    assert float(f1) == pytest.approx(0.00041, abs=5e-6)
+    load = friction_torque.friction_load("deep_groove_ball", 20e3, 6e3)
+    assert float(load) == 20e3
+    assert float(friction_torque.load_torque(0.00041, load, 0.14)) * 1e3 == pytest.approx(KRW_LOAD_TORQUE, rel=1e-12)
+    viscous = np.array([float(friction_torque.viscous_torque(2.0, nu * 1e-6, speed, 0.14)) for nu in KRW_VISCOSITY])
+    # ν printed to ±0.5 mm²/s moves M₀ ∝ ν^{2/3} by (2/3)(0.5/ν), M₀ printed to ±0.5 N·mm
+    rounding = (2.0 / 3.0) * 0.5 / KRW_VISCOSITY + 0.5 / KRW_VISCOUS_TORQUE
+    assert np.all(np.abs(viscous * 1e3 / KRW_VISCOUS_TORQUE - 1.0) <= rounding)
+    power = np.array([float(friction_torque.friction_power(m + KRW_LOAD_TORQUE * 1e-3, speed)) for m in viscous])
+    np.testing.assert_allclose(power, KRW_POWER, rtol=0.01)
 
 
 SCENE = 'title = "6208 friction"' + BEARING_6208 + """radial_clearance = "10 um"
