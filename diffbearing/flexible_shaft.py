@@ -38,8 +38,8 @@ from .numerics import require_float64
 from .params import _as_float, _is_concrete
 from .shaft_beam import NODE_DOFS, BeamMesh, ShaftSections, beam_mesh, node_positions, stiffness_matrix
 from .shaft_equilibrium import (DISPLACEMENT_SCALE, RESIDUAL_TOLERANCE, STATIC_GRADIENT_TOLERANCE, Shaft,
-                                constant_tables, damped_newton, local_displacement, shaft_scales, support_energy,
-                                support_force, turned)
+                                ShaftEquilibrium, constant_tables, damped_newton, local_displacement, shaft_scales,
+                                support_energy, support_force, turned)
 
 
 class FlexibleShaft(eqx.Module):
@@ -60,22 +60,29 @@ def points(flexible: FlexibleShaft):
                             jnp.asarray(shaft.loads.positions), jnp.reshape(jnp.asarray(flexible.reference), (1,))])
 
 
-def flexible_shaft(shaft: Shaft, sections: ShaftSections, reference=0.0, longest=None) -> FlexibleShaft:
-    """The shaft on its bearings as a beam of `sections`, meshed with a node at every bearing, load,
+def shaft_mesh(sections: ShaftSections, bearing_positions, load_positions, reference=0.0, longest=None) -> BeamMesh:
+    """The mesh of a shaft of `sections` with a node at every bearing, load (positions [m], concrete),
     section end and the `reference` point [m], no element longer than `longest` [m] (default the
-    shaft's length / 40). Positions must be concrete; ValueError names one off the shaft."""
-    where = ([f"bearings[{k}].position" for k in range(len(shaft.supports))]
-             + [f"loads[{l}].position" for l in range(np.shape(shaft.loads.positions)[0])] + ["shaft.stiffness_at"])
-    unmeshed = FlexibleShaft(shaft, sections, reference)
-    given = points(unmeshed)
-    if not _is_concrete(given):
-        raise ValueError("flexible_shaft: the positions must be concrete to mesh the shaft (build it outside jit)")
+    shaft's length / 40); its given points in that order. ValueError names a point off the shaft."""
+    given = [*np.ravel(bearing_positions), *np.ravel(load_positions), reference]
+    if not _is_concrete(*given):
+        raise ValueError("the bearing, load and reference positions of a flexible shaft must be concrete to mesh it "
+                         "(they cannot be swept or traced)")
+    where = ([f"bearings[{k}].position" for k in range(np.size(bearing_positions))]
+             + [f"loads[{l}].position" for l in range(np.size(load_positions))] + ["shaft.stiffness_at"])
     start, end = float(np.min(sections.starts)), float(np.max(sections.ends))
-    for name, z in zip(where, np.asarray(given)):
+    for name, z in zip(where, np.asarray(given, dtype=float)):
         if not start - 1e-9 * (end - start) <= z <= end + 1e-9 * (end - start):
             raise ValueError(f"{name} = {z * 1e3:g} mm lies off the shaft, whose sections run from {start * 1e3:g} mm "
                              f"to {end * 1e3:g} mm")
-    return FlexibleShaft(shaft, sections, reference, beam_mesh(sections, given, longest))
+    return beam_mesh(sections, np.asarray(given, dtype=float), longest)
+
+
+def flexible_shaft(shaft: Shaft, sections: ShaftSections, reference=0.0, longest=None) -> FlexibleShaft:
+    """The shaft on its bearings as a beam of `sections`, meshed by `shaft_mesh` (positions must be
+    concrete: build it outside jit)."""
+    mesh = shaft_mesh(sections, [s.position for s in shaft.supports], shaft.loads.positions, reference, longest)
+    return FlexibleShaft(shaft, sections, reference, mesh)
 
 
 def _structure(flexible: FlexibleShaft):
@@ -150,21 +157,12 @@ def _residual(y, args):
     return out * weight / load_scale
 
 
-class FlexibleShaftEquilibrium(eqx.Module):
-    """The flexible shaft in equilibrium: the nodes' z [m] (n,) and displacements (n, 5) [m, rad],
-    the reference point's displacement (5,); per bearing (tuples in the order of the shaft's
-    supports) the inner-ring displacement and the load in its own frame, as `ShaftEquilibrium`;
-    whether it converged, the residual [-] and the Newton steps."""
+class FlexibleShaftEquilibrium(ShaftEquilibrium):
+    """The flexible shaft in equilibrium: `ShaftEquilibrium`'s fields, with `displacement` that of
+    the reference point (5,) [m, rad], and the nodes' z [m] (n,) and displacements (n, 5) [m, rad]."""
 
     nodes: jax.Array
     node_displacements: jax.Array
-    displacement: jax.Array
-    bearing_displacements: tuple
-    bearing_forces: tuple
-    converged: jax.Array
-    residual: jax.Array
-    static_steps: jax.Array
-    steps: jax.Array
 
 
 def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
@@ -191,9 +189,11 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
                    for local, support, table in zip(locals_, shaft.supports, tables))
     nodes = recover(u_b)
     residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
-    return FlexibleShaftEquilibrium(node_positions(flexible.mesh, flexible.sections, points(flexible)), nodes,
-                                    nodes[reference_node], locals_, forces, residual < RESIDUAL_TOLERANCE, residual,
-                                    static_steps, steps.astype(static_steps.dtype))
+    return FlexibleShaftEquilibrium(
+        displacement=nodes[reference_node], bearing_displacements=locals_, bearing_forces=forces,
+        converged=residual < RESIDUAL_TOLERANCE, residual=residual, static_steps=static_steps,
+        steps=steps.astype(static_steps.dtype), nodes=node_positions(flexible.mesh, flexible.sections, points(flexible)),
+        node_displacements=nodes)
 
 
 def flexible_shaft_stiffness(solution: FlexibleShaftEquilibrium, flexible: FlexibleShaft):

@@ -76,6 +76,7 @@ def _three_bearing_shaft(speed=0.0):
     return Shaft(supports, loads(-0.05, (4000.0, 1500.0, 1000.0), (0.0, 60.0)), speed)
 
 
+@pytest.mark.slow
 def test_the_rigid_shaft_is_the_limit_of_a_stiffening_one(solve, stiffness_of):
     """Three bearings (the load's share follows the shaft's bending): as the shaft's modulus grows
     ×10, the bearings' loads and the stiffness at the load approach the rigid shaft's ten times

@@ -16,12 +16,12 @@ import numpy as np
 
 from ... import ball_validity, life, overrolling
 from ...ball_equilibrium import ball_results
-from ...flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, solve_flexible_shaft
+from ...flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, shaft_mesh, solve_flexible_shaft
 from ...operating_clearance import SEAT_MATERIALS
 from ...params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
 from ...roller_equilibrium import RollerOperating, roller_results
 from ...roller_geometry import ROLLER_KINDS
-from ...shaft_beam import BeamMesh, ShaftSections, beam_mesh
+from ...shaft_beam import BeamMesh, ShaftSections
 from ...shaft_equilibrium import (RESIDUAL_TOLERANCE, BallSupport, RollerSupport, Shaft, ShaftLoads,
                                   shaft_stiffness, solve_shaft, transfer, turned)
 from ..formatting import format_number, stiffness_lines
@@ -128,19 +128,8 @@ def _sections(v, positions, loads) -> tuple:
     sections = ShaftSections([e["from"] for e in entries], [e["to"] for e in entries],
                              [e["outer_diameter"] for e in entries], [e["inner_diameter"] for e in entries],
                              SEAT_MATERIALS[name][0])
-    reference = v.get("shaft.stiffness_at", 0.0)
-    points = [*positions, *(load["position"] for load in loads), reference]
-    if not all(isinstance(z, float | int) or np.ndim(z) == 0 and not isinstance(z, jax.core.Tracer) for z in points):
-        raise ValueError("shaft.stiffness_at: a flexible shaft's reference point is a node of its mesh and cannot "
-                         "be swept")
-    start, end = min(e["from"] for e in entries), max(e["to"] for e in entries)
-    names = ([f"bearings[{k}].position" for k in range(len(positions))]
-             + [f"loads[{l}].position" for l in range(len(loads))] + ["shaft.stiffness_at"])
-    for where, z in zip(names, points):
-        if not start - 1e-9 * (end - start) <= float(z) <= end + 1e-9 * (end - start):
-            raise ValueError(f"{where} = {float(z) * 1e3:g} mm lies off the shaft, whose sections run from "
-                             f"{start * 1e3:g} mm to {end * 1e3:g} mm")
-    return sections, beam_mesh(sections, np.array(points, dtype=float), v.get("shaft.element_length"))
+    return sections, shaft_mesh(sections, positions, [load["position"] for load in loads],
+                                v.get("shaft.stiffness_at", 0.0), v.get("shaft.element_length"))
 
 
 def _layout(v, built) -> dict:
