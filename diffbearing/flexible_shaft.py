@@ -199,15 +199,13 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
 def flexible_shaft_stiffness(solution: FlexibleShaftEquilibrium, flexible: FlexibleShaft):
     """5×5 stiffness [N/m, N/rad; N·m/m, N·m/rad] at the reference point: the Schur complement onto
     its node of the tangent stiffness of beam and bearings (module docstring; exact, jacfwd)."""
-    _, _, _, reference_node = _structure(flexible)
-    count = len(flexible.shaft.supports)
-    support_nodes = flexible.mesh.point_nodes[:count]
+    bearing_nodes, slots, _, reference_node = _structure(flexible)
     tangent = stiffness_matrix(flexible.mesh, flexible.sections, points(flexible))
-    for node, local, support, table in zip(support_nodes, solution.bearing_displacements, flexible.shaft.supports,
+    for slot, local, support, table in zip(slots, solution.bearing_displacements, flexible.shaft.supports,
                                            constant_tables(flexible.shaft)):
         sign = turned(support)
         bearing = jax.jacfwd(support_force)(local, support, flexible.shaft.speed, table)
-        index = _dofs([node])
+        index = _dofs([bearing_nodes[slot]])
         tangent = tangent.at[np.ix_(index, index)].add(sign[:, None] * bearing * sign[None, :])
     kept = _dofs([reference_node])
     rest = np.setdiff1d(np.arange(tangent.shape[0]), kept)

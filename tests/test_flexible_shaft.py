@@ -122,9 +122,10 @@ def test_stiffness_at_a_point_is_the_equilibriums_response(solve, stiffness_of):
 
 
 @pytest.mark.slow
-def test_derivatives_through_the_flexible_equilibrium(solve):
-    """d/d(the solid section's diameter, the bearing positions, the load) of every bearing's load
-    and the load point's displacement: forward and reverse mode against central differences."""
+def test_derivatives_through_the_flexible_equilibrium(solve, stiffness_of):
+    """d/d(the section diameters, the bearing positions) of every bearing's load, the deflection
+    line (every node) and the stiffness's diagonal at the load point: forward and reverse mode
+    against central differences."""
     shaft = _three_bearing_shaft()
     flexible = flexible_shaft(shaft, sections(), reference=-0.05)
 
@@ -133,7 +134,8 @@ def test_derivatives_through_the_flexible_equilibrium(solve):
         moved = eqx.tree_at(lambda f: (f.sections.outer_diameters, *(s.position for s in f.shaft.supports)),
                             flexible, (diameters, *positions))
         bent = solve(moved)
-        return jnp.stack(bent.bearing_forces)[:, :3] / 1e3, bent.displacement * 1e6
+        stiffness = jnp.diag(stiffness_of(bent, moved)) / jnp.array([1e8, 1e8, 1e7, 1e6, 1e6])
+        return jnp.stack(bent.bearing_forces)[:, :3] / 1e3, bent.node_displacements * 1e6, stiffness
 
     point = (jnp.asarray(flexible.sections.outer_diameters), jnp.array([-0.12, 0.0, 0.15]))
     direction = (jnp.array([1.0, 0.3]), jnp.array([0.2, -0.5, 1.0]))
