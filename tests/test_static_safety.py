@@ -152,3 +152,21 @@ def test_static_safety_derivatives():
     point = (jnp.array([1000.0, 300.0, 2000.0]), jnp.asarray(60e-3), jnp.asarray(2.5e9))
     direction = (jnp.array([50.0, -20.0, 80.0]), jnp.asarray(1e-3), jnp.asarray(1e8))
     assert_jvp_matches_central_difference(safety, point, direction, 1e-3, rtol=1e-6)
+
+
+def test_hybrid_bearing_is_rated_as_all_steel_and_says_so():
+    """Silicon nitride balls (E 310 GPa): the same ISO 76 C₀ as the all-steel bearing, a higher
+    computed pressure (E' up, so p_max ∝ E'^{2/3} at nearly the same ball load), and a warning that
+    the ratings are the all-steel ones; none for steel balls."""
+    runs = {}
+    for preset in ("bearing_steel", "silicon_nitride"):
+        result = run_model(build_model(load_scene(example_scene("deep_groove_6411"), overrides=[
+            "effects.safety=true", "effects.stiffness=false", f"material.ball_preset={preset}"])), progress=False)
+        runs[preset] = (result.values, result.problems[1])
+    (steel, steel_warnings), (hybrid, hybrid_warnings) = runs["bearing_steel"], runs["silicon_nitride"]
+    assert not any("hybrid" in line for line in steel_warnings)
+    assert any("hybrid bearing" in line for line in hybrid_warnings)
+    assert float(hybrid["safety.hybrid"]) == 1.0 and float(steel["safety.hybrid"]) == 0.0
+    assert float(hybrid["safety.static_load_rating"]) == float(steel["safety.static_load_rating"])
+    assert float(hybrid["safety.max_pressure"]) > 1.05 * float(steel["safety.max_pressure"])
+    assert float(hybrid["safety.static"]) < float(steel["safety.static"])

@@ -8,12 +8,25 @@ import numpy as np
 
 from ... import life, roller_life, static_safety
 from ...minimum_load import minimum_load
-from ...params import BALL_BEARING_KINDS
+from ...params import BALL_BEARING_KINDS, SILICON_NITRIDE
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import SHAFT, Adapter, Block, Key, Output, register
 from .bearing_set import SET, SET_SIZE
 from .life import ball_load_rating, roller_load_ratings
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+
+
+HYBRID_OUTPUT = Output("safety.hybrid", "", "", "1 where the balls are silicon nitride: C0, s0 and p_limit are then "
+                       "ISO 76's all-steel values", in_report=False)
+HYBRID_WARNING = ("hybrid bearing (silicon nitride balls): C0, s0 and p_limit are ISO 76's all-steel values (ISO 20056-2's "
+                  "hybrid ratings are not built); the pressure safety reads the computed pressure of the ceramic ball on "
+                  "the steel ring, higher than an all-steel bearing's at the same load")
+
+
+def _hybrid(bearing) -> jnp.ndarray:
+    """1.0 for a ball bearing with silicon nitride balls (the material's static name), else 0.0."""
+    return jnp.asarray(float(getattr(bearing, "ball_material", None) is not None
+                             and bearing.ball_material.name == SILICON_NITRIDE.name))
 
 
 def _outputs(exponent: str, minimum: str) -> tuple[Output, ...]:
@@ -27,6 +40,7 @@ def _outputs(exponent: str, minimum: str) -> tuple[Output, ...]:
         Output("safety.equivalent_load", "N", "kN", "ISO 281 equivalent dynamic load P", in_report=False),
         Output("safety.minimum_load", "N", "kN", f"requisite minimum load P_min = {minimum} C_r"),
         Output("safety.speed", "rad/s", "rpm", "relative ring speed (for the minimum-load check)", in_report=False),
+        HYBRID_OUTPUT,
     )
 
 
@@ -43,7 +57,7 @@ def _safety(bearing, raceways, force, pressure, equivalent_load, minimum, operat
     return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
             "safety.max_pressure": pressure, "safety.pressure_limit": limit, "safety.static": safety,
             "safety.equivalent_load": equivalent_load, "safety.minimum_load": minimum,
-            "safety.speed": jnp.abs(operating.inner_speed - operating.outer_speed)}
+            "safety.speed": jnp.abs(operating.inner_speed - operating.outer_speed), "safety.hybrid": _hybrid(bearing)}
 
 
 def _ball_safety(inputs: dict, settings: dict, results: dict) -> dict:
@@ -63,7 +77,7 @@ def _roller_safety(inputs: dict, settings: dict, results: dict) -> dict:
 def _set_safety(inputs: dict, settings: dict, results: dict) -> dict:
     """C₀ of the set's bearings, and each bearing's P₀, s₀ and pressure safety from its own load."""
     bearing = inputs["bearing"]
-    out = {}
+    out = {"safety.hybrid": _hybrid(bearing)}
     for number in range(SET_SIZE):
         prefix = f"set.bearings.{number}."
         rating, load, safety = static_safety.bearing_static_safety(bearing, None, results[prefix + "force"][:3],
@@ -80,20 +94,27 @@ def _shaft_safety(inputs: dict, settings: dict, results: dict) -> dict:
                                                  results["bearings.max_pressure"][number])
              for number, bearing in enumerate(inputs["shaft"].bearings)]
     rating, load, safety = (jnp.stack(column) for column in zip(*found))
+    hybrid = jnp.max(jnp.stack([_hybrid(bearing[0] if isinstance(bearing, tuple) else bearing)
+                                for bearing in inputs["shaft"].bearings]))
     return {"bearings.static_load_rating": rating, "bearings.equivalent_static_load": load,
-            "bearings.iso76": rating / load, "bearings.static_safety": safety}
+            "bearings.iso76": rating / load, "bearings.static_safety": safety, "safety.hybrid": hybrid}
+
+
+def _hybrid_warning(values: dict) -> list[str]:
+    return [HYBRID_WARNING] if float(values["safety.hybrid"]) > 0.5 else []
 
 
 def _shaft_checks(values: dict) -> tuple[list[str], list[str]]:
     return [], [f"bearing {number}: {name} is {value:.3g}, below 1" for key, name in SAFETY_NAMES
-                for number, value in enumerate(np.asarray(values[f"bearings.{key}"])) if value < 1.0]
+                for number, value in enumerate(np.asarray(values[f"bearings.{key}"])) if value < 1.0] \
+        + _hybrid_warning(values)
 
 
 def _set_checks(values: dict) -> tuple[list[str], list[str]]:
     warnings = [f"bearing {number}: {name} is {float(values[f'set.bearings.{number}.{key}']):.3g}, below 1"
                 for number in range(SET_SIZE) for key, name in SAFETY_NAMES
                 if float(values[f"set.bearings.{number}.{key}"]) < 1.0]
-    return [], warnings
+    return [], warnings + _hybrid_warning(values)
 
 
 def _checks(values: dict) -> tuple[list[str], list[str]]:
@@ -107,7 +128,7 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
     if float(values["safety.speed"]) > 0.0 and load < minimum:
         warnings.append(f"equivalent load {load / 1e3:.3g} kN is below the minimum load {minimum / 1e3:.3g} kN "
                         "(0.01 C_r for ball, 0.02 C_r for roller bearings): the rolling elements may skid at speed")
-    return [], warnings
+    return [], warnings + _hybrid_warning(values)
 
 
 ADAPTER = register(Adapter(
@@ -140,7 +161,7 @@ ADAPTER = register(Adapter(
         enabled_by=("safety", True),
         requires=("bearing_set",),
         inputs=("bearing",),
-        outputs=(Output("set.static_load_rating", "N", "kN", "ISO 76 static load rating C0 of each bearing"),
+        outputs=(Output("set.static_load_rating", "N", "kN", "ISO 76 static load rating C0 of each bearing"), HYBRID_OUTPUT,
                  *(output for number in range(SET_SIZE) for output in (
                      Output(f"set.bearings.{number}.equivalent_static_load", "N", "kN",
                             f"bearing {number}: ISO 76 equivalent static load P0"),
@@ -160,7 +181,7 @@ ADAPTER = register(Adapter(
                  Output("bearings.equivalent_static_load", "N", "kN", "each bearing's ISO 76 P0", in_report=False),
                  Output("bearings.iso76", "", "", "each bearing's ISO 76 s0 = C0/P0", in_report=False),
                  Output("bearings.static_safety", "", "", "each bearing's static safety of its largest pressure, "
-                        "(p_limit/p_max)^3 (ball) or ^2 (roller)", in_report=False)),
+                        "(p_limit/p_max)^3 (ball) or ^2 (roller)", in_report=False), HYBRID_OUTPUT),
         compute=_shaft_safety,
         checks=_shaft_checks,
     )),
