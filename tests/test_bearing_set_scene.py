@@ -173,3 +173,11 @@ def test_pair_skf_friction_is_each_bearings_at_its_load():
         assert float(pair.values[f"set.bearings.{number}.friction.torque"]) == pytest.approx(float(want), rel=1e-12)
         total += float(want)
     assert float(pair.values["set.friction.torque"]) == pytest.approx(total, rel=1e-12)
+
+
+def test_hybrid_set_says_its_ratings_are_all_steel():
+    """A set of hybrid bearings (silicon nitride balls) flags them and warns that C0 and p_limit are
+    ISO 76's all-steel values (`tests/test_static_safety.py` for the single bearing)."""
+    result = run(["effects.safety=true", "material.ball_preset=silicon_nitride"])
+    assert float(result.values["safety.hybrid"]) == 1.0
+    assert any("hybrid bearing" in line for line in result.problems[1])

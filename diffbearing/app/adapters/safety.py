@@ -40,7 +40,6 @@ def _outputs(exponent: str, minimum: str) -> tuple[Output, ...]:
         Output("safety.equivalent_load", "N", "kN", "ISO 281 equivalent dynamic load P", in_report=False),
         Output("safety.minimum_load", "N", "kN", f"requisite minimum load P_min = {minimum} C_r"),
         Output("safety.speed", "rad/s", "rpm", "relative ring speed (for the minimum-load check)", in_report=False),
-        HYBRID_OUTPUT,
     )
 
 
@@ -57,13 +56,13 @@ def _safety(bearing, raceways, force, pressure, equivalent_load, minimum, operat
     return {"safety.static_load_rating": rating, "safety.equivalent_static_load": load, "safety.iso76": rating / load,
             "safety.max_pressure": pressure, "safety.pressure_limit": limit, "safety.static": safety,
             "safety.equivalent_load": equivalent_load, "safety.minimum_load": minimum,
-            "safety.speed": jnp.abs(operating.inner_speed - operating.outer_speed), "safety.hybrid": _hybrid(bearing)}
+            "safety.speed": jnp.abs(operating.inner_speed - operating.outer_speed)}
 
 
 def _ball_safety(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, force = inputs["bearing"], results["force"][:3]
     return _safety(bearing, None, force, _largest_pressure(results, "balls"), life.equivalent_dynamic_load(bearing, force),
-                   minimum_load(ball_load_rating(bearing), "ball"), inputs["operating"])
+                   minimum_load(ball_load_rating(bearing), "ball"), inputs["operating"]) | {"safety.hybrid": _hybrid(bearing)}
 
 
 def _roller_safety(inputs: dict, settings: dict, results: dict) -> dict:
@@ -117,6 +116,11 @@ def _set_checks(values: dict) -> tuple[list[str], list[str]]:
     return [], warnings + _hybrid_warning(values)
 
 
+def _ball_checks(values: dict) -> tuple[list[str], list[str]]:
+    errors, warnings = _checks(values)
+    return errors, warnings + _hybrid_warning(values)
+
+
 def _checks(values: dict) -> tuple[list[str], list[str]]:
     """Warnings: a static safety below 1, and a turning bearing loaded below its minimum load."""
     warnings = []
@@ -128,7 +132,7 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
     if float(values["safety.speed"]) > 0.0 and load < minimum:
         warnings.append(f"equivalent load {load / 1e3:.3g} kN is below the minimum load {minimum / 1e3:.3g} kN "
                         "(0.01 C_r for ball, 0.02 C_r for roller bearings): the rolling elements may skid at speed")
-    return [], warnings + _hybrid_warning(values)
+    return [], warnings
 
 
 ADAPTER = register(Adapter(
@@ -142,9 +146,9 @@ ADAPTER = register(Adapter(
         enabled_by=("safety", True),
         requires=("equilibrium",),
         inputs=("bearing", "operating"),
-        outputs=_outputs("3", "0.01"),
+        outputs=(*_outputs("3", "0.01"), HYBRID_OUTPUT),
         compute=_ball_safety,
-        checks=_checks,
+        checks=_ball_checks,
     ), Block(
         name="roller_safety",
         bearing_types=ROLLER_KINDS,
