@@ -89,6 +89,22 @@ def _hertz_start(level, constants):
     return jnp.append(hertz[1:-1].reshape(-1), offset)
 
 
+def point_level(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus,
+                grid, viscosity_law="roelands", density_law="dowson_higginson"):
+    """(UniformLevel of the case on `grid` = (nx, ny), its reference length b_r [m]): the grid,
+    rigid gap, fluid and load of the dimensionless equations (module docstring)."""
+    reference, hertz_pressure, major, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
+    fluid = FluidParameters(12.0 * viscosity * speed * radius_rolling**2 / (reference**3 * hertz_pressure),
+                            hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
+
+    def rigid_transverse(y):
+        return 0.5 * radius_rolling / radius_transverse * y**2
+
+    side = DOMAIN_SIDE[0] * major + DOMAIN_SIDE[1]
+    return UniformLevel(*grid, side, rigid_transverse, fluid, None, 0.0, load / (hertz_pressure * reference**2),
+                        largest_step=LARGEST_STEP), reference
+
+
 def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus,
                grid=(65, 32), viscosity_law="roelands", density_law="dowson_higginson",
                tolerance=1e-10) -> PointFilm:
@@ -115,18 +131,9 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
     check_range("radius_transverse", radius_transverse, low=float(radius_rolling) if _is_concrete(radius_rolling)
                 else 0.0, low_open=False, unit=" m", why="Ry ≥ Rx: the ellipse's long axis across rolling")
 
-    def level_at(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus):
+    def level_at(*arguments):
         """(nx, ny) → UniformLevel of the case."""
-        reference, hertz_pressure, major, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
-        fluid = FluidParameters(12.0 * viscosity * speed * radius_rolling**2 / (reference**3 * hertz_pressure),
-                                hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
-
-        def rigid_transverse(y):
-            return 0.5 * radius_rolling / radius_transverse * y**2
-
-        side = DOMAIN_SIDE[0] * major + DOMAIN_SIDE[1]
-        return lambda nx, ny: UniformLevel(nx, ny, side, rigid_transverse, fluid, None, 0.0,
-                                           load / (hertz_pressure * reference**2), largest_step=LARGEST_STEP)
+        return lambda nx, ny: point_level(*arguments, (nx, ny), viscosity_law, density_law)[0]
 
     arguments = (load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus)
     constants = jax.lax.stop_gradient(arguments)

@@ -1,0 +1,98 @@
+"""The starved numerical point contact (θ-model): bad input refused, the flooded limit, the
+starvation trend against Chevalier's formula, implicit derivatives against central differences, and
+a severe starvation that says whether it converged and stays finite."""
+
+import jax
+import jax.numpy as jnp
+import pytest
+
+from diffbearing.film_formulas import starved_film
+from diffbearing.line_ehl import density_ratio
+from diffbearing.point_ehl import point_film
+from diffbearing.starved_point_ehl import starved_point_film
+
+from .helpers import assert_jvp_matches_central_difference
+
+# a circular contact: Rx = Ry = 10 mm, 50 N (p₀ 1.07 GPa), u = 1 m/s; η₀ 0.08 Pa·s, α 2.2e-8 1/Pa,
+# E' 2.26e11 Pa (as tests/test_point_ehl.py)
+OIL = dict(viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
+CIRCLE = dict(radius_rolling=10e-3, radius_transverse=10e-3, speed=1.0)
+LOAD = 50.0
+COARSE = (33, 16)
+
+
+def _starved(load, oil_layer, grid):
+    return starved_point_film(load, **CIRCLE, **OIL, oil_layer=oil_layer, grid=grid)
+
+
+def _flooded_central(grid):
+    return float(jax.jit(lambda q: point_film(q, **CIRCLE, **OIL, grid=grid).central)(LOAD))
+
+
+@pytest.fixture(scope="module")
+def coarse_flooded():
+    return _flooded_central(COARSE)
+
+
+def test_bad_oil_layer_names_the_parameter():
+    with pytest.raises(ValueError, match="oil_layer"):
+        _starved(LOAD, -1e-6, COARSE)
+
+
+def test_a_layer_that_fills_the_inlet_is_the_flooded_film(coarse_flooded):
+    """A layer of 150 µm, thicker than the gap anywhere on the inlet edge (about 36 µm at its
+    centre), starves nothing: the θ-model's solution is `point_film`'s (the same discrete equations
+    where θ = 1) to 1e-9."""
+    solved = jax.jit(lambda layer: _starved(LOAD, layer, COARSE))(150e-6)
+    assert bool(solved.film.converged)
+    assert float(solved.film.central) == pytest.approx(coarse_flooded, rel=1e-9)
+    assert float(solved.flooded_central) == pytest.approx(coarse_flooded, rel=1e-12)
+
+
+@pytest.mark.slow  # about 65 s (2 cores)
+def test_starved_film_derivatives_match_central_differences(coarse_flooded):
+    """d(h_c, h_min)/d(h_oil, Q) at a layer of twice the flooded central film on 33 × 16:
+    the implicit derivatives, forward and reverse, against central differences."""
+
+    def films(x):  # (layer [µm], load [N]) → films [µm]
+        solved = _starved(x[1], 1e-6 * x[0], COARSE)
+        return jnp.stack([solved.film.central, solved.film.minimum]) * 1e6
+
+    point = jnp.array([2e6 * coarse_flooded, LOAD])
+    assert bool(jax.jit(lambda x: _starved(x[1], 1e-6 * x[0], COARSE).film.converged)(point))
+    for direction in jnp.eye(2):
+        assert_jvp_matches_central_difference(jax.jit(films), point, direction, step=1e-4, rtol=1e-4)
+
+
+def test_severe_starvation_says_whether_it_converged_and_stays_finite(coarse_flooded):
+    """A hard case: a layer of a third of the flooded film on 33 × 16 (where the march does not reach
+    the steady solution). Converged or not, the result says so by its residual, and the films and
+    their layer derivatives are finite."""
+
+    def solve(layer):
+        solved = _starved(LOAD, layer, COARSE)
+        return jnp.stack([solved.film.central, solved.film.minimum]), (solved.film.converged, solved.film.residual,
+                                                                         jnp.min(solved.film.thickness))
+
+    (values, (converged, residual, lowest)), (slopes, _) = jax.jit(
+        lambda layer: jax.jvp(solve, (layer,), (1e-7,)))(coarse_flooded / 3.0)
+    assert bool(converged) == (float(residual) <= 1e-9 and float(lowest) > 0)
+    assert bool(jnp.all(jnp.isfinite(values))) and bool(jnp.all(jnp.isfinite(slopes)))
+
+
+@pytest.mark.slow  # about 8 minutes (2 cores): two solves on 65 × 32
+def test_starvation_follows_chevalier():
+    """On 65 × 32 the starved central film over the flooded one at layers of 1 and ½ flooded central
+    films: 0.703 and 0.399 (measured), against Chevalier, Lubrecht, Cann, Colin & Dalmaz (1998)
+    h/h_ff = r/(1 + r^γ)^{1/γ}, r = h_oil/(ρ̄ h_ff), γ = 2.5, ρ̄ at p₀ = 1.07 GPa: 0.675 and 0.391,
+    within 5 %."""
+    grid = (65, 32)
+    flooded = _flooded_central(grid)
+    solve = jax.jit(lambda layer: _starved(LOAD, layer, grid))
+    density = float(density_ratio(1.07e9))
+    for ratio in (1.0, 0.5):
+        solved = solve(ratio * flooded)
+        assert bool(solved.film.converged)
+        chevalier = float(starved_film(flooded, ratio * flooded, density, 2.5)) / flooded
+        assert float(solved.film.central) / flooded == pytest.approx(chevalier, rel=0.05)
+        assert 0.0 < float(solved.film.minimum) < float(solved.film.central)
