@@ -19,11 +19,7 @@ on the coarsest grid from the dry Hertz pressure at the Hamrock–Dowson central
 at most LARGEST_STEP long, then grid by grid, x nodes and y cells doubled, to the finest.
 Derivatives implicit through the finest solution.
 
-Not here yet: the starved inlet. The same equations take an oil layer (one meniscus per y cell,
-as the finite line contact), but from the flooded solution with the menisci at the inlet Newton
-stalls on the coarsest grid (κ ≈ 9, 500 N, a layer of half the flooded film on 33 × 16: max|F|
-≈ 0.1–1 with Newton–Krylov, with a continuation in the layer and with the dense Newton's
-Levenberg–Marquardt steps alike).
+The starved inlet: `starved_point_ehl` (the mass-conserving θ-model on the same grid).
 """
 
 import equinox as eqx

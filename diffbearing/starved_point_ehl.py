@@ -46,6 +46,7 @@ RAMP_STEPS = 16  # the supply reaches the layer after this many steps, and stays
 RAMP_START = 8.0  # the supply at T = 0, in flooded central films (the film hardly starves above)
 MARCH_NEWTON = 30  # Newton steps per pseudo-time step
 STEADY_NEWTON = 60  # Newton steps of the steady equations after the march
+MAX_UNKNOWNS = 2100  # (nx − 2)·ny: 65 × 32 (the dense Jacobian and its forward passes, about 0.5 GB)
 OFFSET_STEP = 0.06  # the largest change of H₀ per Newton step (as `point_ehl.LARGEST_STEP`)
 
 
@@ -112,6 +113,9 @@ def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity
     oil on both surfaces ahead of the contact. Converged: max|F| ≤ `tolerance` and h > 0."""
     require_float64()
     check_range("oil_layer", oil_layer, low=0.0, unit=" m", why="the inlet oil layer")
+    if (grid[0] - 2) * grid[1] > MAX_UNKNOWNS:
+        raise ValueError(f"grid = (nx, ny): the starved point contact's dense Newton takes (nx − 2)·ny ≤ {MAX_UNKNOWNS}, "
+                         f"e.g. (65, 32); got {tuple(grid)}")
     arguments = (load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus)
     flooded = point_film(*jax.lax.stop_gradient(arguments), grid=grid, viscosity_law=viscosity_law,
                          density_law=density_law)

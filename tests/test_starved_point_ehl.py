@@ -2,16 +2,20 @@
 starvation trend against Chevalier's formula, implicit derivatives against central differences, and
 a severe starvation that says whether it converged and stays finite."""
 
+import json
+
 import jax
 import jax.numpy as jnp
 import pytest
+
+from diffbearing.app import cli
 
 from diffbearing.film_formulas import starved_film
 from diffbearing.line_ehl import density_ratio
 from diffbearing.point_ehl import point_film
 from diffbearing.starved_point_ehl import starved_point_film
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_jvp_matches_central_difference, example_scene
 
 # a circular contact: Rx = Ry = 10 mm, 50 N (p₀ 1.07 GPa), u = 1 m/s; η₀ 0.08 Pa·s, α 2.2e-8 1/Pa,
 # E' 2.26e11 Pa (as tests/test_point_ehl.py)
@@ -34,9 +38,10 @@ def coarse_flooded():
     return _flooded_central(COARSE)
 
 
-def test_bad_oil_layer_names_the_parameter():
-    with pytest.raises(ValueError, match="oil_layer"):
-        _starved(LOAD, -1e-6, COARSE)
+@pytest.mark.parametrize("layer, grid, match", [(-1e-6, COARSE, "oil_layer"), (1e-6, (129, 64), "grid")])
+def test_bad_input_names_the_parameter(layer, grid, match):
+    with pytest.raises(ValueError, match=match):
+        _starved(LOAD, layer, grid)
 
 
 def test_a_layer_that_fills_the_inlet_is_the_flooded_film(coarse_flooded):
@@ -96,3 +101,33 @@ def test_starvation_follows_chevalier():
         chevalier = float(starved_film(flooded, ratio * flooded, density, 2.5)) / flooded
         assert float(solved.film.central) / flooded == pytest.approx(chevalier, rel=0.05)
         assert 0.0 < float(solved.film.minimum) < float(solved.film.central)
+
+
+SCENE_ARGUMENTS = ["--set", 'operating.force=["8 kN", "0 N", "0 N"]', "--set", 'operating.inner_speed="3000 rpm"',
+                   "--set", 'effects.film="point"', "--set", "effects.starvation=true",
+                   "--set", 'lubricant.preset="iso_vg_68"', "--set", "effects.stiffness=false"]
+
+
+@pytest.mark.slow  # about a minute (2 cores)
+def test_a_ball_scene_starved_by_a_thick_layer_is_flooded(capsys, tmp_path):
+    """Through the CLI, the 6411 at 8 kN and 3000 r/min with effects.starvation and a 0.5 mm layer
+    (thicker than either contact's inlet gap) on 33 × 32: the starved films are the flooded ones of
+    the same contacts (1e-9), Er = 0 to that, and the report names the level."""
+    path = tmp_path / "starved.json"
+    code = cli.main(["run", example_scene("deep_groove_6411"), "--json", str(path), *SCENE_ARGUMENTS,
+                     "--set", 'operating.oil_layer="0.5 mm"', "--set", "fidelity.grid=[33, 32]"])
+    out = capsys.readouterr().out
+    assert code == 0 and "starved point contact EHL (inner, θ-model" in out
+    document = json.loads(path.read_text())
+    for side in ("inner", "outer"):
+        flooded, starved = document["film"][side], document["starvation"][side]
+        assert starved["converged"] is True
+        assert starved["central"] == pytest.approx(flooded["central"], rel=1e-9)
+        assert starved["minimum"] == pytest.approx(flooded["minimum"], rel=1e-9)
+        assert abs(starved["relative_error"]) < 1e-9
+
+
+def test_a_ball_scene_names_the_grid_the_starved_solver_cannot_take(capsys):
+    code = cli.main(["run", example_scene("deep_groove_6411"), *SCENE_ARGUMENTS, "--set", 'operating.oil_layer="1 um"'])
+    err = capsys.readouterr().err
+    assert code == 2 and "fidelity.grid" in err and len(err.strip().splitlines()) == 1

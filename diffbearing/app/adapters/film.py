@@ -6,7 +6,7 @@ Rollers, fully flooded and in pure rolling: Pan–Hamrock (film = "formula"), th
 contact at mid-length ("line") or the 2-D finite line contact over the whole roller
 ("finite_line"). Starvation (with operating.oil_layer): the film of the same level with the inlet
 supplied by an oil layer only, and Er = (h_c,ff − h_c)/h_c,ff against the flooded film (starved
-when Er > 1 %).
+when Er > 1 %); for ball bearings with film = "point" only (the θ-model, `starved_point_ehl`).
 """
 
 import jax
@@ -19,6 +19,8 @@ from ...finite_line_krylov import finite_line_film_krylov, krylov_levels
 from ...kinematics import raceway_entrainment_speed
 from ...line_ehl import check_nodes, density_ratio, line_film
 from ...point_ehl import FEWEST_CELLS, point_film
+from ...starved_point_ehl import MAX_UNKNOWNS as STARVED_POINT_UNKNOWNS
+from ...starved_point_ehl import starved_point_film
 from ...params import BALL_BEARING_KINDS, _as_float, check_range
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
 from ...roller_geometry import ROLLER_KINDS, equivalent_radius, film_length, roller_modulus
@@ -113,37 +115,92 @@ def _point_settings(settings: dict, inputs: dict) -> None:
 _POINT_FIELDS = ("central", "minimum", "converged", "x", "y", "pressure", "thickness")
 
 
+def _point_case(inputs: dict, results: dict, side: str) -> dict:
+    """The contact of the most loaded ball on the `side` raceway: its index, load [N], radii Rx, Ry
+    [m], curvature difference [-] and entrainment speed [m/s]; an unloaded raceway is solved at 1 N."""
+    bearing, operating = inputs["bearing"], inputs["operating"]
+    curvature, ring_speed = ((inner_curvature, operating.inner_speed) if side == "inner"
+                             else (outer_curvature, operating.outer_speed))
+    loads = results[f"balls.{side}.load"]
+    ball = jnp.argmax(loads)
+    load, angle = loads[ball], results[f"balls.{side}.contact_angle"][ball]
+    curvature_sum, difference = curvature(bearing, angle)
+    radius_rolling = rolling_radius(bearing, angle, side)
+    speed = raceway_entrainment_speed(ring_speed, results["balls.orbital_speed"][ball], bearing.pitch_diameter,
+                                      diameter_ratio(bearing, angle), side)
+    return dict(ball=ball, load=load, solved_load=jnp.where(load > 0, load, 1.0), radius_rolling=radius_rolling,
+                radius_transverse=1.0 / (curvature_sum - 1.0 / radius_rolling), difference=difference, speed=speed)
+
+
 def _film_point(inputs: dict, settings: dict, results: dict) -> dict:
-    bearing, operating, lubricant = inputs["bearing"], inputs["operating"], inputs["lubricant"]
+    bearing, lubricant = inputs["bearing"], inputs["lubricant"]
     modulus = ball_raceway_modulus(bearing)
     out = {}
-    for side, curvature, ring_speed in (("inner", inner_curvature, operating.inner_speed),
-                                        ("outer", outer_curvature, operating.outer_speed)):
-        loads = results[f"balls.{side}.load"]
-        ball = jnp.argmax(loads)
-        load, angle = loads[ball], results[f"balls.{side}.contact_angle"][ball]
-        curvature_sum, difference = curvature(bearing, angle)
-        radius_rolling = rolling_radius(bearing, angle, side)
-        radius_transverse = 1.0 / (curvature_sum - 1.0 / radius_rolling)
-        speed = raceway_entrainment_speed(ring_speed, results["balls.orbital_speed"][ball], bearing.pitch_diameter,
-                                          diameter_ratio(bearing, angle), side)
-        loaded = load > 0  # an unloaded raceway has no film: null values (NaN), solved at 1 N
-        solved_load = jnp.where(loaded, load, 1.0)
-        solved = point_film(solved_load, radius_rolling, radius_transverse, speed, lubricant.viscosity,
-                            lubricant.pressure_viscosity, modulus, grid=point_grid(settings),
+    for side in ("inner", "outer"):
+        case = _point_case(inputs, results, side)
+        loaded = case["load"] > 0  # an unloaded raceway has no film: null values (NaN), solved at 1 N
+        solved = point_film(case["solved_load"], case["radius_rolling"], case["radius_transverse"], case["speed"],
+                            lubricant.viscosity, lubricant.pressure_viscosity, modulus, grid=point_grid(settings),
                             viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
         central, minimum = film_formulas.hamrock_dowson_point(
-            solved_load, radius_rolling, hertz.ellipticity(difference), speed, lubricant.viscosity,
-            lubricant.pressure_viscosity, modulus)
+            case["solved_load"], case["radius_rolling"], hertz.ellipticity(case["difference"]), case["speed"],
+            lubricant.viscosity, lubricant.pressure_viscosity, modulus)
         films = {"central": solved.central, "minimum": solved.minimum, "hamrock_dowson_central": central,
                  "hamrock_dowson_minimum": minimum}
-        out |= {f"film.{side}.ball": ball, f"film.{side}.load": load, f"film.{side}.entrainment_speed": speed,
+        out |= {f"film.{side}.ball": case["ball"], f"film.{side}.load": case["load"],
+                f"film.{side}.entrainment_speed": case["speed"],
                 **{f"film.{side}.{name}": getattr(solved, name) for name in _POINT_FIELDS},
                 **{f"film.{side}.{name}": jnp.where(loaded, value, jnp.nan) for name, value in films.items()}}
         if inputs["roughness"] is not None:
             out[f"film.{side}.film_parameter"] = film_formulas.film_parameter(out[f"film.{side}.minimum"],
                                                                               inputs["roughness"])
     return out
+
+
+def _starved_point_settings(settings: dict, inputs: dict) -> None:
+    """ValueError naming fidelity.grid where the starved point contact's dense Newton cannot take it."""
+    nx, half = point_grid(settings)
+    if (nx - 2) * half > STARVED_POINT_UNKNOWNS:
+        raise ValueError(f"fidelity.grid = [nx, ny] with effects.starvation and effects.film = \"point\": the starved "
+                         f"point contact's dense Newton takes (nx − 2)·⌈ny/2⌉ ≤ {STARVED_POINT_UNKNOWNS}, e.g. [65, 64]; "
+                         f"got {[nx, 2 * half]}")
+
+
+def _starvation_point(inputs: dict, settings: dict, results: dict) -> dict:
+    """The starved films of the same two contacts as `_film_point` (`starved_point_ehl`)."""
+    bearing, lubricant, oil_layer = inputs["bearing"], inputs["lubricant"], inputs["oil_layer"]
+    modulus = ball_raceway_modulus(bearing)
+    out = {"starvation.oil_layer": oil_layer}
+    for side in ("inner", "outer"):
+        case = _point_case(inputs, results, side)
+        solved = starved_point_film(case["solved_load"], case["radius_rolling"], case["radius_transverse"],
+                                    case["speed"], lubricant.viscosity, lubricant.pressure_viscosity, modulus, oil_layer,
+                                    grid=point_grid(settings), viscosity_law=lubricant.viscosity_law,
+                                    density_law=lubricant.density_law)
+        loaded = case["load"] > 0
+        central = jnp.where(loaded, solved.film.central, jnp.nan)
+        out |= {f"starvation.{side}.central": central,
+                f"starvation.{side}.minimum": jnp.where(loaded, solved.film.minimum, jnp.nan),
+                f"starvation.{side}.relative_error": 1.0 - central / results[f"film.{side}.central"],
+                f"starvation.{side}.converged": solved.film.converged,
+                f"starvation.{side}.pressure": solved.film.pressure, f"starvation.{side}.thickness": solved.film.thickness,
+                f"starvation.{side}.fill": solved.fill}
+    return out
+
+
+def _starved_point_outputs(side):
+    return (
+        Output(f"starvation.{side}.central", "m", "um", f"starved central film h_c at the most loaded ball, {side}"),
+        Output(f"starvation.{side}.minimum", "m", "um", f"starved minimum film h_min, {side}"),
+        Output(f"starvation.{side}.relative_error", "", "percent",
+               f"Er = (h_c,ff − h_c)/h_c,ff (starved if > 1 %), {side}"),
+        Output(f"starvation.{side}.converged", "", "", f"the starved point contact EHL converged, {side}",
+               in_report=False),
+        Output(f"starvation.{side}.pressure", "Pa", "GPa", f"starved film pressure p[x, y], {side}", in_report=False),
+        Output(f"starvation.{side}.thickness", "m", "um", f"starved film thickness h[x, y], {side}", in_report=False),
+        Output(f"starvation.{side}.fill", "", "", f"oil fill θ[x, y] of the gap (1: full film), {side}",
+               in_report=False),
+    )
 
 
 def _point_outputs(side):
@@ -188,6 +245,27 @@ def _point_film_plot(result, figure):
             axis.set(xlabel="y across rolling [mm]", ylabel="x, rolling [mm]", aspect="equal",
                      title=f"{side}, ball {int(values[f'film.{side}.ball'])}: {label.split(' [')[0]}")
     figure.suptitle(f"{result.model.scene.title}: point contact EHL, {len(x)} × {len(y)} half-domain grid")
+
+
+def _starved_point_plot(result, figure):
+    """The film along rolling on the rolling plane (y's first cell), flooded and starved, and the
+    oil fill θ there, at the inner and outer contacts."""
+    values = result.values
+    layer = float(values["starvation.oil_layer"]) * 1e6
+    for axis, side in zip(figure.subplots(1, 2), ("inner", "outer")):
+        x = np.asarray(values[f"film.{side}.x"]) * 1e3
+        axis.plot(x, np.asarray(values[f"film.{side}.thickness"])[:, 0] * 1e6, label="fully flooded")
+        axis.plot(x, np.asarray(values[f"starvation.{side}.thickness"])[:, 0] * 1e6, label=f"starved, h_oil = {layer:.3g} µm")
+        axis.axhline(layer, color="grey", lw=0.8, ls="--", label="oil layer")
+        fill = axis.twinx()
+        fill.plot(x, np.asarray(values[f"starvation.{side}.fill"])[:, 0], color="tab:green", lw=0.8)
+        fill.set(ylabel="oil fill θ (green)", ylim=(0, 1.05))
+        central = float(values[f"film.{side}.central"]) * 1e6
+        axis.set(xlabel="x, rolling [mm]", ylabel="film thickness [µm]", ylim=(0, 4 * central),
+                 title=f"{side}, ball {int(values[f'film.{side}.ball'])}")
+        axis.grid(alpha=0.3)
+        axis.legend(fontsize="small")
+    figure.suptitle(f"{result.model.scene.title}: starved point contact EHL on the rolling plane")
 
 
 # --- rollers: fully flooded -------------------------------------------------------------------
@@ -396,10 +474,14 @@ def _finite_line_film_plot(result, figure):
 def _report(result) -> list[str]:
     values = result.values
     if "film.inner.pressure" in values:  # the point contact level
-        return [f"  point contact EHL ({side}, Newton–Krylov, {len(values[f'film.{side}.x'])} × "
-                f"{len(values[f'film.{side}.y'])} half-domain grid): "
-                + ("converged" if bool(values[f"film.{side}.converged"]) else
-                   "DID NOT CONVERGE (values are the last iterate)") for side in ("inner", "outer")]
+        lines = [f"  point contact EHL ({side}, Newton–Krylov, {len(values[f'film.{side}.x'])} × "
+                 f"{len(values[f'film.{side}.y'])} half-domain grid): "
+                 + ("converged" if bool(values[f"film.{side}.converged"]) else
+                    "DID NOT CONVERGE (values are the last iterate)") for side in ("inner", "outer")]
+        return lines + [f"  starved point contact EHL ({side}, θ-model, pseudo-time march then Newton): "
+                        + ("converged" if bool(values[f"starvation.{side}.converged"]) else
+                           "DID NOT CONVERGE (values are the last iterate)")
+                        for side in ("inner", "outer") if f"starvation.{side}.converged" in values]
     if "film.y" in values:  # the finite line level
         grid, chosen = finite_line_settings(result.model.settings)
         solver = "Newton–Krylov" if chosen == "krylov" and len(krylov_levels(grid)) > 1 else "Newton"
@@ -428,7 +510,8 @@ def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
 
 
 ROLLER_INPUTS = ("bearing", "operating", "lubricant")
-_FILM_BLOCKS = ("film_line", "film_finite_line", "starvation_line", "starvation_finite_line", "film_point")
+_FILM_BLOCKS = ("film_line", "film_finite_line", "starvation_line", "starvation_finite_line", "film_point",
+                "starvation_point")
 
 ADAPTER = register(Adapter(
     name="film",
@@ -445,7 +528,7 @@ ADAPTER = register(Adapter(
                                doc="finite line EHL: dense Newton (clustered cells) or matrix-free Newton–Krylov "
                                    "(uniform cells); default dense where the grid fits it"),
     },
-    inputs=(InputBuilder(("oil_layer",), ROLLER_KINDS, _oil_layer),),
+    inputs=(InputBuilder(("oil_layer",), ROLLER_KINDS + BALL_BEARING_KINDS, _oil_layer),),
     blocks=(
         Block(name="film_hamrock_dowson", bearing_types=BALL_BEARING_KINDS, enabled_by=("film", "hamrock_dowson"),
               requires=("equilibrium",), inputs=("bearing", "operating", "lubricant", "roughness"),
@@ -456,6 +539,14 @@ ADAPTER = register(Adapter(
               validate=_point_settings, plot=_point_film_plot,
               checks=convergence_checks(("film.inner.converged", "the point contact EHL (inner raceway)"),
                                         ("film.outer.converged", "the point contact EHL (outer raceway)"))),
+        Block(name="starvation_point", sequential_sweep=True, bearing_types=BALL_BEARING_KINDS,
+              enabled_by=("starvation", True), only_with=("film", ("point",)), requires=("film_point",),
+              inputs=("bearing", "operating", "lubricant", "oil_layer"),
+              outputs=(Output("starvation.oil_layer", "m", "um", "inlet oil supply layer h_oil"),
+                       *_starved_point_outputs("inner"), *_starved_point_outputs("outer")),
+              compute=_starvation_point, validate=_starved_point_settings, plot=_starved_point_plot,
+              checks=convergence_checks(("starvation.inner.converged", "the starved point contact EHL (inner raceway)"),
+                                        ("starvation.outer.converged", "the starved point contact EHL (outer raceway)"))),
         Block(name="film_formula", bearing_types=ROLLER_KINDS, enabled_by=("film", "formula"),
               requires=("roller_geometry",), inputs=ROLLER_INPUTS, outputs=_ROLLER_FILM_COMMON,
               compute=_film_formula, validate=_entrainment),
