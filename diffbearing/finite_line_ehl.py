@@ -200,13 +200,23 @@ class ColumnGrid(eqx.Module):
     side_inflow: float = eqx.field(static=True)
 
 
+def transverse_terms(pressure, flow, columns: ColumnGrid):
+    """∂Y(ε ∂Y P) [-] (nx, ny) at every node by finite volumes across the cells: no flux at y = 0
+    (symmetry), P = 0 at the far edge (the roller end, or the side of a point contact's domain)."""
+    y, edges = columns.y, columns.edges
+    flux = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
+    end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
+    flux = jnp.concatenate([jnp.zeros_like(end), flux, end], axis=1)
+    return (flux[:, 1:] - flux[:, :-1]) / columns.widths
+
+
 def local_equations(pressure, height, meniscus, columns: ColumnGrid):
     """The column-local equations [-], (R, ny) with R = nx − 2 (+ 1 when starved): the Reynolds
     complementarity of each interior node, then the meniscus equation of each column (docstring
     of `finite_line_film`). The equations of column j read the pressure P (nx, ny) and film H
     (nx, ny) of columns j − 1, j, j + 1 and the meniscus X_m,j (ny) of column j alone; along x,
     a Reynolds row at node i reads nodes i − 2 … i + 1, a meniscus row its whole column."""
-    x, spacing, y, edges, widths = columns.x, columns.spacing, columns.y, columns.edges, columns.widths
+    x, spacing = columns.x, columns.spacing
     fluid, supply, side_inflow = columns.fluid, columns.supply, columns.side_inflow
     nx, ny = pressure.shape
     highest_meniscus = OUTLET - 0.5 * spacing
@@ -217,11 +227,7 @@ def local_equations(pressure, height, meniscus, columns: ColumnGrid):
     meniscus_height = jnp.sum(jnp.where(first, cells[1:] * height[:-1] + (1 - cells[1:]) * height[1:], 0.0),
                               axis=0)
     meniscus_flow = reynolds_coefficients(jnp.zeros(ny), meniscus_height, fluid)[1]
-    # along y, finite volumes: no flux at y = 0 (symmetry), p = 0 on the roller end
-    flux_y = 0.5 * (flow[:, 1:] + flow[:, :-1]) * (pressure[:, 1:] - pressure[:, :-1]) / jnp.diff(y)
-    end = -flow[:, -1:] * pressure[:, -1:] / (edges[-1] - y[-1])
-    flux_y = jnp.concatenate([jnp.zeros((nx, 1)), flux_y, end], axis=1)
-    poiseuille_y = (flux_y[:, 1:] - flux_y[:, :-1]) / widths
+    poiseuille_y = transverse_terms(pressure, flow, columns)
     dry_flow = reynolds_coefficients(jnp.zeros_like(height), height, fluid)[1]
     reynolds = reynolds_from_meniscus(pressure, density * height, flow, dry_flow, poiseuille_y[1:-1], spacing,
                                       cells, meniscus_height, meniscus_flow)

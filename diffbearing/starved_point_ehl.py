@@ -34,7 +34,8 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from .line_ehl import reynolds_coefficients
+from .finite_line_ehl import transverse_terms
+from .line_ehl import reynolds_coefficients, rolling_terms
 from .newton import implicit_root, newton
 from .numerics import require_float64
 from .params import check_range
@@ -90,19 +91,9 @@ def reynolds_residual(unknowns, level, scale, supply, old_mass, inverse_step):
     film = level.film(pressure, offset)
     mass = _mass(pressure, fill, film, level, supply)
     _, flow = reynolds_coefficients(pressure, film, level.columns.fluid)
-    spacing, columns = level.spacing, level.columns
-    face = 0.5 * (flow[1:] + flow[:-1])
-    along_x = (face[1:] * (pressure[2:] - pressure[1:-1]) - face[:-1] * (pressure[1:-1] - pressure[:-2])) / spacing**2
-    # across rolling, finite volumes: no flux at y = 0 (symmetry), p = 0 at the domain's side
-    flux = 0.5 * (flow[:, 1:] + flow[:, :-1]) * jnp.diff(pressure, axis=1) / jnp.diff(columns.y)
-    side = -flow[:, -1:] * pressure[:, -1:] / (columns.edges[-1] - columns.y[-1])
-    flux = jnp.concatenate([jnp.zeros_like(side), flux, side], axis=1)
-    across = (flux[:, 1:] - flux[:, :-1]) / columns.widths
-    first = (mass[1:-1] - mass[:-2]) / spacing
-    second = (3.0 * mass[1:-1] - 4.0 * mass[:-2] + jnp.concatenate([jnp.zeros_like(mass[:1]), mass[:-3]])) / (2 * spacing)
-    wedge = jnp.where((jnp.arange(1, level.nx - 1) >= 2)[:, None], second, first)
-    reynolds = along_x + across[1:-1] - wedge - (mass[1:-1] - old_mass) * inverse_step
-    return jnp.append(reynolds.reshape(-1) * spacing, level.balance(pressure))
+    reynolds = (rolling_terms(pressure, mass, flow, level.spacing) + transverse_terms(pressure, flow, level.columns)[1:-1]
+                - (mass[1:-1] - old_mass) * inverse_step)
+    return jnp.append(reynolds.reshape(-1) * level.spacing, level.balance(pressure))
 
 
 def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity,
