@@ -19,11 +19,10 @@ from ...finite_line_krylov import finite_line_film_krylov, krylov_levels
 from ...kinematics import raceway_entrainment_speed
 from ...line_ehl import check_nodes, density_ratio, line_film
 from ...point_ehl import FEWEST_CELLS, point_film
-from ...starved_point_ehl import MAX_UNKNOWNS as STARVED_POINT_UNKNOWNS
-from ...starved_point_ehl import starved_point_film
 from ...params import BALL_BEARING_KINDS, _as_float, check_range
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
 from ...roller_geometry import ROLLER_KINDS, equivalent_radius, film_length, roller_modulus
+from ...starved_point_ehl import MAX_UNKNOWNS as STARVED_POINT_UNKNOWNS, starved_point_film
 from ..formatting import column, state_column
 from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_checks, quantity, register
 
