@@ -102,12 +102,18 @@ def reynolds_coefficients(pressure, film, fluid: FluidParameters):
     return density, density * film**3 / (viscosity * fluid.speed_parameter)
 
 
+def poiseuille_terms(pressure, flow, spacing):
+    """d/dX(ε dP/dX) [-] at the interior nodes along axis 0 (X, rolling), central with ε averaged
+    onto the faces. Works on a line (N,) or on a grid (nx, ny), column by column."""
+    face = 0.5 * (flow[1:] + flow[:-1])
+    return (face[1:] * (pressure[2:] - pressure[1:-1]) - face[:-1] * (pressure[1:-1] - pressure[:-2])) / spacing**2
+
+
 def rolling_terms(pressure, mass, flow, spacing):
     """d/dX(ε dP/dX) − d(ρ̄H)/dX [-] at the interior nodes along axis 0 (X, rolling): Poiseuille
-    central with ε averaged onto the faces, wedge upwind (second order, first order next to the
-    inlet). Works on a line (N,) or on a grid (nx, ny), column by column."""
-    face = 0.5 * (flow[1:] + flow[:-1])
-    poiseuille = (face[1:] * (pressure[2:] - pressure[1:-1]) - face[:-1] * (pressure[1:-1] - pressure[:-2])) / spacing**2
+    (`poiseuille_terms`), wedge upwind (second order, first order next to the inlet). Works on a
+    line (N,) or on a grid (nx, ny), column by column."""
+    poiseuille = poiseuille_terms(pressure, flow, spacing)
     first_order = (mass[1:-1] - mass[:-2]) / spacing
     second_order = (3.0 * mass[1:-1] - 4.0 * mass[:-2] + jnp.concatenate([jnp.zeros_like(mass[:1]), mass[:-3]])
                     ) / (2 * spacing)

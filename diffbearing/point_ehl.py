@@ -135,10 +135,16 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
     constants = jax.lax.stop_gradient(arguments)
     finest, unknowns = solve_nested(level_at, arguments, levels, lambda level: _hertz_start(level, constants),
                                     tolerance, coarsest_steps=COARSEST_STEPS)
-    reference, hertz_pressure, _, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
+    reference = _scales(load, radius_rolling, radius_transverse, effective_modulus)[0]
     pressure, film, _, error, converged = finest.solution(unknowns, tolerance)
+    return film_result(finest, reference, radius_rolling, pressure, film, converged, error)
+
+
+def film_result(level, reference, radius_rolling, pressure, film, converged, error) -> PointFilm:
+    """The PointFilm [SI] of a solution on `level` (dimensionless P and H (nx, ny)), b_r [m] and
+    Rx [m]: the central film next to y = 0 at x = 0, the minimum and where it is."""
     thickness = film * reference**2 / radius_rolling
     lowest = jnp.argmin(thickness)
-    x, y = finest.columns.x * reference, finest.columns.y * reference
-    return PointFilm(x, y, pressure * hertz_pressure, thickness, thickness[finest.centre, 0],
-                     thickness.reshape(-1)[lowest], x[lowest // finest.ny], y[lowest % finest.ny], converged, error)
+    x, y = level.columns.x * reference, level.columns.y * reference
+    return PointFilm(x, y, pressure * level.columns.fluid.hertz_pressure, thickness, thickness[level.centre, 0],
+                     thickness.reshape(-1)[lowest], x[lowest // level.ny], y[lowest % level.ny], converged, error)

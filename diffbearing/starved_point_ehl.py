@@ -36,11 +36,11 @@ import jax
 import jax.numpy as jnp
 
 from .finite_line_ehl import transverse_terms
-from .line_ehl import reynolds_coefficients, rolling_terms
+from .line_ehl import poiseuille_terms, reynolds_coefficients
 from .newton import implicit_root, newton
 from .numerics import require_float64
 from .params import check_range
-from .point_ehl import PointFilm, point_film, point_level
+from .point_ehl import PointFilm, film_result, point_film, point_level
 
 MARCH_STEP = 0.5  # ΔT [b_r/u] of an implicit pseudo-time step
 MARCH_STEPS = 32  # the march covers 16 b_r/u, the inlet's oil carried well past the contact
@@ -77,30 +77,32 @@ def _fields(unknowns, level, scale):
     return pressure, fill, unknowns[-1]
 
 
-def _mass(pressure, fill, film, level, supply):
+def _mass(density, film, fill, supply):
     """ρ̄Hθ [-] (nx, ny), the inlet row carrying the supply min(H_oil, H)."""
-    density, _ = reynolds_coefficients(pressure, film, level.columns.fluid)
-    mass = density * film * fill
-    return mass.at[0].set(jnp.minimum(supply, film[0]))
+    return (density * film * fill).at[0].set(jnp.minimum(supply, film[0]))
+
+
+def _state(unknowns, level, scale, supply):
+    """(P, film H, ρ̄Hθ, ε) [-] (nx, ny) of the unknowns."""
+    pressure, fill, offset = _fields(unknowns, level, scale)
+    film = level.film(pressure, offset)
+    density, flow = reynolds_coefficients(pressure, film, level.columns.fluid)
+    return pressure, film, _mass(density, film, fill, supply), flow
 
 
 def reynolds_residual(unknowns, level, scale, supply, old_mass, inverse_step):
     """The θ-model's equations [-]: at each interior node the Reynolds residual × ΔX (minus the
     squeeze term (ρ̄Hθ − old)/ΔT, `inverse_step` = 1/ΔT, 0 for the steady equations), then the
     load balance (`finite_line_krylov.UniformLevel.balance`)."""
-    pressure, fill, offset = _fields(unknowns, level, scale)
-    film = level.film(pressure, offset)
-    mass = _mass(pressure, fill, film, level, supply)
-    _, flow = reynolds_coefficients(pressure, film, level.columns.fluid)
+    pressure, _, mass, flow = _state(unknowns, level, scale, supply)
     # the wedge term in flux form, so that mass is conserved: the face after the inlet node first-order
-    # upwind, the others second-order, F_{i+½} = (3m_i − m_{i−1})/2 (`line_ehl.rolling_terms` puts a
-    # second-order face after node 1 but a first-order one before node 2, a source of (m₁ − m₀)/2 that
-    # feeds a starved inlet from nowhere)
+    # upwind, the others second-order, F_{i+½} = (3m_i − m_{i−1})/2 (`line_ehl.rolling_terms`, kept as
+    # it is for the flooded levels, puts a second-order face after node 1 but a first-order one before
+    # node 2, a source of (m₁ − m₀)/2 that feeds a starved inlet from nowhere)
     faces = jnp.concatenate([mass[:2], 0.5 * (3.0 * mass[2:-1] - mass[1:-2])])
     wedge = (faces[1:] - faces[:-1]) / level.spacing
-    poiseuille = rolling_terms(pressure, jnp.zeros_like(mass), flow, level.spacing)
-    reynolds = (poiseuille - wedge + transverse_terms(pressure, flow, level.columns)[1:-1]
-                - (mass[1:-1] - old_mass) * inverse_step)
+    reynolds = (poiseuille_terms(pressure, flow, level.spacing) - wedge
+                + transverse_terms(pressure, flow, level.columns)[1:-1] - (mass[1:-1] - old_mass) * inverse_step)
     return jnp.append(reynolds.reshape(-1) * level.spacing, level.balance(pressure))
 
 
@@ -127,13 +129,13 @@ def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity
     offset = film[0, 0] - fixed.film(pressure, 0.0)[0, 0]
     start = jnp.append((pressure[1:-1] / scale).reshape(-1), offset)
 
-    def solve(level, unknowns, supply, old_mass, inverse_step, steps):
+    def solve(unknowns, supply, old_mass, inverse_step, steps):
         def limit(step):  # at most 0.2 + ½|u| per node and OFFSET_STEP on H₀ (module docstring)
             ratio = jnp.maximum(jnp.max(jnp.abs(step[:-1]) / (0.2 + 0.5 * jnp.abs(unknowns[:-1]))),
                                 jnp.abs(step[-1]) / OFFSET_STEP)
             return step / jnp.maximum(ratio, 1.0)
 
-        return newton(lambda y, _: reynolds_residual(y, level, scale, supply, old_mass, inverse_step), unknowns,
+        return newton(lambda y, _: reynolds_residual(y, fixed, scale, supply, old_mass, inverse_step), unknowns,
                       max_steps=steps, loop="while", limit=limit, fallback=True, floor=0.1 * tolerance)[0]
 
     fixed_supply = jax.lax.stop_gradient(oil_layer * radius_rolling / reference**2)
@@ -143,13 +145,12 @@ def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity
 
     def march(step, unknowns):
         supply = fixed_supply * (ramp_start / fixed_supply) ** jnp.maximum(0.0, 1.0 - step / RAMP_STEPS)
-        pressure, fill, offset = _fields(unknowns, fixed, scale)
-        old_mass = _mass(pressure, fill, fixed.film(pressure, offset), fixed, supply)[1:-1]
-        return solve(fixed, unknowns, supply, old_mass, 1.0 / MARCH_STEP, MARCH_NEWTON)
+        old_mass = _state(unknowns, fixed, scale, supply)[2][1:-1]
+        return solve(unknowns, supply, old_mass, 1.0 / MARCH_STEP, MARCH_NEWTON)
 
     marched = jax.lax.fori_loop(0, MARCH_STEPS, march, start)
     zero = jnp.zeros((fixed.nx - 2, fixed.ny))
-    steady = solve(fixed, marched, fixed_supply, zero, 0.0, STEADY_NEWTON)
+    steady = solve(marched, fixed_supply, zero, 0.0, STEADY_NEWTON)
 
     live, live_reference = point_level(*arguments, grid, viscosity_law, density_law)
 
@@ -160,10 +161,7 @@ def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity
                              lambda _, start, __: start)
     error = jnp.max(jnp.abs(reynolds_residual(steady, fixed, scale, fixed_supply, zero, 0.0)))
     pressure, fill, offset = _fields(unknowns, live, scale)
-    thickness = live.film(pressure, offset) * live_reference**2 / radius_rolling
-    converged = (error <= tolerance) & (jnp.min(jax.lax.stop_gradient(thickness)) > 0)
-    lowest = jnp.argmin(thickness)
-    x, y = live.columns.x * live_reference, live.columns.y * live_reference
-    result = PointFilm(x, y, pressure * live.columns.fluid.hertz_pressure, thickness, thickness[live.centre, 0],
-                       thickness.reshape(-1)[lowest], x[lowest // live.ny], y[lowest % live.ny], converged, error)
-    return StarvedPointFilm(result, fill, jnp.asarray(oil_layer, dtype=float), jax.lax.stop_gradient(flooded.central))
+    starved = live.film(pressure, offset)
+    converged = (error <= tolerance) & (jnp.min(jax.lax.stop_gradient(starved)) > 0)
+    result = film_result(live, live_reference, radius_rolling, pressure, starved, converged, error)
+    return StarvedPointFilm(result, fill, jnp.asarray(oil_layer, dtype=float), flooded.central)
