@@ -123,9 +123,9 @@ class UniformLevel:
         self.coefficients = love_rectangle(jnp.asarray(offsets), jnp.asarray(cells), 0.5 * self.spacing,
                                            0.5 * self.cell) / (2 * np.pi)
 
-    def limit(self, step):
-        """`step` shortened so that no meniscus moves more than a cell (as the dense Newton) and,
-        with `largest_step` = (ΔP, ΔH₀), no pressure and offset more than those."""
+    def limit(self, step, unknowns=None):
+        """`step` (from `unknowns`) shortened so that no meniscus moves more than a cell (as the
+        dense Newton) and, with `largest_step` = (ΔP, ΔH₀), no pressure and offset more than those."""
         ratio = 1.0
         if self.starved:
             ratio = jnp.abs(step[self.interior + 1:]).max() / self.spacing
@@ -213,19 +213,26 @@ class UniformLevel:
     def preconditioner(self, unknowns, stage=None):
         """v ↦ M⁻¹v: the column blocks of J at `unknowns` (of the equations of `stage`), bordered
         by H₀ and the load balance (module docstring)."""
-        nx, ny = self.nx, self.ny
-        rows = nx - 2
-        size = rows + 1 if self.starved else rows  # unknowns of a column: its interior pressures (and meniscus)
         pressure, offset, meniscus = self.unpack(jax.lax.stop_gradient(unknowns))
-        height = self.film(pressure, offset)
         columns = self.staged(stage)
-        held = False if stage is None else stage.held
 
         def local(interior, film, menisci):
             return local_equations(jnp.pad(interior, ((1, 1), (0, 0))), film, menisci, columns)
 
-        _, linear = jax.linearize(local, pressure[1:-1], height, meniscus)
-        zero_p, zero_h, zero_m = jnp.zeros_like(pressure[1:-1]), jnp.zeros_like(height), jnp.zeros_like(meniscus)
+        return self.column_preconditioner(local, pressure[1:-1], self.film(pressure, offset), meniscus,
+                                          jnp.ones_like(pressure[1:-1]), False if stage is None else stage.held)
+
+    def column_preconditioner(self, local, interior, height, meniscus, pressure_slope, held):
+        """v ↦ M⁻¹v (module docstring) of the equations `local(interior, film, meniscus)` → (R, ny)
+        (`local_equations`' rows and reads), the unknowns `interior` (nx − 2, ny) at the interior
+        nodes with ∂P/∂unknown = `pressure_slope` (nx − 2, ny) (1 where they are the pressures),
+        the film `height` (nx, ny), H₀ and the load balance; starved, the menisci (held: their
+        rows X_m − X_m,now)."""
+        nx, ny = self.nx, self.ny
+        rows = nx - 2
+        size = rows + 1 if self.starved else rows  # unknowns of a column: its interior ones (and meniscus)
+        _, linear = jax.linearize(local, interior, height, meniscus)
+        zero_p, zero_h, zero_m = jnp.zeros_like(interior), jnp.zeros_like(height), jnp.zeros_like(meniscus)
         column = jnp.arange(ny)
 
         def colors(count):  # [c] → the tangent on nodes i ≡ c_x (mod BAND) of columns j ≡ c_y (mod 3)
@@ -241,7 +248,7 @@ class UniformLevel:
         node = jnp.arange(nx)
         if self.starved:
             by_meniscus = linear(zero_p, zero_h, jnp.ones_like(meniscus))  # a column's rows read its own meniscus
-            _, pull = jax.vjp(local, pressure[1:-1], height, meniscus)
+            _, pull = jax.vjp(local, interior, height, meniscus)
 
             def meniscus_rows(c):  # cotangent on the meniscus rows of the columns of class c
                 return pull(jnp.zeros((rows + 1, ny)).at[rows].set((column % 3 == c).astype(float)))[:2]
@@ -272,7 +279,8 @@ class UniformLevel:
                     reads = (equation + 1 + d >= 0) & (equation + 1 + d < nx)
                     band = reads * inside * by_height[((equation + 1 + d) % BAND) * 3 + jnp.clip(neighbour, 0, ny - 1) % 3,
                                                       equation, j]
-                    block = block.at[:rows, :rows].add(band[:, None] * elastic(shift, j, equation + 1 + d, target))
+                    block = block.at[:rows, :rows].add(band[:, None] * elastic(shift, j, equation + 1 + d, target)
+                                                       * pressure_slope[None, :, j])
             offset_column = by_offset[:rows, j]
             if self.starved:
                 block = block.at[:rows, rows].set(by_meniscus[:rows, j])
@@ -281,7 +289,8 @@ class UniformLevel:
                     neighbour = j + shift
                     inside = (neighbour >= 0) & (neighbour < ny)
                     sensitivity = meniscus_by_height[j % 3, :, jnp.clip(neighbour, 0, ny - 1)]
-                    meniscus_row = meniscus_row + inside * sensitivity @ elastic(shift, j, node, target)
+                    meniscus_row = meniscus_row + inside * sensitivity @ elastic(shift, j, node, target) \
+                        * pressure_slope[:, j]
                 # held, the meniscus row is X_m − X_m,now
                 unit = jnp.zeros(size).at[rows].set(1.0)
                 block = block.at[rows].set(jnp.where(held, unit, jnp.append(meniscus_row, by_meniscus[rows, j])))
@@ -291,7 +300,7 @@ class UniformLevel:
 
         inverse, offset_response = jax.lax.map(column_block, column, batch_size=COLUMN_BATCH)
         balance_row = jnp.zeros((ny, size)).at[:, :rows].set(
-            (2.0 * self.spacing * self.columns.widths / self.load_target * 0.5 * np.pi)[:, None])
+            (2.0 * self.spacing * self.columns.widths / self.load_target * 0.5 * np.pi)[:, None] * pressure_slope.T)
         schur = jnp.sum(balance_row * offset_response)
 
         def to_columns(vector):

@@ -50,7 +50,8 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         max_steps: the most Newton steps.
         restart, linear_steps: GMRES's Krylov dimension and its most restarts per step.
         shortest: the shortest step length the backtracking tries.
-        limit: d → d shortened (e.g. a largest change per unknown), applied to every step.
+        limit: (d, y) → d shortened (e.g. a largest change per unknown), applied to every step d
+            from y.
         loosest: the largest forcing term η_k (the loosest relative tolerance of a linear solve).
         scale: y → s > 0 of F's shape, the size of each equation (None: 1): the stopping test and
             the merit ½‖F/s‖² of the backtracking read F/s, s taken at each step's start point
@@ -77,7 +78,7 @@ def newton_krylov(function, y0, args, preconditioner_at, *, tolerance: float, ma
         direction = gmres(linear, -residual, preconditioner_at(y, args), forcing, restart=restart,
                           max_steps=linear_steps)
         if limit is not None:
-            direction = limit(direction)
+            direction = limit(direction, y)
         slope = jnp.vdot(residual / size, linear(direction) / size)  # d(½‖F/s‖²) along the step taken
 
         def shorter(search):

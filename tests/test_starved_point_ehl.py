@@ -38,7 +38,7 @@ def coarse_flooded():
     return _flooded_central(COARSE)
 
 
-@pytest.mark.parametrize("layer, grid, match", [(-1e-6, COARSE, "oil_layer"), (1e-6, (129, 64), "grid")])
+@pytest.mark.parametrize("layer, grid, match", [(-1e-6, COARSE, "oil_layer"), (1e-6, (33, 4), "grid")])
 def test_bad_input_names_the_parameter(layer, grid, match):
     with pytest.raises(ValueError, match=match):
         _starved(LOAD, layer, grid)
@@ -52,7 +52,6 @@ def test_a_layer_that_fills_the_inlet_is_the_flooded_film(coarse_flooded):
     solved = jax.jit(lambda layer: _starved(LOAD, layer, COARSE))(150e-6)
     assert bool(solved.film.converged)
     assert float(solved.film.central) == pytest.approx(coarse_flooded, rel=1e-3)
-    assert float(solved.flooded_central) == pytest.approx(coarse_flooded, rel=1e-12)
 
 
 @pytest.mark.slow  # about 65 s (2 cores)
@@ -86,13 +85,13 @@ def test_severe_starvation_says_whether_it_converged_and_stays_finite(coarse_flo
     assert bool(jnp.all(jnp.isfinite(values))) and bool(jnp.all(jnp.isfinite(slopes)))
 
 
-@pytest.mark.slow  # about 8 minutes (2 cores): two solves on 65 × 32
+@pytest.mark.slow  # about a minute (2 cores): two solves on 129 × 64
 def test_starvation_follows_chevalier():
-    """On 65 × 32 the starved central film over the flooded one at layers of 1 and ½ flooded central
-    films: 0.703 and 0.399 (measured), against Chevalier, Lubrecht, Cann, Colin & Dalmaz (1998)
-    h/h_ff = r/(1 + r^γ)^{1/γ}, r = h_oil/(ρ̄ h_ff), γ = 2.5, ρ̄ at p₀ = 1.07 GPa: 0.675 and 0.391,
-    within 5 %."""
-    grid = (65, 32)
+    """On 129 × 64 (marched on 65 × 32, then the nested iteration) the starved central film over the
+    flooded one at layers of 1 and ½ flooded central films: 0.702 and 0.398 (measured), against
+    Chevalier, Lubrecht, Cann, Colin & Dalmaz (1998) h/h_ff = r/(1 + r^γ)^{1/γ}, r = h_oil/(ρ̄ h_ff),
+    γ = 2.5, ρ̄ at p₀ = 1.07 GPa: 0.675 and 0.391, within 5 %."""
+    grid = (129, 64)
     flooded = _flooded_central(grid)
     solve = jax.jit(lambda layer: _starved(LOAD, layer, grid))
     density = float(density_ratio(1.07e9))
@@ -129,6 +128,7 @@ def test_a_ball_scene_starved_by_a_thick_layer_is_flooded(capsys, tmp_path):
 
 
 def test_a_ball_scene_names_the_grid_the_starved_solver_cannot_take(capsys):
-    code = cli.main(["run", example_scene("deep_groove_6411"), *SCENE_ARGUMENTS, "--set", 'operating.oil_layer="1 um"'])
+    code = cli.main(["run", example_scene("deep_groove_6411"), *SCENE_ARGUMENTS, "--set", 'operating.oil_layer="1 um"',
+                     "--set", "fidelity.grid=[33, 8]"])
     err = capsys.readouterr().err
     assert code == 2 and "fidelity.grid" in err and len(err.strip().splitlines()) == 1

@@ -22,7 +22,7 @@ from ...point_ehl import FEWEST_CELLS, point_film
 from ...params import BALL_BEARING_KINDS, _as_float, check_range
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
 from ...roller_geometry import ROLLER_KINDS, equivalent_radius, film_length, roller_modulus
-from ...starved_point_ehl import MAX_UNKNOWNS as STARVED_POINT_UNKNOWNS, starved_point_film
+from ...starved_point_ehl import march_grid, starved_point_film
 from ..formatting import column, state_column
 from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_checks, quantity, register
 
@@ -154,15 +154,6 @@ def _film_point(inputs: dict, settings: dict, results: dict) -> dict:
             out[f"film.{side}.film_parameter"] = film_formulas.film_parameter(out[f"film.{side}.minimum"],
                                                                               inputs["roughness"])
     return out
-
-
-def _starved_point_settings(settings: dict, inputs: dict) -> None:
-    """ValueError naming fidelity.grid where the starved point contact's dense Newton cannot take it."""
-    nx, half = point_grid(settings)
-    if (nx - 2) * half > STARVED_POINT_UNKNOWNS:
-        raise ValueError(f"fidelity.grid = [nx, ny] with effects.starvation and effects.film = \"point\": the starved "
-                         f"point contact's dense Newton takes (nx − 2)·⌈ny/2⌉ ≤ {STARVED_POINT_UNKNOWNS}, e.g. [65, 64]; "
-                         f"got {[nx, 2 * half]}")
 
 
 def _starvation_point(inputs: dict, settings: dict, results: dict) -> dict:
@@ -477,7 +468,9 @@ def _report(result) -> list[str]:
                  f"{len(values[f'film.{side}.y'])} half-domain grid): "
                  + ("converged" if bool(values[f"film.{side}.converged"]) else
                     "DID NOT CONVERGE (values are the last iterate)") for side in ("inner", "outer")]
-        return lines + [f"  starved point contact EHL ({side}, θ-model, pseudo-time march then Newton): "
+        marched = march_grid(point_grid(result.model.settings))
+        return lines + [f"  starved point contact EHL ({side}, θ-model, Newton–Krylov: a pseudo-time march on "
+                        f"{marched[0]} × {marched[1]}, then grid by grid): "
                         + ("converged" if bool(values[f"starvation.{side}.converged"]) else
                            "DID NOT CONVERGE (values are the last iterate)")
                         for side in ("inner", "outer") if f"starvation.{side}.converged" in values]
@@ -543,7 +536,7 @@ ADAPTER = register(Adapter(
               inputs=("bearing", "operating", "lubricant", "oil_layer"),
               outputs=(Output("starvation.oil_layer", "m", "um", "inlet oil supply layer h_oil"),
                        *_starved_point_outputs("inner"), *_starved_point_outputs("outer")),
-              compute=_starvation_point, validate=_starved_point_settings, plot=_starved_point_plot,
+              compute=_starvation_point, validate=_point_settings, plot=_starved_point_plot,
               checks=convergence_checks(("starvation.inner.converged", "the starved point contact EHL (inner raceway)"),
                                         ("starvation.outer.converged", "the starved point contact EHL (outer raceway)"))),
         Block(name="film_formula", bearing_types=ROLLER_KINDS, enabled_by=("film", "formula"),
