@@ -410,6 +410,35 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
     return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns))
 
 
+def line_scales(load, radius, effective_modulus, flat_length):
+    """The Hertz half-width b [m] and pressure p_h [Pa] of a roller under `load` [N] on its flat
+    length [m] (the reference length and pressure of the finite line contact's equations)."""
+    hertz_contact = line_contact(load / flat_length, radius, effective_modulus)
+    return hertz_contact.half_width, hertz_contact.max_pressure
+
+
+def line_level(viscosity_law, density_law, side_inflow, starved):
+    """level_at(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile,
+    length, flat_length, oil_layer) → a function (nx, ny) → the UniformLevel of the roller's case
+    (starved: the oil layer as its supply H_oil; else flooded)."""
+
+    def level_at(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length, flat_length,
+                 oil_layer):
+        half_width, hertz_pressure = line_scales(load, radius, effective_modulus, flat_length)
+        speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
+        fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law,
+                                density_law)
+        supply = oil_layer * radius / half_width**2 if starved else None
+
+        def rigid_axial(y):
+            return crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
+
+        return lambda nx, ny: UniformLevel(nx, ny, 0.5 * length / half_width, rigid_axial, fluid, supply, side_inflow,
+                                           0.5 * np.pi * flat_length / half_width)
+
+    return level_at
+
+
 def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, effective_modulus,
                             profile: RollerProfile, length, flat_length, grid=(129, 129), viscosity_law="roelands",
                             density_law="dowson_higginson", tolerance=1e-10, oil_layer=None,
@@ -438,36 +467,18 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
                               density_law=density_law, tolerance=tolerance, oil_layer=fixed(oil_layer),
                               axial_clustering=0.0, side_inflow=side_inflow)
 
-    def scales(load, radius, effective_modulus, flat_length):
-        """The Hertz half-width b [m] and pressure p_h [Pa] under the load per flat length."""
-        hertz_contact = line_contact(load / flat_length, radius, effective_modulus)
-        return hertz_contact.half_width, hertz_contact.max_pressure
-
-    def level_at(load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length, flat_length,
-                 oil_layer):
-        """(nx, ny) → UniformLevel of the case."""
-        half_width, hertz_pressure = scales(load, radius, effective_modulus, flat_length)
-        speed_parameter = 12.0 * viscosity * speed * radius**2 / (half_width**3 * hertz_pressure)
-        fluid = FluidParameters(speed_parameter, hertz_pressure, viscosity, pressure_viscosity, viscosity_law,
-                                density_law)
-        supply = oil_layer * radius / half_width**2 if starved else None
-
-        def rigid_axial(y):
-            return crown_drop(profile, y * half_width, length, effective_modulus, radius) * radius / half_width**2
-
-        return lambda nx, ny: UniformLevel(nx, ny, 0.5 * length / half_width, rigid_axial, fluid, supply, side_inflow,
-                                           0.5 * np.pi * flat_length / half_width)
+    level_at = line_level(viscosity_law, density_law, side_inflow, starved)
 
     def from_dense(coarsest):
         """The dense Newton's coarse solution as the unknowns of the coarsest level."""
-        half_width, hertz_pressure = scales(*fixed((load, radius, effective_modulus, flat_length)))
+        half_width, hertz_pressure = line_scales(*fixed((load, radius, effective_modulus, flat_length)))
         pressure = coarse.pressure / hertz_pressure
         offset = coarse.central * radius / half_width**2 - coarsest.film(pressure, 0.0)[coarsest.centre, 0]
         unknowns = jnp.append(pressure[1:-1].reshape(-1), offset)
         return jnp.concatenate([unknowns, coarse.meniscus / half_width]) if starved else unknowns
 
     finest, unknowns = solve_nested(level_at, arguments, levels, from_dense, tolerance)
-    half_width, hertz_pressure = scales(load, radius, effective_modulus, flat_length)
+    half_width, hertz_pressure = line_scales(load, radius, effective_modulus, flat_length)
     pressure, film, meniscus, error, converged = finest.solution(unknowns, tolerance)
     thickness = film * half_width**2 / radius
     lowest = jnp.argmin(thickness)

@@ -60,7 +60,7 @@ class PointFilm(eqx.Module):
     residual: jax.Array
 
 
-def _scales(load, radius_rolling, radius_transverse, effective_modulus):
+def hertz_scales(load, radius_rolling, radius_transverse, effective_modulus):
     """(b_r [m], p₀ [Pa], a/b_r, b/b_r): the reference length, the Hertz pressure and semi-axes."""
     curvature_sum = 1.0 / radius_rolling + 1.0 / radius_transverse
     contact = point_contact(load, curvature_sum, (1.0 / radius_rolling - 1.0 / radius_transverse) / curvature_sum,
@@ -75,7 +75,7 @@ def _hertz_start(level, constants):
     to the discrete load) and the offset H₀ that puts the Hamrock–Dowson central film at the
     centre."""
     load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus = constants
-    reference, _, major, minor = _scales(load, radius_rolling, radius_transverse, effective_modulus)
+    reference, _, major, minor = hertz_scales(load, radius_rolling, radius_transverse, effective_modulus)
     x, y = level.columns.x[:, None], level.columns.y[None, :]
     hertz = jnp.sqrt(jnp.clip(1.0 - (x / minor) ** 2 - (y / major) ** 2, 0.0, None))
     hertz = hertz * level.load_target / (2.0 * level.spacing * jnp.sum(hertz * level.columns.widths))
@@ -89,7 +89,7 @@ def point_level(load, radius_rolling, radius_transverse, speed, viscosity, press
                 grid, viscosity_law="roelands", density_law="dowson_higginson"):
     """(UniformLevel of the case on `grid` = (nx, ny), its reference length b_r [m]): the grid,
     rigid gap, fluid and load of the dimensionless equations (module docstring)."""
-    reference, hertz_pressure, major, _ = _scales(load, radius_rolling, radius_transverse, effective_modulus)
+    reference, hertz_pressure, major, _ = hertz_scales(load, radius_rolling, radius_transverse, effective_modulus)
     fluid = FluidParameters(12.0 * viscosity * speed * radius_rolling**2 / (reference**3 * hertz_pressure),
                             hertz_pressure, viscosity, pressure_viscosity, viscosity_law, density_law)
 
@@ -135,7 +135,7 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
     constants = jax.lax.stop_gradient(arguments)
     finest, unknowns = solve_nested(level_at, arguments, levels, lambda level: _hertz_start(level, constants),
                                     tolerance, coarsest_steps=COARSEST_STEPS)
-    reference = _scales(load, radius_rolling, radius_transverse, effective_modulus)[0]
+    reference = hertz_scales(load, radius_rolling, radius_transverse, effective_modulus)[0]
     pressure, film, _, error, converged = finest.solution(unknowns, tolerance)
     return film_result(finest, reference, radius_rolling, pressure, film, converged, error)
 

@@ -22,6 +22,7 @@ from ...point_ehl import FEWEST_CELLS, point_film
 from ...params import BALL_BEARING_KINDS, _as_float, check_range
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
 from ...roller_geometry import ROLLER_KINDS, equivalent_radius, film_length, roller_modulus
+from ...starved_finite_line import starved_finite_line_film
 from ...starved_point_ehl import march_grid, starved_point_film
 from ..formatting import column, state_column
 from ..registry import Adapter, Block, InputBuilder, Key, Output, convergence_checks, quantity, register
@@ -280,6 +281,20 @@ def _finite_line_settings(settings: dict, inputs: dict) -> None:
     finite_line_settings(settings)
 
 
+def _starvation_model(settings: dict) -> str:
+    """fidelity.starvation_model of the starved finite line contact (default "meniscus"); ValueError
+    naming it where "theta" meets the dense solver (the θ-model runs on Newton–Krylov's uniform grids)."""
+    model = settings["fidelity"].get("starvation_model", "meniscus")
+    if model == "theta" and finite_line_settings(settings)[1] == "dense":
+        raise ValueError("fidelity.starvation_model = \"theta\" runs on Newton–Krylov's uniform grids: set "
+                         "fidelity.solver = \"krylov\" (and a fidelity.grid it takes, e.g. [129, 257])")
+    return model
+
+
+def _starved_finite_line_settings(settings: dict, inputs: dict) -> None:
+    _starvation_model(settings)
+
+
 def _line_nodes(settings: dict) -> int:
     """Nodes of the line EHL level: fidelity.grid[0], default 513."""
     return settings["fidelity"].get("grid", [DEFAULT_LINE_NODES])[0]
@@ -332,10 +347,13 @@ def _finite_line(inputs: dict, settings: dict, oil_layer=None):
     bearing, lubricant = inputs["bearing"], inputs["lubricant"]
     _, radius, speed, viscosity, pressure_viscosity, modulus = _roller_film_case(inputs)
     grid, solver = finite_line_settings(settings)
+    case = (inputs["operating"].load, radius, speed, viscosity, pressure_viscosity, modulus, bearing.profile,
+            bearing.length, film_length(bearing))
+    laws = dict(viscosity_law=lubricant.viscosity_law, density_law=lubricant.density_law)
+    if oil_layer is not None and _starvation_model(settings) == "theta":
+        return starved_finite_line_film(*case, oil_layer, grid=grid, **laws)
     solve = finite_line_film if solver == "dense" else finite_line_film_krylov
-    return solve(inputs["operating"].load, radius, speed, viscosity, pressure_viscosity, modulus, bearing.profile,
-                 bearing.length, film_length(bearing), grid=grid, viscosity_law=lubricant.viscosity_law,
-                 density_law=lubricant.density_law, oil_layer=oil_layer)
+    return solve(*case, grid=grid, oil_layer=oil_layer, **laws)
 
 
 _FINITE_LINE_FIELDS = ("central", "minimum", "minimum_position", "converged", "x", "y", "pressure", "thickness")
@@ -478,7 +496,8 @@ def _report(result) -> list[str]:
         grid, chosen = finite_line_settings(result.model.settings)
         solver = "Newton–Krylov" if chosen == "krylov" and len(krylov_levels(grid)) > 1 else "Newton"
         level, grid = "finite line EHL", f"{solver}, {len(values['film.x'])} × {len(values['film.y'])} half-domain grid"
-        meniscus = "a meniscus per y cell by mass balance"
+        meniscus = ("the mass-conserving θ-model" if _starvation_model(result.model.settings) == "theta"
+                    else "a meniscus per y cell by mass balance")
     else:
         level, grid, meniscus = "line EHL", f"Newton, {len(values.get('film.x', ()))} nodes", "meniscus by flux balance"
     lines = []
@@ -519,6 +538,9 @@ ADAPTER = register(Adapter(
                                read_by=("film_finite_line", "starvation_finite_line"),
                                doc="finite line EHL: dense Newton (clustered cells) or matrix-free Newton–Krylov "
                                    "(uniform cells); default dense where the grid fits it"),
+        "fidelity.starvation_model": Key("choice", choices=("meniscus", "theta"), read_by=("starvation_finite_line",),
+                                         doc="starved finite line EHL: a meniscus per y cell (default) or the "
+                                             "mass-conserving θ-model (Newton–Krylov only)"),
     },
     inputs=(InputBuilder(("oil_layer",), ROLLER_KINDS + BALL_BEARING_KINDS, _oil_layer),),
     blocks=(
@@ -583,7 +605,7 @@ ADAPTER = register(Adapter(
                          in_report=False),
                   *_finite_line_outputs("starvation", "starved"),
               ),
-              compute=_starvation_finite_line, plot=_finite_line_film_plot,
+              compute=_starvation_finite_line, validate=_starved_finite_line_settings, plot=_finite_line_film_plot,
               checks=convergence_checks(("starvation.converged", "the finite line EHL Newton (starved film)"))),
     ),
     report=_report,
