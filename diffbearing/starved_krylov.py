@@ -50,7 +50,6 @@ STEADY_NEWTON = 80  # Newton–Krylov steps of the steady equations after the ma
 OFFSET_STEP = 0.06  # the largest change of H₀ per Newton step (as `point_ehl.LARGEST_STEP`)
 
 
-
 class MarchStage(eqx.Module):
     """The equations of one pseudo-time step (the `args` of `StarvedLevel.residual`): the squeeze
     term (ρ̄Hθ − `old_mass`)/ΔT with `inverse_step` = 1/ΔT."""

@@ -63,7 +63,6 @@ def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity
                                        effective_modulus, grid, viscosity_law, density_law)
         return StarvedLevel(level, oil_layer * radius_rolling / reference**2)
 
-
     flooded = point_film(*constants[:-1], grid=marching, viscosity_law=viscosity_law, density_law=density_law)
     reference, hertz_pressure, _, _ = hertz_scales(*constants[:3], constants[6])
     live, unknowns = solve_starved(level_at, arguments, levels, marching, flooded.pressure / hertz_pressure,
