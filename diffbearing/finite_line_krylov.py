@@ -478,11 +478,18 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
         return jnp.concatenate([unknowns, coarse.meniscus / half_width]) if starved else unknowns
 
     finest, unknowns = solve_nested(level_at, arguments, levels, from_dense, tolerance)
-    half_width, hertz_pressure = line_scales(load, radius, effective_modulus, flat_length)
     pressure, film, meniscus, error, converged = finest.solution(unknowns, tolerance)
-    thickness = film * half_width**2 / radius
+    return line_film_result(finest, (load, radius, effective_modulus, flat_length), pressure, film, converged, error,
+                            meniscus)
+
+
+def line_film_result(level, case, pressure, film, converged, error, meniscus) -> FiniteLineFilm:
+    """The FiniteLineFilm [SI] of a solution on `level`: dimensionless P, H (nx, ny) and menisci X_m
+    (ny), `case` = (load [N], radius [m], E' [Pa], flat length [m])."""
+    half_width, hertz_pressure = line_scales(*case)
+    thickness = film * half_width**2 / case[1]
     lowest = jnp.argmin(thickness)
-    y = finest.columns.y
-    return FiniteLineFilm(finest.columns.x * half_width, y * half_width, pressure * hertz_pressure, thickness,
-                          thickness[finest.centre, 0], thickness.reshape(-1)[lowest], y[lowest % finest.ny] * half_width,
+    y = level.columns.y
+    return FiniteLineFilm(level.columns.x * half_width, y * half_width, pressure * hertz_pressure, thickness,
+                          thickness[level.centre, 0], thickness.reshape(-1)[lowest], y[lowest % level.ny] * half_width,
                           converged, error, meniscus * half_width)

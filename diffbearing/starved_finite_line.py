@@ -8,8 +8,8 @@ them, is counted; no meniscus per y cell (the model of `finite_line_ehl` and `fi
 whose `side_inflow` approximates that side flow). The starved-EHL paper itself solves a θ-model
 (docs/validation/lubricant_film.md).
 
-Solver (`starved_krylov.solve_starved`): the pseudo-time march on the nested grid of at most
-MARCH_NODES nodes along rolling from `finite_line_film_krylov`'s flooded film there, then
+Solver (`starved_krylov.solve_starved`): the pseudo-time march on the nested grid of
+`march_level` from `finite_line_film_krylov`'s flooded film there, then
 Newton–Krylov grid by grid to the finest. Converged: max|F/s| ≤ `tolerance` on the finest grid and
 a positive film there (a coarse march grid may close the film at the roller end, h < 0, and not
 converge; the finer grids are solved from it all the same).
@@ -19,13 +19,12 @@ import jax
 import jax.numpy as jnp
 
 from .finite_line_ehl import FiniteLineFilm
-from .finite_line_krylov import COARSEST_CELLS, finite_line_film_krylov, krylov_levels, line_level, line_scales
+from .finite_line_krylov import (COARSEST_CELLS, finite_line_film_krylov, krylov_levels, line_film_result, line_level,
+                                 line_scales)
 from .numerics import require_float64
 from .params import check_range
 from .roller_profile import RollerProfile
-from .starved_krylov import StarvedLevel, solve_starved
-
-MARCH_NODES = 65  # the march runs on the nested grid of at most this many nodes along rolling
+from .starved_krylov import StarvedLevel, march_level, solve_starved
 
 
 def starved_finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effective_modulus,
@@ -39,7 +38,7 @@ def starved_finite_line_film(load, radius, speed, viscosity, pressure_viscosity,
     require_float64()
     check_range("oil_layer", oil_layer, low=0.0, unit=" m", why="the inlet oil layer")
     levels = krylov_levels(grid, COARSEST_CELLS)
-    marching = [level for level in levels if level[0] <= MARCH_NODES][-1]
+    marching = march_level(levels)
     arguments = (load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length, flat_length,
                  oil_layer)
     constants = jax.lax.stop_gradient(arguments)
@@ -55,12 +54,7 @@ def starved_finite_line_film(load, radius, speed, viscosity, pressure_viscosity,
     half_width, hertz_pressure = line_scales(constants[0], constants[1], constants[5], constants[8])
     live, unknowns = solve_starved(level_at, arguments, levels, marching, flooded.pressure / hertz_pressure,
                                    flooded.thickness * constants[1] / half_width**2, tolerance)
-    half_width, hertz_pressure = line_scales(load, radius, effective_modulus, flat_length)
     pressure, film, _, error, converged = live.solution(unknowns, tolerance)
-    thickness = film * half_width**2 / radius
-    lowest = jnp.argmin(thickness)
-    x, y = live.columns.x * half_width, live.columns.y * half_width
     full = live.fields(jax.lax.stop_gradient(unknowns))[1][1:] >= 1.0
-    meniscus = x[1 + jnp.argmax(full, axis=0)]
-    return FiniteLineFilm(x, y, pressure * hertz_pressure, thickness, thickness[live.centre, 0],
-                          thickness.reshape(-1)[lowest], y[lowest % live.ny], converged, error, meniscus)
+    return line_film_result(live, (load, radius, effective_modulus, flat_length), pressure, film, converged, error,
+                            live.columns.x[1 + jnp.argmax(full, axis=0)])

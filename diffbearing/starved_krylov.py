@@ -21,7 +21,7 @@ Solver (`solve_starved`): Newton–Krylov (`newton_krylov`, the column-block pre
 `UniformLevel.column_preconditioner` with ∂P/∂u = c where u > 0; each step at most 0.2 + ½|u|
 per node and OFFSET_STEP on H₀). Newton from the flooded solution with the supply at the layer
 stalls where many nodes switch at once (docs/validation/lubricant_film.md §The starved point
-contact); so on a march grid (about 65 nodes along rolling) the solution is reached by pseudo-time
+contact); so on a march grid (`march_level`) the solution is reached by pseudo-time
 continuation: from the flooded film with its inlet emptied to the layer (a partial film
 θ = H_oil/ρ̄H where the flooded film holds more oil and its pressure is below EMPTIED_PRESSURE;
 otherwise that oil must drain through the sides of the domain, slowly for an elongated contact),
@@ -47,6 +47,7 @@ MARCH_STEPS = 32  # the march covers 16 b_r/u, the inlet's oil carried well past
 EMPTIED_PRESSURE = 0.05  # [p₀] the march starts with the inlet emptied to the layer below this pressure
 MARCH_NEWTON = 30  # Newton–Krylov steps per pseudo-time step
 STEADY_NEWTON = 80  # Newton–Krylov steps of the steady equations after the march
+MARCH_NODES = 65  # the march runs on the nested grid of at most this many nodes along rolling
 OFFSET_STEP = 0.06  # the largest change of H₀ per Newton step (as `point_ehl.LARGEST_STEP`)
 
 
@@ -151,6 +152,12 @@ def interpolate_fill(unknowns, coarse: StarvedLevel, fine: StarvedLevel):
     pressure, fill = bilinear(pressure), bilinear(fill)
     switch = jnp.where(pressure > 0, pressure / fine.scale, jnp.minimum(fill - 1.0, 0.0))
     return jnp.append(switch.reshape(-1), offset)
+
+
+def march_level(levels) -> tuple[int, int]:
+    """(nx, ny) of the nested grids `levels` (coarsest first) that the march runs on: the finest
+    with at most MARCH_NODES nodes along rolling."""
+    return [level for level in levels if level[0] <= MARCH_NODES][-1]
 
 
 def solve_starved(level_at, arguments, levels, marching, flooded_pressure, flooded_film, tolerance):

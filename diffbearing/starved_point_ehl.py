@@ -6,8 +6,8 @@ The flooded point contact (`point_ehl`) with the inlet supplied by an oil layer 
 Colin & Dalmaz, J. Tribol. 120, 1998) on `point_ehl`'s grid and units: a layer thicker than the
 inlet gap gives `point_film`'s film within 0.1 %.
 
-Solver (`starved_krylov.solve_starved`): the pseudo-time march on the nested grid of at most
-MARCH_NODES nodes along rolling (`march_grid`) from `point_film`'s flooded film there, then
+Solver (`starved_krylov.solve_starved`): the pseudo-time march on the nested grid of `march_grid`
+from `point_film`'s flooded film there, then
 Newton–Krylov grid by grid to the finest. Converged: max|F/s| ≤ `tolerance` on the finest grid
 and a positive film there. Where the march does not reach the steady film (the circle's thinnest
 layers on 33 × 16; a κ ≈ 9 contact at a layer of twice its flooded film, whose meniscus lies far
@@ -22,10 +22,7 @@ from .finite_line_krylov import krylov_levels
 from .numerics import require_float64
 from .params import check_range
 from .point_ehl import FEWEST_CELLS, PointFilm, film_result, hertz_scales, point_film, point_level
-from .starved_krylov import StarvedLevel, solve_starved
-
-MARCH_NODES = 65  # the march runs on the nested grid of at most this many nodes along rolling
-
+from .starved_krylov import StarvedLevel, march_level, solve_starved
 
 class StarvedPointFilm(eqx.Module):
     """`film`: the solution [SI] on the half domain y ≥ 0 (`point_ehl.PointFilm`); the oil fill θ
@@ -37,9 +34,8 @@ class StarvedPointFilm(eqx.Module):
 
 
 def march_grid(grid) -> tuple[int, int]:
-    """(nx, ny) of the nested grid (`finite_line_krylov.krylov_levels`) of `grid` that the march
-    runs on: the finest with at most MARCH_NODES nodes along rolling."""
-    return [level for level in krylov_levels(grid, FEWEST_CELLS) if level[0] <= MARCH_NODES][-1]
+    """(nx, ny) of the nested grid of `grid` that the march runs on (`starved_krylov.march_level`)."""
+    return march_level(krylov_levels(grid, FEWEST_CELLS))
 
 
 def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity,
