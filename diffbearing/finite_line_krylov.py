@@ -30,8 +30,12 @@ at 1607 N from 33 × 65 to 65 × 65: the inlet is resolved anew), and a Newton s
 every meniscus at once stalls on near-singular modes of single columns' menisci (singular values
 of 1e-5 where it stalled at 1607 N on 65 × 65, 3e-2 at the 1028 N solution); so the supply is
 continued from the one the held solution carries to the oil layer's, in stages of ln H_oil that
-double when a stage converges and halve when it does not (`Stage.supply_factor`). The coarsest
-starved grid keeps 64 cells or more along the half roller (`STARVED_COARSEST_CELLS`).
+double when a stage converges and halve when it does not (`Stage.supply_factor`).
+
+The coarsest grid keeps 64 cells or more along the half roller (`COARSEST_CELLS`), flooded and
+starved: on 33 × 33 the dense Newton ends with h < 0 at the roller end (starved, 0.8 µm, 1028 N;
+flooded at 1607 N), and with the paper's raceway edge (crown radius 9.09 mm) at 2471 N it does
+not converge, so that no finer grid does either; from 33 × 65 all converge.
 
 Derivatives: implicit, through the finest solution (`newton_krylov.krylov_root`), the tangent
 systems solved by the same preconditioned GMRES.
@@ -53,8 +57,7 @@ from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
 COARSEST_NODES = 33  # nodes along rolling of the coarsest (dense) grid
-COARSEST_CELLS = 32  # fewest cells on the half roller of a coarser grid: fewer put h < 0 at the roller end
-STARVED_COARSEST_CELLS = 64  # starved: 33 × 33 solves with h < 0 at the roller end (0.8 µm, 1028 N), 33 × 65 not
+COARSEST_CELLS = 64  # fewest cells on the half roller of a coarser grid (module docstring)
 NEWTON_STEPS = 80  # Newton–Krylov steps per level: 257 × 257 flooded at 1028 N takes 50 (docs/benchmarks.md)
 HELD_MENISCUS_STEPS = 15  # starved levels: Newton–Krylov steps on the pressure and H₀ before the menisci move
 SUPPLY_STAGE_STEPS = 20  # Newton–Krylov steps of one stage of the supply continuation
@@ -453,7 +456,7 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
     finest grid (at most NEWTON_STEPS per level)."""
     require_float64()
     starved = oil_layer is not None
-    levels = krylov_levels(grid, STARVED_COARSEST_CELLS if starved else COARSEST_CELLS)
+    levels = krylov_levels(grid)
     if not 0.0 <= side_inflow <= 1.0:
         raise ValueError(f"side_inflow: the fraction of the side inflow in the meniscus balance, in [0, 1], "
                          f"got {side_inflow}")

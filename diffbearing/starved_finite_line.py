@@ -19,8 +19,7 @@ import jax
 import jax.numpy as jnp
 
 from .finite_line_ehl import FiniteLineFilm
-from .finite_line_krylov import (COARSEST_CELLS, finite_line_film_krylov, krylov_levels, line_film_result, line_level,
-                                 line_scales)
+from .finite_line_krylov import finite_line_film_krylov, krylov_levels, line_film_result, line_level, line_scales
 from .numerics import require_float64
 from .params import check_range
 from .roller_profile import RollerProfile
@@ -37,7 +36,7 @@ def starved_finite_line_film(load, radius, speed, viscosity, pressure_viscosity,
     `meniscus` is, per y cell, the first node from the inlet where the film is full (θ = 1)."""
     require_float64()
     check_range("oil_layer", oil_layer, low=0.0, unit=" m", why="the inlet oil layer")
-    levels = krylov_levels(grid, COARSEST_CELLS)
+    levels = krylov_levels(grid)
     marching = march_level(levels)
     arguments = (load, radius, speed, viscosity, pressure_viscosity, effective_modulus, profile, length, flat_length,
                  oil_layer)
