@@ -1,45 +1,136 @@
-"""The starved-EHL paper's roller starved by 0.8 µm, by the θ-model (`starved_finite_line_film`).
+"""The starved-EHL paper's roller at its own grid, fully flooded and starved by 0.8 µm (the θ-model).
 
-    python benchmarks/starved_finite_line.py [--grid 257] [--loads 1028 1607 2471]
+    python benchmarks/starved_finite_line.py [--grids 65 129 257] [--loads 1028 1607 2471]
 
-The roller of `benchmarks/line_ehl.py` on grid × grid (half domain; 257 is the paper's 257 × 513),
-one process, 2 cores: each load compiled and run once (the wall time of the whole solve, the flooded
-start and the march included), the process's peak resident memory at the end. Prints a Markdown table.
+The roller of the public scene `diffbearing/scenes/starved_roller.toml` (seed 003: crown radius
+10 mm with the raceway's 100 mm edge radius, `with_raceway_edge`; lubricant and speed as
+`benchmarks/line_ehl.py`) on grid × grid (half domain; 257 is the paper's 257 × 513). Each solve,
+flooded (`finite_line_film_krylov`) and starved (`starved_finite_line_film`), runs in its own process
+on the machine's cores: compile time, run time, and the peak resident memory of compiling and of
+running apart (the high-water mark is reset between them through /proc/self/clear_refs). Then the
+grid study: central and roller-end minimum films against grid with the observed order (Richardson,
+the three finest grids, where all three converged). Prints Markdown tables.
 """
 
 import argparse
+import ctypes
+import json
+import math
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import jax
 
 jax.config.update("jax_enable_x64", True)
 
 from line_ehl import FLAT_LENGTH, LUBRICANT, RADIUS, SPEED  # noqa: E402
-from timing import machine, peak_rss_mib  # noqa: E402
+from timing import machine  # noqa: E402
 
-from diffbearing.roller_profile import roller_profile  # noqa: E402
+from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
+from diffbearing.roller_profile import roller_profile, with_raceway_edge  # noqa: E402
 from diffbearing.starved_finite_line import starved_finite_line_film  # noqa: E402
 
 LENGTH = 14.7e-3
+CROWN_RADIUS = 10e-3
+RACEWAY_EDGE_RADIUS = 100e-3
+OIL_LAYER = 0.8e-6
+PAPER_MINIMUM = {1028.0: 0.319, 1607.0: 0.215, 2471.0: 0.159}  # µm, starved by 0.8 µm (physics.md, seed 003)
+
+
+def resident_peak_mib():
+    """This process's resident high-water mark since the last reset [MiB] (VmHWM)."""
+    for line in Path("/proc/self/status").read_text().splitlines():
+        if line.startswith("VmHWM:"):
+            return int(line.split()[1]) / 1024
+    return math.nan
+
+
+def reset_resident_peak():
+    """Hand the heap's freed pages back (glibc malloc_trim) and reset VmHWM to the present resident
+    size (Linux: '5' into /proc/self/clear_refs)."""
+    ctypes.CDLL("libc.so.6").malloc_trim(0)
+    Path("/proc/self/clear_refs").write_text("5")
+
+
+def one_solve(grid, load, model):
+    """Compile and run one solve here; a dict of the films [µm], times [s] and peaks [MiB]."""
+    profile = with_raceway_edge(roller_profile("circular", length=LENGTH, flat_length=FLAT_LENGTH,
+                                               crown_radius=CROWN_RADIUS), RACEWAY_EDGE_RADIUS)
+    case = (RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"], LUBRICANT["effective_modulus"],
+            profile, LENGTH, FLAT_LENGTH)
+
+    def solve(w):
+        if model == "flooded":
+            return finite_line_film_krylov(w, *case, grid=(grid, grid))
+        return starved_finite_line_film(w, *case, OIL_LAYER, grid=(grid, grid))
+
+    start = time.perf_counter()
+    compiled = jax.jit(solve).lower(load).compile()
+    compile_s = time.perf_counter() - start
+    compile_peak = resident_peak_mib()
+    reset_resident_peak()
+    start = time.perf_counter()
+    film = jax.block_until_ready(compiled(load))
+    return dict(central=float(film.central) * 1e6, minimum=float(film.minimum) * 1e6,
+                converged=bool(film.converged), compile_s=compile_s, run_s=time.perf_counter() - start,
+                compile_peak=compile_peak, run_peak=resident_peak_mib())
+
+
+def observed_order(coarse, middle, fine):
+    """(order, extrapolated value) of three values on grids halving their spacing; NaN where the
+    changes do not shrink with the spacing (not in the asymptotic range)."""
+    if (middle - coarse) * (fine - middle) <= 0 or abs(middle - coarse) <= abs(fine - middle):
+        return math.nan, math.nan
+    ratio = (middle - coarse) / (fine - middle)
+    order = math.log2(ratio)
+    return order, fine + (fine - middle) / (ratio - 1.0)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--grid", type=int, default=257)
+    parser.add_argument("--grids", type=int, nargs="+", default=[65, 129, 257])
     parser.add_argument("--loads", type=float, nargs="+", default=[1028.0, 1607.0, 2471.0])
+    parser.add_argument("--one", nargs=3, metavar=("GRID", "LOAD", "MODEL"), help=argparse.SUPPRESS)
     arguments = parser.parse_args()
-    profile = roller_profile("circular", length=LENGTH, flat_length=FLAT_LENGTH, crown_radius=10e-3)
-    print(f"`python benchmarks/starved_finite_line.py --grid {arguments.grid}` on {machine()}\n")
-    print("| grid | load | h_c | h_min | converged | wall (compile included) |\n|---|---|---|---|---|---|")
+    if arguments.one:
+        grid, load, model = arguments.one
+        print(json.dumps(one_solve(int(grid), float(load), model)))
+        return
+    print(f"`python benchmarks/starved_finite_line.py` on {machine()}; each solve in its own process\n")
+    print("| grid (half domain) | load | lubrication | h_c | h_min | converged | compile | run | peak compiling | "
+          "peak running |\n|---|---|---|---|---|---|---|---|---|---|")
+    films = {}
+    for grid in arguments.grids:
+        for load in arguments.loads:
+            for model in ("flooded", "theta"):
+                child = subprocess.run([sys.executable, __file__, "--one", str(grid), str(load), model],
+                                       capture_output=True, text=True, check=True, cwd=Path(__file__).parent)
+                row = json.loads(child.stdout.strip().splitlines()[-1])
+                films[grid, load, model] = row
+                print(f"| {grid} × {grid} | {load:g} N | {'flooded' if model == 'flooded' else 'starved 0.8 µm'} | "
+                      f"{row['central']:.4f} µm | {row['minimum']:.4f} µm | {'yes' if row['converged'] else 'no'} | "
+                      f"{row['compile_s']:.0f} s | {row['run_s']:.0f} s | {row['compile_peak'] / 1024:.2f} GiB | "
+                      f"{row['run_peak'] / 1024:.2f} GiB |", flush=True)
+    if len(arguments.grids) < 3:
+        return
+    print("\nGrid study (Richardson on the three finest grids where all three converged: observed order p, "
+          "extrapolated value, – where the changes do not shrink with the spacing; the paper's starved minimum beside)\n")
+    print("| load | lubrication | film | " + " | ".join(f"{g}²" for g in arguments.grids)
+          + " | p | extrapolated | paper |\n|---|---|---|" + "---|" * (len(arguments.grids) + 3))
     for load in arguments.loads:
-        start = time.perf_counter()
-        film = jax.block_until_ready(jax.jit(lambda w: starved_finite_line_film(
-            w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"], LUBRICANT["effective_modulus"],
-            profile, LENGTH, FLAT_LENGTH, 0.8e-6, grid=(arguments.grid, arguments.grid)))(load))
-        print(f"| {arguments.grid} × {arguments.grid} | {load:g} N | {float(film.central) * 1e6:.4f} µm | "
-              f"{float(film.minimum) * 1e6:.4f} µm | {'yes' if bool(film.converged) else 'no'} | "
-              f"{time.perf_counter() - start:.0f} s |", flush=True)
-    print(f"\npeak resident memory {peak_rss_mib() / 1024:.2f} GiB")
+        for model in ("flooded", "theta"):
+            for film in ("central", "minimum"):
+                values = [films[g, load, model][film] for g in arguments.grids]
+                converged = all(films[g, load, model]["converged"] for g in arguments.grids[-3:])
+                order, extrapolated = observed_order(*values[-3:]) if converged else (math.nan, math.nan)
+                paper = PAPER_MINIMUM.get(load) if (model, film) == ("theta", "minimum") else None
+                lubrication = "flooded" if model == "flooded" else "starved"
+                print(f"| {load:g} N | {lubrication} | h_{'c' if film == 'central' else 'min'} | "
+                      + " | ".join(f"{v:.4f} µm" for v in values)
+                      + (" | – | – |" if math.isnan(order) else f" | {order:.2f} | {extrapolated:.4f} µm |")
+                      + f" {'' if paper is None else f'{paper} µm'} |")
 
 
 if __name__ == "__main__":

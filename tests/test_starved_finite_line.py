@@ -7,6 +7,8 @@ import jax.numpy as jnp
 import pytest
 
 from diffbearing.app import cli
+from diffbearing.finite_line_krylov import finite_line_film_krylov
+from diffbearing.roller_profile import with_raceway_edge
 from diffbearing.starved_finite_line import starved_finite_line_film
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
@@ -16,9 +18,12 @@ from .test_film_formulas import STARVED_EHL_LINE, starved_ehl_entrainment_speed
 GRID = (65, 32)  # the march grid itself (33 × 32 dense, 65 × 32 Newton–Krylov for the flooded start)
 
 
-def _starved(load, layer, grid=GRID):
+PAPERS_PROFILE = with_raceway_edge(PROFILE, 100e-3)  # seed 003's roller with its raceway's edge radius (the scene's)
+
+
+def _starved(load, layer, grid=GRID, profile=PROFILE):
     return starved_finite_line_film(load, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8,
-                                    2.26e11, PROFILE, 14.7e-3, 12.7e-3, layer, grid=grid)
+                                    2.26e11, profile, 14.7e-3, 12.7e-3, layer, grid=grid)
 
 
 def test_bad_oil_layer_is_named():
@@ -44,19 +49,23 @@ def test_a_layer_that_fills_the_inlet_is_the_flooded_film():
     assert float(solved.minimum) == pytest.approx(float(flooded.minimum), rel=1e-3)
 
 
-@pytest.mark.slow  # about 80 s (2 cores)
+@pytest.mark.slow  # about two minutes (2 cores)
 def test_the_papers_roller_starved_on_129_squared():
     """On 129 × 129 under the paper's 0.8 µm: at 1028 N the central film is the meniscus model's
     (0.7008 µm on the same grid, docs/benchmarks.md §Finite line EHL by Newton–Krylov) within 0.5 %,
-    the minimum film positive at the flat's end; at 2471 N, where the meniscus model's coarse grids
-    close the film (h < 0 at the roller end), the θ-model converges with a positive film."""
-    solve = jax.jit(lambda load: _starved(load, 0.8e-6, (129, 129)))
-    light = solve(1028.0)
+    the minimum film positive at the flat's end; at 2471 N on the paper's roller with its raceway
+    edge, where the meniscus model's coarse grids close the film (h < 0 at the roller end) and the
+    flooded film did not converge from a 33 × 33 coarsest grid, both converge with positive films."""
+    solve = jax.jit(lambda load, profile: _starved(load, 0.8e-6, (129, 129), profile))
+    light = solve(1028.0, PROFILE)
     assert bool(light.converged)
     assert float(light.central) == pytest.approx(0.7008e-6, rel=5e-3)
     assert 0.0 < float(light.minimum) < float(light.central) and float(light.minimum_position) > 6.35e-3
-    heavy = solve(2471.0)
+    heavy = solve(2471.0, PAPERS_PROFILE)
     assert bool(heavy.converged) and 0.0 < float(heavy.minimum) < float(heavy.central)
+    flooded = finite_line_film_krylov(2471.0, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8,
+                                      2.26e11, PAPERS_PROFILE, 14.7e-3, 12.7e-3, grid=(129, 129))
+    assert bool(flooded.converged) and 0.0 < float(flooded.minimum) < float(flooded.central)
 
 
 @pytest.mark.slow  # about two minutes (2 cores)
