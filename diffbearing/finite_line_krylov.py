@@ -33,9 +33,9 @@ continued from the one the held solution carries to the oil layer's, in stages o
 double when a stage converges and halve when it does not (`Stage.supply_factor`).
 
 The coarsest grid keeps 64 cells or more along the half roller (`COARSEST_CELLS`), flooded and
-starved: on 33 × 33 the dense Newton ends with h < 0 at the roller end (starved, 0.8 µm, 1028 N;
-flooded at 1607 N), and with the paper's raceway edge (crown radius 9.09 mm) at 2471 N it does
-not converge, so that no finer grid does either; from 33 × 65 all converge.
+starved: on 33 × 33 the dense Newton ends with h < 0 (starved, 0.8 µm, 1028 N; flooded at 1607 N on
+the paper's roller with its raceway edge, crown radius 9.09 mm: −0.40 µm), and on that roller at
+2471 N it does not converge, so that no finer grid did either; from 33 × 65 all converge.
 
 Derivatives: implicit, through the finest solution (`newton_krylov.krylov_root`), the tangent
 systems solved by the same preconditioned GMRES.
