@@ -24,6 +24,7 @@ from .params import check_range
 from .point_ehl import FEWEST_CELLS, PointFilm, film_result, hertz_scales, point_film, point_level
 from .starved_krylov import StarvedLevel, march_level, solve_starved
 
+
 class StarvedPointFilm(eqx.Module):
     """`film`: the solution [SI] on the half domain y ≥ 0 (`point_ehl.PointFilm`); the oil fill θ
     [-] (nx, ny); the oil layer [m]."""
@@ -48,7 +49,7 @@ def starved_point_film(load, radius_rolling, radius_transverse, speed, viscosity
     require_float64()
     check_range("oil_layer", oil_layer, low=0.0, unit=" m", why="the inlet oil layer")
     levels = krylov_levels(grid, FEWEST_CELLS)
-    marching = march_grid(grid)
+    marching = march_level(levels)
     arguments = (load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus,
                  oil_layer)
     constants = jax.lax.stop_gradient(arguments)
