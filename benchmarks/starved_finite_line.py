@@ -2,9 +2,9 @@
 
     python benchmarks/starved_finite_line.py [--grids 65 129 257] [--loads 1028 1607 2471]
 
-The roller of the public scene `diffbearing/scenes/starved_roller.toml` (seed 003: crown radius
-10 mm with the raceway's 100 mm edge radius, `with_raceway_edge`; lubricant and speed as
-`benchmarks/line_ehl.py`) on grid × grid (half domain; 257 is the paper's 257 × 513). Each solve,
+The roller and oil layer of the public scene `diffbearing/scenes/starved_roller.toml`, read from it
+(seed 003: crown radius 10 mm with the raceway's 100 mm edge radius, `with_raceway_edge`; 0.8 µm;
+lubricant and speed as `benchmarks/line_ehl.py`) on grid × grid (half domain; 257 is the paper's 257 × 513). Each solve,
 flooded (`finite_line_film_krylov`) and starved (`starved_finite_line_film`), runs in its own process
 on the machine's cores: compile time, run time, and the peak resident memory of compiling and of
 running apart (the high-water mark is reset between them through /proc/self/clear_refs). Then the
@@ -25,17 +25,15 @@ import jax
 
 jax.config.update("jax_enable_x64", True)
 
-from line_ehl import FLAT_LENGTH, LUBRICANT, RADIUS, SPEED  # noqa: E402
+from line_ehl import LUBRICANT, RADIUS, SPEED  # noqa: E402
 from timing import machine  # noqa: E402
 
+from diffbearing.app.scene import load_scene  # noqa: E402
 from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
 from diffbearing.roller_profile import roller_profile, with_raceway_edge  # noqa: E402
 from diffbearing.starved_finite_line import starved_finite_line_film  # noqa: E402
 
-LENGTH = 14.7e-3
-CROWN_RADIUS = 10e-3
-RACEWAY_EDGE_RADIUS = 100e-3
-OIL_LAYER = 0.8e-6
+SCENE = load_scene("starved_roller").values  # the public scene: its roller and oil layer
 PAPER_MINIMUM = {1028.0: 0.319, 1607.0: 0.215, 2471.0: 0.159}  # µm, starved by 0.8 µm (physics.md, seed 003)
 
 
@@ -56,15 +54,17 @@ def reset_resident_peak():
 
 def one_solve(grid, load, model):
     """Compile and run one solve here; a dict of the films [µm], times [s] and peaks [MiB]."""
-    profile = with_raceway_edge(roller_profile("circular", length=LENGTH, flat_length=FLAT_LENGTH,
-                                               crown_radius=CROWN_RADIUS), RACEWAY_EDGE_RADIUS)
+    length, flat_length = SCENE["bearing.roller_length"], SCENE["profile.flat_length"]
+    profile = with_raceway_edge(roller_profile(SCENE["profile.kind"], length=length, flat_length=flat_length,
+                                               crown_radius=SCENE["profile.crown_radius"]),
+                                SCENE["contact.raceway_edge_radius"])
     case = (RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"], LUBRICANT["effective_modulus"],
-            profile, LENGTH, FLAT_LENGTH)
+            profile, length, flat_length)
 
     def solve(w):
         if model == "flooded":
             return finite_line_film_krylov(w, *case, grid=(grid, grid))
-        return starved_finite_line_film(w, *case, OIL_LAYER, grid=(grid, grid))
+        return starved_finite_line_film(w, *case, SCENE["operating.oil_layer"], grid=(grid, grid))
 
     start = time.perf_counter()
     compiled = jax.jit(solve).lower(load).compile()
