@@ -4,12 +4,13 @@
 
 The roller and oil layer of the public scene `diffbearing/scenes/starved_roller.toml`, read from it
 (seed 003: crown radius 10 mm with the raceway's 100 mm edge radius, `with_raceway_edge`; 0.8 µm;
-lubricant and speed as `benchmarks/line_ehl.py`) on grid × grid (half domain; 257 is the paper's 257 × 513). Each solve,
-flooded (`finite_line_film_krylov`) and starved (`starved_finite_line_film`), runs in its own process
-on the machine's cores: compile time, run time, and the peak resident memory of compiling and of
-running apart (the high-water mark is reset between them through /proc/self/clear_refs). Then the
-grid study: central and roller-end minimum films against grid with the observed order (Richardson,
-the three finest grids, where all three converged). Prints Markdown tables.
+lubricant and speed as `benchmarks/line_ehl.py`) on grid × grid (half domain; 257 is the paper's
+257 × 513). Each solve, flooded (`finite_line_film_krylov`) and starved (`starved_finite_line_film`),
+runs in its own process on the machine's cores, compiled with `newton_krylov.COMPILER_OPTIONS` as the
+CLI compiles it: compile time, run time, and the peak resident memory of compiling and of running
+apart (the high-water mark is reset between them through /proc/self/clear_refs). Then the grid study:
+central and roller-end minimum films against grid with the observed order (Richardson, the three
+finest grids, where all three converged). Prints Markdown tables.
 """
 
 import argparse
@@ -30,6 +31,7 @@ from timing import machine  # noqa: E402
 
 from diffbearing.app.scene import load_scene  # noqa: E402
 from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
+from diffbearing.newton_krylov import COMPILER_OPTIONS  # noqa: E402
 from diffbearing.roller_profile import roller_profile, with_raceway_edge  # noqa: E402
 from diffbearing.starved_finite_line import starved_finite_line_film  # noqa: E402
 
@@ -67,7 +69,7 @@ def one_solve(grid, load, model):
         return starved_finite_line_film(w, *case, SCENE["operating.oil_layer"], grid=(grid, grid))
 
     start = time.perf_counter()
-    compiled = jax.jit(solve).lower(load).compile()
+    compiled = jax.jit(solve).lower(load).compile(COMPILER_OPTIONS)
     compile_s = time.perf_counter() - start
     compile_peak = resident_peak_mib()
     reset_resident_peak()
@@ -98,7 +100,8 @@ def main():
         grid, load, model = arguments.one
         print(json.dumps(one_solve(int(grid), float(load), model)))
         return
-    print(f"`python benchmarks/starved_finite_line.py` on {machine()}; each solve in its own process\n")
+    print(f"`python benchmarks/starved_finite_line.py` on {machine()}; each solve in its own process, "
+          "compiled with XLA's loop emitters (`newton_krylov.COMPILER_OPTIONS`)\n")
     print("| grid (half domain) | load | lubrication | h_c | h_min | converged | compile | run | peak compiling | "
           "peak running |\n|---|---|---|---|---|---|---|---|---|---|")
     films = {}

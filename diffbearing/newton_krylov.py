@@ -25,6 +25,12 @@ ARMIJO = 1e-4  # c of the sufficient-decrease test
 FORCING_LARGEST = 1e-3  # η_max: the loosest linear solve, unless the caller asks a tighter one
 FORCING_SMALLEST = 1e-10  # η_min
 TANGENT_TOLERANCE = 1e-14  # relative tolerance of the tangent (derivative) solves: forward and reverse agree to ~1e-12
+# XLA options for a program that holds these solves (`jax.jit(f, compiler_options=COMPILER_OPTIONS)`,
+# or `.lower(...).compile(COMPILER_OPTIONS)`): XLA's CPU loop emitters instead of its fusion emitters,
+# which take most of the compiler's memory over the nested solves (the starved finite line contact on
+# 257 × 257 compiles in 1.0 instead of 2.3 GiB, docs/benchmarks.md). Programs without them keep XLA's
+# defaults: there the fusion emitters compile and run faster.
+COMPILER_OPTIONS = {"xla_cpu_use_fusion_emitters": False}
 
 
 def gmres(linear, rhs, preconditioner, tolerance, *, restart: int, max_steps: int):

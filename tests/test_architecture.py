@@ -5,11 +5,14 @@ import ast
 import dataclasses
 from pathlib import Path
 
+import jax
+import numpy as np
 import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import registry
 from diffbearing.app.registry import Adapter, Block, Key, Output
+from diffbearing.app.stored_models import compile_stored
 
 PACKAGE = Path(__file__).resolve().parents[1] / "diffbearing"
 
@@ -118,6 +121,31 @@ def test_a_toy_effect_needs_only_its_adapter(toy_registered):
     result = run_model(model)
     assert float(result.values["toy.doubled_load"]) == pytest.approx(2000.0, rel=1e-14)  # the scene's 1 kN
     assert "twice the load" in format_report(result)
+
+
+def test_a_block_compiled_apart_gives_the_one_programs_values(toy_registered, monkeypatch):
+    """A block with `own_program` is compiled as a program of its own, with the XLA options it
+    asks for, fed the earlier programs' results; the values are those of all blocks in one program."""
+    apart = dataclasses.replace(TOY.blocks[0], own_program=True,
+                                compiler_options=lambda settings: {"xla_cpu_use_fusion_emitters": False})
+    monkeypatch.setitem(registry.ADAPTERS, "toy", dataclasses.replace(TOY, blocks=(apart,)))
+    asked = []
+
+    def recording(function, inputs, key, compiler_options=None, release=False):
+        asked.append(compiler_options)
+        return compile_stored(function, inputs, key, compiler_options, release)
+
+    monkeypatch.setattr(registry, "compile_stored", recording)
+    monkeypatch.setattr(registry, "_COMPILED", {})  # not the toy compiled by an earlier test
+    model = build_model(load_scene("tapered_roller", ["effects.toy=true"]))
+    assert [[block.name for block in group] for group in registry.programs(model.blocks)] == [
+        ["roller_geometry", "roller_contact_influence"], ["toy"]]
+    result = run_model(model)
+    assert asked == [{}, {"xla_cpu_use_fusion_emitters": False}]
+    together = jax.jit(registry.evaluate(model.blocks, model.settings))(model.inputs)
+    assert set(result.values) == set(together)
+    for key, value in together.items():
+        assert np.array_equal(result.values[key], np.asarray(value)), key
 
 
 def test_a_toy_key_nothing_reads_is_refused(toy_registered):

@@ -29,7 +29,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from .stored_models import compile_stored
+from .stored_models import compile_stored, release_memory
 
 # The bearing type of a scene with [[bearings]]: a shaft on several bearings (adapters/shaft.py).
 SHAFT_TYPE = "shaft"
@@ -104,6 +104,12 @@ class Block:
     # scene keys that select this block's layout: it runs only in a scene holding every one of them
     # (module docstring); () serves every layout
     scene_keys: tuple[str, ...] = ()
+    # settings → XLA compiler options for the program that holds this block ({}: XLA's defaults)
+    compiler_options: Callable[[dict], dict] | None = None
+    # a single run compiles it as a program of its own, apart from the blocks before and after it
+    # (the numerical EHL solvers: XLA's compile memory for one program holding two of them is well
+    # above that of each alone); a sweep compiles all blocks as one program
+    own_program: bool = False
 
     def in_layout(self, present) -> bool:
         """Whether a scene holding the keys `present` has this block's layout."""
@@ -328,14 +334,53 @@ class Reads(Mapping):
         return len(self._values)
 
 
+def compiler_options(blocks, settings: dict) -> dict:
+    """The XLA compiler options the blocks ask for with these settings, merged (one program holds them all)."""
+    options: dict = {}
+    for block in blocks:
+        if block.compiler_options is not None:
+            options |= block.compiler_options(settings)
+    return options
+
+
+def programs(blocks) -> list[tuple[Block, ...]]:
+    """The blocks, in order, split into the programs a single run compiles apart: each block with
+    `own_program` alone, the blocks between them together."""
+    groups: list[tuple[Block, ...]] = []
+    for block in blocks:
+        if block.own_program or not groups or groups[-1][-1].own_program:
+            groups.append((block,))
+        else:
+            groups[-1] += (block,)
+    return groups
+
+
+def evaluate_after(blocks, settings: dict) -> Callable[[tuple[dict, dict]], dict]:
+    """The pure function (inputs, results of the blocks before) → {output key: array} of `blocks`."""
+
+    def run(arguments: tuple[dict, dict]) -> dict:
+        inputs, earlier = arguments
+        results, produced = dict(earlier), {}
+        for block in blocks:
+            produced |= block.compute(inputs, settings, results)
+            results |= produced
+        return produced
+
+    return run
+
+
 _COMPILED: dict = {}
 
 
 def compiled(blocks, settings: dict, inputs: dict):
-    """(`jax.jit` of `evaluate(...)` compiled ahead of time for `inputs`, whether it was cached).
+    """(a callable inputs → {output key: array} of `blocks`, compiled ahead of time for `inputs`;
+    whether it was cached).
 
+    Each of `programs(blocks)` is `jax.jit` compiled on its own, with the options its blocks ask for
+    (`compiler_options`), a program of its own (`Block.own_program`) after the memory the earlier
+    ones left is released (`stored_models.release_memory`), and the callable runs them in order.
     Compiled models are kept per process, keyed by the blocks, the settings and the structure,
-    shapes and dtypes of the inputs: a second run of the same model with other numbers reuses it.
+    shapes and dtypes of the inputs: a second run of the same model with other numbers reuses them.
     Between processes they are kept on disk (stored_models.py) where a compilation cache is set.
     """
     leaves, treedef = jax.tree.flatten(inputs)
@@ -343,6 +388,22 @@ def compiled(blocks, settings: dict, inputs: dict):
                 str(treedef), tuple((jnp.shape(x), str(jnp.result_type(x))) for x in leaves)))
     if key in _COMPILED:
         return _COMPILED[key], True
-    executable = compile_stored(evaluate(blocks, settings), inputs, key)
-    _COMPILED[key] = executable
-    return executable, False
+    executables, earlier = [], {}
+    for group in programs(blocks):
+        apart = group[0].own_program
+        if apart:
+            release_memory()  # the earlier programs' leftovers
+        executable, produced = compile_stored(evaluate_after(group, settings), (inputs, earlier),
+                                              repr((key, tuple(b.name for b in group))),
+                                              compiler_options(group, settings), release=apart)
+        executables.append(executable)
+        earlier = earlier | produced
+
+    def run(values: dict) -> dict:
+        results: dict = {}
+        for executable in executables:
+            results |= executable((values, results))
+        return results
+
+    _COMPILED[key] = run
+    return run, False

@@ -125,7 +125,8 @@ def format_report(result) -> str:
     lines += _problem_lines(result)
     if result.model.not_implemented:
         lines += ["", "Not computed (effect not available yet): " + ", ".join(result.model.not_implemented)]
-    lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s * 1e3:.2f} ms (after compilation)"]
+    run = f"{result.run_s:.1f} s" if result.run_s >= 1.0 else f"{result.run_s * 1e3:.2f} ms"
+    lines += ["", f"compile {result.compile_s:.2f} s, run {run} (after compilation)"]
     return "\n".join(lines)
 
 

@@ -11,7 +11,10 @@ callbacks or LAPACK calls without a stability guarantee (`jax.export` cannot ser
 cage dynamics' diffrax integration), which is traced anew in each process.
 """
 
+import ctypes
+import ctypes.util
 import functools
+import gc
 import hashlib
 import tempfile
 from pathlib import Path
@@ -32,18 +35,40 @@ def source_digest() -> str:
     return digest.hexdigest()
 
 
+def release_memory() -> None:
+    """Collect Python's garbage (traces and lowered modules that only cycles hold) and hand the
+    heap's free pages back to the system (glibc's malloc_trim, where the C library has it), so that
+    the next compilation does not start on top of the last one's leftovers. A full collection takes
+    longer the more objects a process holds (a test session): for large programs only."""
+    gc.collect()
+    trim = getattr(_c_library(), "malloc_trim", None)
+    if trim is not None:
+        trim(0)
+
+
+@functools.cache
+def _c_library():
+    name = ctypes.util.find_library("c")
+    return ctypes.CDLL(name) if name else None
+
+
 def _folder() -> Path | None:
     root = jax.config.jax_compilation_cache_dir
     return None if not root else Path(root) / "diffbearing-models"
 
 
-def compile_stored(function, inputs, key: str):
-    """A compiled callable inputs → outputs of `function` (a pure function of the inputs pytree),
-    loaded from the stored export of `key` where one exists, else exported, stored and compiled."""
+def compile_stored(function, inputs, key: str, compiler_options: dict | None = None, release: bool = False):
+    """(a compiled callable inputs → outputs of `function`, a pure function of the inputs pytree
+    (arrays, or `jax.ShapeDtypeStruct`s standing for them); the outputs' `jax.ShapeDtypeStruct`s),
+    loaded from the stored export of `key` where one exists, else exported, stored and compiled
+    (with XLA's `compiler_options`, which the key must determine); with `release`, the memory the
+    export's trace held is released before compiling (`release_memory`: a large program)."""
     leaves, treedef = jax.tree.flatten(inputs)
+    options = compiler_options or None
     folder = _folder()
     if folder is None:
-        return jax.jit(function).lower(inputs).compile()
+        executable = jax.jit(function).lower(inputs).compile(options)
+        return executable, executable.out_info
 
     def flat(*arrays):
         return function(jax.tree.unflatten(treedef, arrays))
@@ -58,10 +83,13 @@ def compile_stored(function, inputs, key: str):
             # host callbacks (diffrax's cage dynamics) and LAPACK calls without a stability
             # guarantee cannot be serialized; a ValueError of the model itself is raised again by
             # the plain lowering below
-            return jax.jit(function).lower(inputs).compile()
+            executable = jax.jit(function).lower(inputs).compile(options)
+            return executable, executable.out_info
         folder.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=folder, suffix=".partial", delete=False) as temporary:
             temporary.write(exported.serialize())
         Path(temporary.name).replace(path)  # atomic: a process reading meanwhile sees all or nothing
-    executable = jax.jit(exported.call).lower(*leaves).compile()
-    return lambda values: executable(*jax.tree.leaves(values))
+        if release:
+            release_memory()
+    executable = jax.jit(exported.call).lower(*leaves).compile(options)
+    return (lambda values: executable(*jax.tree.leaves(values))), executable.out_info

@@ -29,6 +29,7 @@ import numpy as np
 from jax.sharding import Mesh, NamedSharding, PartitionSpec
 from tqdm import tqdm
 
+from .registry import compiler_options
 from .registry import evaluate as evaluate_blocks
 from .result import RunResult
 from .schema import convert, lookup
@@ -114,7 +115,7 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
 
     first, _ = chunk_inputs(rank * share)
     start_time = time.perf_counter()
-    executable = batched.lower(first).compile()
+    executable = batched.lower(first).compile(compiler_options(blocks, model.settings) or None)
     compile_s = time.perf_counter() - start_time
     pieces = []
     run_start = time.perf_counter()

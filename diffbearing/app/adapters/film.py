@@ -18,6 +18,7 @@ from ...finite_line_ehl import MAX_UNKNOWNS, finite_line_film, half_domain_grid
 from ...finite_line_krylov import finite_line_film_krylov, krylov_levels
 from ...kinematics import raceway_entrainment_speed
 from ...line_ehl import check_nodes, density_ratio, line_film
+from ...newton_krylov import COMPILER_OPTIONS
 from ...point_ehl import FEWEST_CELLS, point_film
 from ...params import BALL_BEARING_KINDS, _as_float, check_range
 from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature, rolling_radius
@@ -279,6 +280,11 @@ def _finite_line_settings(settings: dict, inputs: dict) -> None:
     """ValueError for a roller scene without entrainment speed or a bad finite line grid."""
     _entrainment(settings, inputs)
     finite_line_settings(settings)
+
+
+def _krylov_options(settings: dict) -> dict:
+    """XLA's options for a program holding a Newton–Krylov finite line solve (`newton_krylov.COMPILER_OPTIONS`)."""
+    return COMPILER_OPTIONS if finite_line_settings(settings)[1] == "krylov" else {}
 
 
 def _starvation_model(settings: dict) -> str:
@@ -551,6 +557,7 @@ ADAPTER = register(Adapter(
               requires=("equilibrium",), inputs=("bearing", "operating", "lubricant", "roughness"),
               outputs=(*_point_outputs("inner"), *_point_outputs("outer")), compute=_film_point,
               validate=_point_settings, plot=_point_film_plot,
+              compiler_options=lambda settings: COMPILER_OPTIONS, own_program=True,
               checks=convergence_checks(("film.inner.converged", "the point contact EHL (inner raceway)"),
                                         ("film.outer.converged", "the point contact EHL (outer raceway)"))),
         Block(name="starvation_point", sequential_sweep=True, bearing_types=BALL_BEARING_KINDS,
@@ -559,6 +566,7 @@ ADAPTER = register(Adapter(
               outputs=(Output("starvation.oil_layer", "m", "um", "inlet oil supply layer h_oil"),
                        *_starved_point_outputs("inner"), *_starved_point_outputs("outer")),
               compute=_starvation_point, validate=_point_settings, plot=_starved_point_plot,
+              compiler_options=lambda settings: COMPILER_OPTIONS, own_program=True,
               checks=convergence_checks(("starvation.inner.converged", "the starved point contact EHL (inner raceway)"),
                                         ("starvation.outer.converged", "the starved point contact EHL (outer raceway)"))),
         Block(name="film_formula", bearing_types=ROLLER_KINDS, enabled_by=("film", "formula"),
@@ -579,6 +587,7 @@ ADAPTER = register(Adapter(
               enabled_by=("film", "finite_line"), requires=("roller_geometry",), inputs=ROLLER_INPUTS,
               outputs=(*_ROLLER_FILM_COMMON, *_finite_line_outputs("film", "flooded")),
               compute=_film_finite_line, validate=_finite_line_settings, plot=_finite_line_film_plot,
+              compiler_options=_krylov_options, own_program=True,
               checks=convergence_checks(("film.converged", "the finite line EHL Newton (fully flooded film)"))),
         Block(name="starvation_formula", bearing_types=ROLLER_KINDS, enabled_by=("starvation", True),
               only_with=("film", ("formula",)), requires=("film_formula",), inputs=ROLLER_INPUTS + ("oil_layer",),
@@ -606,6 +615,7 @@ ADAPTER = register(Adapter(
                   *_finite_line_outputs("starvation", "starved"),
               ),
               compute=_starvation_finite_line, validate=_starved_finite_line_settings, plot=_finite_line_film_plot,
+              compiler_options=_krylov_options, own_program=True,
               checks=convergence_checks(("starvation.converged", "the finite line EHL Newton (starved film)"))),
     ),
     report=_report,
