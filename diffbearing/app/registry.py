@@ -377,8 +377,8 @@ def compiled(blocks, settings: dict, inputs: dict):
     whether it was cached).
 
     Each of `programs(blocks)` is `jax.jit` compiled on its own, with the options its blocks ask for
-    (`compiler_options`), a program of its own (`Block.own_program`) after the memory the earlier
-    ones left is released (`stored_models.release_memory`), and the callable runs them in order.
+    (`compiler_options`), a program of its own (`Block.own_program`) between releases of the memory
+    the compilers left (`stored_models.release_memory`), and the callable runs them in order.
     Compiled models are kept per process, keyed by the blocks, the settings and the structure,
     shapes and dtypes of the inputs: a second run of the same model with other numbers reuses them.
     Between processes they are kept on disk (stored_models.py) where a compilation cache is set.
@@ -396,6 +396,8 @@ def compiled(blocks, settings: dict, inputs: dict):
         executable, produced = compile_stored(evaluate_after(group, settings), (inputs, earlier),
                                               repr((key, tuple(b.name for b in group))),
                                               compiler_options(group, settings), release=apart)
+        if apart:
+            release_memory()  # the compiler's, before the run maps its buffers beside them
         executables.append(executable)
         earlier = earlier | produced
 
