@@ -14,7 +14,9 @@ torque), touching its physics module, its adapter and nothing else (plus tests a
    - `blocks`: `Block(name, bearing_types, enabled_by=("<effect>", value), requires, outputs,
      compute, inputs=...)`, `compute(inputs, settings, results) → {output key: array}` pure JAX;
      every `Output` with its SI unit, display unit and a description; `checks` for results
-     outside the model; `plot` for the figure of a run;
+     outside the model; `plot` for the figure of a run; `own_program=True` for a large
+     numerical solve (compiled apart from the other blocks), with `compiler_options` where
+     XLA's defaults do not suit it;
    - `report` / `sweep_columns` for lines beyond the generic output tables.
 3. Import the module below (the order here is the order of report sections).
 4. Regenerate the key and output reference: `python -m diffbearing.app.reference > docs/reference.md`.
