@@ -14,7 +14,6 @@ finest grids, where all three converged). Prints Markdown tables.
 """
 
 import argparse
-import ctypes
 import json
 import math
 import subprocess
@@ -30,6 +29,7 @@ from line_ehl import LUBRICANT, RADIUS, SPEED  # noqa: E402
 from timing import machine  # noqa: E402
 
 from diffbearing.app.scene import load_scene  # noqa: E402
+from diffbearing.app.stored_models import release_memory  # noqa: E402
 from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
 from diffbearing.newton_krylov import COMPILER_OPTIONS  # noqa: E402
 from diffbearing.roller_profile import roller_profile, with_raceway_edge  # noqa: E402
@@ -48,9 +48,9 @@ def resident_peak_mib():
 
 
 def reset_resident_peak():
-    """Hand the heap's freed pages back (glibc malloc_trim) and reset VmHWM to the present resident
-    size (Linux: '5' into /proc/self/clear_refs)."""
-    ctypes.CDLL("libc.so.6").malloc_trim(0)
+    """Release the compiler's leftovers as the CLI does (`stored_models.release_memory`) and reset
+    VmHWM to the present resident size (Linux: '5' into /proc/self/clear_refs)."""
+    release_memory()
     Path("/proc/self/clear_refs").write_text("5")
 
 

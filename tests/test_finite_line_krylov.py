@@ -21,8 +21,8 @@ PROFILE = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_
 GRID = (65, 32)  # two levels: 33 × 32 dense, then 65 × 32 by Newton–Krylov
 
 
-def _solve(load, layer=None, grid=GRID, solver=finite_line_film_krylov, **options):
-    return solver(load, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8, 2.26e11, PROFILE,
+def _solve(load, layer=None, grid=GRID, solver=finite_line_film_krylov, profile=PROFILE, **options):
+    return solver(load, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8, 2.26e11, profile,
                   14.7e-3, 12.7e-3, grid=grid, oil_layer=layer, **options)
 
 

@@ -7,7 +7,6 @@ import jax.numpy as jnp
 import pytest
 
 from diffbearing.app import cli
-from diffbearing.finite_line_krylov import finite_line_film_krylov
 from diffbearing.roller_profile import with_raceway_edge
 from diffbearing.starved_finite_line import starved_finite_line_film
 
@@ -63,8 +62,7 @@ def test_the_papers_roller_starved_on_129_squared():
     assert 0.0 < float(light.minimum) < float(light.central) and float(light.minimum_position) > 6.35e-3
     heavy = solve(2471.0, PAPERS_PROFILE)
     assert bool(heavy.converged) and 0.0 < float(heavy.minimum) < float(heavy.central)
-    flooded = finite_line_film_krylov(2471.0, STARVED_EHL_LINE["radius"], starved_ehl_entrainment_speed(), 0.08, 2.2e-8,
-                                      2.26e11, PAPERS_PROFILE, 14.7e-3, 12.7e-3, grid=(129, 129))
+    flooded = _solve(2471.0, grid=(129, 129), profile=PAPERS_PROFILE)
     assert bool(flooded.converged) and 0.0 < float(flooded.minimum) < float(flooded.central)
 
 

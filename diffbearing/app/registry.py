@@ -297,16 +297,24 @@ def outputs_of(blocks, effects: dict | None = None) -> dict[str, Output]:
             if effects is None or out.effect is None or effects.get(out.effect, False) is True}
 
 
-def evaluate(blocks, settings: dict) -> Callable[[dict], dict]:
-    """The pure function inputs → {output key: array} that runs exactly `blocks` in order."""
+def evaluate_after(blocks, settings: dict) -> Callable[[tuple[dict, dict]], dict]:
+    """The pure function (inputs, results of the blocks before) → {output key: array} of `blocks`."""
 
-    def run(inputs: dict) -> dict:
-        results: dict = {}
+    def run(arguments: tuple[dict, dict]) -> dict:
+        inputs, earlier = arguments
+        results, produced = dict(earlier), {}
         for block in blocks:
-            results |= block.compute(inputs, settings, results)
-        return results
+            produced |= block.compute(inputs, settings, results)
+            results |= produced
+        return produced
 
     return run
+
+
+def evaluate(blocks, settings: dict) -> Callable[[dict], dict]:
+    """The pure function inputs → {output key: array} that runs exactly `blocks` in order."""
+    after = evaluate_after(blocks, settings)
+    return lambda inputs: after((inputs, {}))
 
 
 class Reads(Mapping):
@@ -353,20 +361,6 @@ def programs(blocks) -> list[tuple[Block, ...]]:
         else:
             groups[-1] += (block,)
     return groups
-
-
-def evaluate_after(blocks, settings: dict) -> Callable[[tuple[dict, dict]], dict]:
-    """The pure function (inputs, results of the blocks before) → {output key: array} of `blocks`."""
-
-    def run(arguments: tuple[dict, dict]) -> dict:
-        inputs, earlier = arguments
-        results, produced = dict(earlier), {}
-        for block in blocks:
-            produced |= block.compute(inputs, settings, results)
-            results |= produced
-        return produced
-
-    return run
 
 
 _COMPILED: dict = {}

@@ -65,10 +65,14 @@ def compile_stored(function, inputs, key: str, compiler_options: dict | None = N
     export's trace held is released before compiling (`release_memory`: a large program)."""
     leaves, treedef = jax.tree.flatten(inputs)
     options = compiler_options or None
-    folder = _folder()
-    if folder is None:
+
+    def plain():
         executable = jax.jit(function).lower(inputs).compile(options)
         return executable, executable.out_info
+
+    folder = _folder()
+    if folder is None:
+        return plain()
 
     def flat(*arrays):
         return function(jax.tree.unflatten(treedef, arrays))
@@ -82,9 +86,8 @@ def compile_stored(function, inputs, key: str, compiler_options: dict | None = N
         except (NotImplementedError, ValueError):
             # host callbacks (diffrax's cage dynamics) and LAPACK calls without a stability
             # guarantee cannot be serialized; a ValueError of the model itself is raised again by
-            # the plain lowering below
-            executable = jax.jit(function).lower(inputs).compile(options)
-            return executable, executable.out_info
+            # the plain lowering
+            return plain()
         folder.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=folder, suffix=".partial", delete=False) as temporary:
             temporary.write(exported.serialize())
