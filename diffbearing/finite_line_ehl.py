@@ -32,7 +32,8 @@ Solver: Newton with a dense Jacobian, assembled as J = ∂F/∂u|_H + (∂F/∂H
 forward derivatives of the column-local equations and the influence matrix K
 (`local_and_elastic_jacobian`; a forward pass per unknown through K would cost (nx·ny)³ and
 was 3× slower on 65 × 65); `newton` with Armijo backtracking and a Levenberg–Marquardt fallback
-where the piecewise smooth equations stall it, the meniscus moving at most a cell per step,
+where the piecewise smooth equations stall it, the meniscus moving at most a cell per step, each
+step's LU in float32 refined in float64 (`newton.refined_solve`),
 stopping once ‖F‖₂ ≤ `tolerance` (below it a step lowers round-off only); from the 1-D line
 solution (starved alike) extruded along the flat. Where that Newton fails (the starved-EHL
 paper's roller starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with
@@ -44,7 +45,7 @@ start's pressure the flux through the columns is off, and menisci that move with
 where Newton stalls (1.8 µm converged only with the held menisci). The dimensionless grid stays
 the full load's. Inside `newton.implicit_root`, so the derivatives are implicit (checked against
 central differences on 17 × 16 flooded and 25 × 16 starved). Dense means (nx−2)·ny ≤ MAX_UNKNOWNS
-= 4200 on the half domain (65 × 65: one LU about 1 s on 2 cores); measured times and films in
+= 4200 on the half domain (65 × 65: one float32 LU about 0.35 s on 2 cores); measured times and films in
 `benchmarks/finite_line_ehl.py`. A scene's
 `fidelity.grid = [nx, ny]` counts ny cells along the whole roller, of which the ⌈ny/2⌉ on y ≥ 0
 are solved (`half_domain_grid`). The discrete problem is not always unique at the roller end:
@@ -67,7 +68,7 @@ from .newton import implicit_root, newton
 from .numerics import require_float64
 from .roller_profile import RollerProfile, crown_drop
 
-MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 1 s per LU on 2 cores
+MAX_UNKNOWNS = 4200  # 65 × 65 on the half domain: about 0.35 s per float32 LU on 2 cores
 HELD_MENISCUS_STEPS = 30  # starved load stages: Newton steps on pressure and H₀ with the menisci held
 NEWTON_STEPS = 60  # per load stage; the starved-EHL paper's roller at 1607 N starved needs 31–60 (short L–M steps)
 SHORTEST_STEP = 1e-4  # the shortest step length the backtracking tries
@@ -254,17 +255,20 @@ def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
 
     `local(interior, height, meniscus)` → (R, ny): the equations of column j depend on the
     interior pressure P (nx − 2, ny) and the film H (nx, ny) of columns j − 1, j, j + 1 only, and
-    on the meniscus of column j; H = H₀ + K·P with `influence` K = ∂H/∂P (nx, ny, nx − 2, ny),
-    dense. Forward derivatives with one tangent per x row and per column class j mod 3
-    (Curtis–Powell–Reid coloring) give ∂F/∂P|_H and ∂F/∂H exactly in 3(2nx − 2) + 4 passes of the
-    local equations; J = ∂F/∂P|_H + (∂F/∂H)·K then follows by contracting ∂F/∂H with the three
-    columns of K it touches — about 3·R·nx²·ny² operations instead of the (nx·ny)³ of one
-    forward pass per unknown through K.
+    on the meniscus of column j; along x, the Reynolds row r (node r + 1) reads H at the nodes
+    r − 1 … r + 2 (`local_equations`), a meniscus row (r = nx − 2, starved) its whole column;
+    H = H₀ + K·P with `influence` K = ∂H/∂P (nx, ny, nx − 2, ny), dense. Forward derivatives with
+    one tangent per x row and per column class j mod 3 (Curtis–Powell–Reid coloring) give ∂F/∂P|_H
+    and ∂F/∂H exactly in 3(2nx − 2) + 4 passes of the local equations; J = ∂F/∂P|_H + (∂F/∂H)·K
+    then follows by contracting ∂F/∂H with the rows of K it touches: 12 per Reynolds row (four
+    nodes along x in three columns), a whole column's per meniscus row — about 12·(nx·ny)²
+    operations instead of the (nx·ny)³ of one forward pass per unknown through K.
 
     Returns (∂F/∂P (ny, R, nx − 2, ny) indexed [j, r, a, b] for equation (r, j) and unknown
     P[a, b]; ∂F/∂H₀ (R, ny) for a uniform film offset; ∂F[r, j]/∂X_m,j (R, ny))."""
     rows, ny = interior.shape
     nx = height.shape[0]
+    reynolds_rows = nx - 2  # rows beyond these: the meniscus equations
     _, linear = jax.linearize(local, interior, height, meniscus)
     columns = jnp.arange(ny)
     colour = columns % 3
@@ -278,13 +282,25 @@ def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
     by_height = jax.vmap(jax.vmap(lambda tangent: linear(zero_p, tangent, zero_m)))(seeds(nx))  # [c, i, r, j]
     by_meniscus = jax.vmap(lambda tangent: linear(zero_p, zero_h, tangent))(in_class)  # [c, r, j]
     offset_column = linear(zero_p, jnp.ones_like(height), zero_m)
-    jacobian = jnp.zeros((ny, by_pressure.shape[2], rows, ny), interior.dtype)
+    equations = by_pressure.shape[2]  # R: the Reynolds rows, then (starved) the meniscus row
+    reynolds = jnp.arange(reynolds_rows)
+    shifts = []
     for shift in (-1, 0, 1):  # equation column j, unknown column j + shift: the one of its class
         neighbour = columns + shift
         inside = ((neighbour >= 0) & (neighbour < ny))[:, None, None]
         neighbour = jnp.clip(neighbour, 0, ny - 1)
         by_film = by_height[neighbour % 3, :, :, columns] * inside  # [j, i, r]: ∂F[r, j]/∂H[i, j + shift]
-        jacobian = jacobian + jnp.einsum("jir,ijab->jrab", by_film, influence[:, neighbour])
+        shifts.append((neighbour, inside, by_film))
+    # Reynolds row r, column j: Σ ∂F/∂H[r + along, j + shift] · K[r + along, j + shift], one fused sum
+    elastic = sum(jnp.where((node >= 0) & (node < nx), by_film[:, jnp.clip(node, 0, nx - 1), reynolds], 0.0)[:, :, None, None]
+                  * influence[jnp.clip(node, 0, nx - 1)[None, :], neighbour[:, None]]
+                  for neighbour, _, by_film in shifts for node in (reynolds + along for along in (-1, 0, 1, 2)))
+    if equations > reynolds_rows:  # the meniscus row reads the whole column
+        meniscus_row = sum(jnp.einsum("ji,ijab->jab", by_film[:, :, reynolds_rows], influence[:, neighbour])
+                           for neighbour, _, by_film in shifts)
+        elastic = jnp.concatenate([elastic, meniscus_row[:, None]], axis=1)
+    jacobian = elastic
+    for neighbour, inside, _ in shifts:
         direct = by_pressure[neighbour % 3, :, :, columns] * inside  # [j, a, r]
         jacobian = jacobian.at[columns, :, :, neighbour].add(jnp.transpose(direct, (0, 2, 1)))
     return jacobian, offset_column, by_meniscus[colour, :, columns].T
@@ -480,7 +496,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
             return jacobian(jnp.concatenate([point, menisci]))[:interior + 1, :interior + 1]
 
         settled, _ = newton(held, unknowns[:interior + 1], max_steps=HELD_MENISCUS_STEPS, jacobian=held_jacobian,
-                            shortest=SHORTEST_STEP, floor=tolerance)
+                            shortest=SHORTEST_STEP, floor=tolerance, single_precision_factor=True)
         return jnp.concatenate([settled, menisci])
 
     def newton_then_continuation(_, guess, __):
@@ -499,7 +515,7 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
                                         lambda: unknowns)
             return index + 1, newton(residual, unknowns, stage_loads[index], max_steps=NEWTON_STEPS,
                                      jacobian=lambda point, _: jacobian(point), limit=limited, fallback=True,
-                                     shortest=SHORTEST_STEP, floor=tolerance)[0]
+                                     shortest=SHORTEST_STEP, floor=tolerance, single_precision_factor=True)[0]
 
         def more(state):
             index, unknowns = state

