@@ -9,8 +9,9 @@ Roller with a 12.7 mm flat and 10 mm crown radius, 14.7 mm long, on the outer ra
 1. accuracy against time at 1028 N, flooded and starved by h_oil = 0.8 µm: the formulas, the 1-D
    line contact (129 and 513 nodes), the dense 2-D solver on 25, 33 and 41 × 48 and the public
    scene's grid [65, 129] (65 × 65 on the half domain, the finest it takes), and the matrix-free
-   Newton–Krylov on uniform cells, each against the finest Newton–Krylov solution that converges
-   (257 × 257 flooded, 129 × 129 starved: 257 × 257 starved does not, docs/benchmarks.md);
+   Newton–Krylov on uniform cells (starved: the meniscus model at 129 × 129, the mass-conserving
+   θ-model at 129 × 129 and 257 × 257), each against the Newton–Krylov at the paper's grid
+   (257 × 257 on the half domain): flooded, and starved by the θ-model;
 2. the paper's minimum films at 0.8 µm for 1028 / 1607 / 2471 N (33 × 48; 65 × 65 without 2471 N),
    through the load continuation where Newton at the load fails;
 3. the starvation criterion Er at h_oil = 1.8 and 2.0 µm (33 × 48): from the 1-D start, as the
@@ -42,15 +43,21 @@ from timing import median_time  # noqa: E402
 from diffbearing.finite_line_ehl import finite_line_film  # noqa: E402
 from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
 from diffbearing.line_ehl import density_ratio, line_film  # noqa: E402
+from diffbearing.newton_krylov import COMPILER_OPTIONS  # noqa: E402
 from diffbearing.roller_profile import roller_profile  # noqa: E402
+from diffbearing.starved_finite_line import starved_finite_line_film  # noqa: E402
 
 PROFILE = roller_profile("circular", length=14.7e-3, flat_length=FLAT_LENGTH, crown_radius=10e-3)
 ROLLER_LOAD = LOAD * FLAT_LENGTH
 OIL_LAYER = 0.8e-6
 GRIDS = ((25, 48), (33, 48), (41, 48))
 REFERENCE_GRID = (65, 65)  # the public scene's [65, 129]
-# Newton–Krylov grids by oil layer, the last the accuracy reference: the finest that converges
-KRYLOV_GRIDS = {None: ((129, 129), (257, 257)), OIL_LAYER: ((129, 129),)}
+# Newton–Krylov levels by oil layer (name, solver, grid), the last the accuracy reference: the paper's grid
+KRYLOV_LEVELS = {None: (("Newton–Krylov", finite_line_film_krylov, (129, 129)),
+                        ("Newton–Krylov", finite_line_film_krylov, (257, 257))),
+                 OIL_LAYER: (("Newton–Krylov, meniscus", finite_line_film_krylov, (129, 129)),
+                             ("Newton–Krylov, θ-model", starved_finite_line_film, (129, 129)),
+                             ("Newton–Krylov, θ-model", starved_finite_line_film, (257, 257)))}
 # (grid, loads [N], oil layers [m]): on 65 × 65, 2471 N and the Er pair are left out of this run:
 # 2471 N spent over 10 minutes in the continuation's first stage (1606 N) without converging
 # (docs/validation/lubricant_film.md, §The paper's starved minimum films), and the Er pair's
@@ -63,12 +70,13 @@ RESULTS = Path(__file__).resolve().parent / "results"
 
 
 def finite_line_solver(grid, oil_layer, solver=finite_line_film, **options):
-    """(compiled W → FiniteLineFilm, compile time [s]); `options` go to `solver`."""
+    """(compiled W → FiniteLineFilm, compile time [s]); `options` go to `solver`; a Newton–Krylov
+    compiled with XLA's options for it (`newton_krylov.COMPILER_OPTIONS`), as the CLI does."""
     start = time.perf_counter()
     solve = jax.jit(lambda w: solver(w, RADIUS, SPEED, LUBRICANT["viscosity"], LUBRICANT["pressure_viscosity"],
                                      LUBRICANT["effective_modulus"], PROFILE, 14.7e-3, FLAT_LENGTH, grid=grid,
                                      oil_layer=oil_layer, **options))
-    solve = solve.lower(ROLLER_LOAD).compile()
+    solve = solve.lower(ROLLER_LOAD).compile(None if solver is finite_line_film else COMPILER_OPTIONS)
     return solve, time.perf_counter() - start
 
 
@@ -97,13 +105,18 @@ def level_rows(oil_layer):
         rows.append((f"2-D finite line, {grid[0]} × {grid[1]}", float(result.central), float(result.minimum),
                      bool(result.converged), run, compile_s))
         print(rows[-1], flush=True)
-    for grid in KRYLOV_GRIDS[oil_layer]:
-        solve, compile_s = finite_line_solver(grid, oil_layer, solver=finite_line_film_krylov)
+    for name, solver, grid in KRYLOV_LEVELS[oil_layer]:
+        solve, compile_s = finite_line_solver(grid, oil_layer, solver=solver)
         result, run = timed(solve, ROLLER_LOAD)
-        rows.append((f"2-D finite line, Newton–Krylov, {grid[0]} × {grid[1]}", float(result.central),
+        rows.append((f"2-D finite line, {name}, {grid[0]} × {grid[1]}", float(result.central),
                      float(result.minimum), bool(result.converged), run, compile_s))
         print(rows[-1], flush=True)
     return rows
+
+
+def run_time(seconds):
+    """A run time with its unit: seconds from 1 s up, milliseconds below."""
+    return f"{seconds:.1f} s" if seconds >= 1.0 else f"{seconds * 1e3:.3g} ms"
 
 
 def accuracy_table(title, rows):
@@ -116,7 +129,7 @@ def accuracy_table(title, rows):
         minimum_error = "–" if np.isnan(minimum) else f"{(minimum / reference_minimum - 1) * 100:+.1f} %"
         lines.append(f"| {name} | {central * 1e6:.4f} µm | {minimum_text} | "
                      f"{(central / reference_central - 1) * 100:+.2f} % | {minimum_error} | "
-                     f"{'yes' if converged else 'NO'} | {run * 1e3:.3g} ms | {compile_s:.1f} s |")
+                     f"{'yes' if converged else 'NO'} | {run_time(run)} | {compile_s:.1f} s |")
     return lines + [""]
 
 
@@ -193,8 +206,9 @@ def starvation_criterion(grid, layers):
 def main():
     flooded, starved = level_rows(None), level_rows(OIL_LAYER)
     lines = ["# The starved-EHL paper's finite line contact (2-D): accuracy against time", "",
-             "`python benchmarks/finite_line_ehl.py`: 1028 N, 1000 r/min, errors against the finest Newton–Krylov "
-             "solution that converges (uniform cells: 257 × 257 flooded, 129 × 129 starved); the dense Newton's 65 × 65 "
+             "`python benchmarks/finite_line_ehl.py`: 1028 N, 1000 r/min, errors against the Newton–Krylov at the "
+             "paper's grid (uniform cells, 257 × 257 on the half domain; starved: the mass-conserving θ-model, so a "
+             "meniscus-model level's error is its model's and its grid's together); the dense Newton's 65 × 65 "
              "is the half domain of the public scene's grid [65, 129], the finest it takes. 2-D grids are "
              "named by the half domain solved. Formulas and 1-D: median of 5 runs; 2-D: one run. Formulas and 1-D at "
              "mid-length, load on the flat length; their minimum film is the one of the rolling direction (outlet "
