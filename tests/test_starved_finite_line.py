@@ -54,7 +54,8 @@ def test_the_papers_roller_starved_on_129_squared():
     (0.7008 µm on the same grid, docs/benchmarks.md §Finite line EHL by Newton–Krylov) within 0.5 %,
     the minimum film positive at the flat's end; at 2471 N on the paper's roller with its raceway
     edge, where the meniscus model's coarse grids close the film (h < 0 at the roller end) and the
-    flooded film did not converge from a 33 × 33 coarsest grid, both converge with positive films."""
+    flooded film did not converge from a 33 × 33 coarsest grid, both converge with positive films
+    (each solve jitted, as the CLI runs it)."""
     solve = jax.jit(lambda load, profile: _starved(load, 0.8e-6, (129, 129), profile))
     light = solve(1028.0, PROFILE)
     assert bool(light.converged)
@@ -62,7 +63,9 @@ def test_the_papers_roller_starved_on_129_squared():
     assert 0.0 < float(light.minimum) < float(light.central) and float(light.minimum_position) > 6.35e-3
     heavy = solve(2471.0, PAPERS_PROFILE)
     assert bool(heavy.converged) and 0.0 < float(heavy.minimum) < float(heavy.central)
-    flooded = _solve(2471.0, grid=(129, 129), profile=PAPERS_PROFILE)
+    # jitted, as the CLI runs it: op by op this solve stalls at 129² on round-off alone
+    # (docs/validation/lubricant_film.md §The θ-model by Newton–Krylov)
+    flooded = jax.jit(lambda load: _solve(load, grid=(129, 129), profile=PAPERS_PROFILE))(2471.0)
     assert bool(flooded.converged) and 0.0 < float(flooded.minimum) < float(flooded.central)
 
 
