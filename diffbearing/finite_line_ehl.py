@@ -268,7 +268,6 @@ def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
     P[a, b]; ∂F/∂H₀ (R, ny) for a uniform film offset; ∂F[r, j]/∂X_m,j (R, ny))."""
     rows, ny = interior.shape
     nx = height.shape[0]
-    reynolds_rows = nx - 2  # rows beyond these: the meniscus equations
     _, linear = jax.linearize(local, interior, height, meniscus)
     columns = jnp.arange(ny)
     colour = columns % 3
@@ -282,8 +281,8 @@ def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
     by_height = jax.vmap(jax.vmap(lambda tangent: linear(zero_p, tangent, zero_m)))(seeds(nx))  # [c, i, r, j]
     by_meniscus = jax.vmap(lambda tangent: linear(zero_p, zero_h, tangent))(in_class)  # [c, r, j]
     offset_column = linear(zero_p, jnp.ones_like(height), zero_m)
-    equations = by_pressure.shape[2]  # R: the Reynolds rows, then (starved) the meniscus row
-    reynolds = jnp.arange(reynolds_rows)
+    equations = by_pressure.shape[2]  # R: the Reynolds rows (the nx − 2 interior ones), then (starved) the meniscus row
+    reynolds = jnp.arange(rows)
     shifts = []
     for shift in (-1, 0, 1):  # equation column j, unknown column j + shift: the one of its class
         neighbour = columns + shift
@@ -291,15 +290,18 @@ def local_and_elastic_jacobian(local, interior, height, meniscus, influence):
         neighbour = jnp.clip(neighbour, 0, ny - 1)
         by_film = by_height[neighbour % 3, :, :, columns] * inside  # [j, i, r]: ∂F[r, j]/∂H[i, j + shift]
         shifts.append((neighbour, inside, by_film))
-    # Reynolds row r, column j: Σ ∂F/∂H[r + along, j + shift] · K[r + along, j + shift], one fused sum
-    elastic = sum(jnp.where((node >= 0) & (node < nx), by_film[:, jnp.clip(node, 0, nx - 1), reynolds], 0.0)[:, :, None, None]
-                  * influence[jnp.clip(node, 0, nx - 1)[None, :], neighbour[:, None]]
-                  for neighbour, _, by_film in shifts for node in (reynolds + along for along in (-1, 0, 1, 2)))
-    if equations > reynolds_rows:  # the meniscus row reads the whole column
-        meniscus_row = sum(jnp.einsum("ji,ijab->jab", by_film[:, :, reynolds_rows], influence[:, neighbour])
+    # the elastic part, Reynolds row r, column j: Σ ∂F/∂H[r + along, j + shift] · K[r + along, j + shift]
+    jacobian = 0.0
+    for neighbour, _, by_film in shifts:
+        for along in (-1, 0, 1, 2):
+            node = jnp.clip(reynolds + along, 0, nx - 1)
+            weight = jnp.where(node == reynolds + along, by_film[:, node, reynolds], 0.0)  # [j, r]; 0 off the grid
+            jacobian = jacobian + weight[:, :, None, None] * influence[node[None, :], neighbour[:, None]]
+    if equations > rows:  # the meniscus row reads the whole column
+        meniscus_row = sum(jnp.einsum("ji,ijab->jab", by_film[:, :, rows], influence[:, neighbour])
                            for neighbour, _, by_film in shifts)
-        elastic = jnp.concatenate([elastic, meniscus_row[:, None]], axis=1)
-    jacobian = elastic
+        jacobian = jnp.concatenate([jacobian, meniscus_row[:, None]], axis=1)
+    # plus ∂F/∂P|_H, the direct dependence on the pressures
     for neighbour, inside, _ in shifts:
         direct = by_pressure[neighbour % 3, :, :, columns] * inside  # [j, a, r]
         jacobian = jacobian.at[columns, :, :, neighbour].add(jnp.transpose(direct, (0, 2, 1)))
