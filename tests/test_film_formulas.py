@@ -324,13 +324,15 @@ def test_starved_ehl_paper_as_published_through_the_cli(tmp_path):
 @pytest.mark.slow  # about 2 minutes (2 cores): flooded and starved, each compiled
 def test_newton_krylov_finite_line_through_the_cli(capsys, tmp_path):
     """The public scene with fidelity.solver = "krylov" on [65, 96] (65 × 48 uniform cells on the
-    half, from a 33 × 48 dense solve): both solves converge, the report names the solver, the
-    flooded central film is within 5 % of the paper's 1.207 µm and the starved film is thinner."""
+    half, from a 33 × 48 dense solve): both solves converge, the report names the solver and the
+    starved model it defaults to (the θ-model), the flooded central film is within 5 % of the
+    paper's 1.207 µm and the starved film is thinner."""
     path = tmp_path / "krylov.json"
     code = cli.main(["run", example_scene("starved_roller"), "--json", str(path), "--set", "fidelity.grid=[65, 96]",
                      "--set", 'fidelity.solver="krylov"'])
     out = capsys.readouterr().out
     assert code == 0 and "finite line EHL (Newton–Krylov, 65 × 48 half-domain grid, fully flooded): converged" in out
+    assert "finite line EHL (starved by the oil layer, the mass-conserving θ-model): converged" in out
     values = json.loads(path.read_text())
     film, starvation = values["film"], values["starvation"]
     assert film["converged"] is True and starvation["converged"] is True

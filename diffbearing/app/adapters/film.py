@@ -288,10 +288,13 @@ def _krylov_options(settings: dict) -> dict:
 
 
 def _starvation_model(settings: dict) -> str:
-    """fidelity.starvation_model of the starved finite line contact (default "meniscus"); ValueError
-    naming it where "theta" meets the dense solver (the θ-model runs on Newton–Krylov's uniform grids)."""
-    model = settings["fidelity"].get("starvation_model", "meniscus")
-    if model == "theta" and finite_line_settings(settings)[1] == "dense":
+    """fidelity.starvation_model of the starved finite line contact (default: "meniscus" with the
+    dense solver, "theta" with Newton–Krylov, where the meniscus model does not converge on the
+    paper's grid); ValueError naming it where "theta" meets the dense solver (the θ-model runs on
+    Newton–Krylov's uniform grids)."""
+    solver = finite_line_settings(settings)[1]
+    model = settings["fidelity"].get("starvation_model", "meniscus" if solver == "dense" else "theta")
+    if model == "theta" and solver == "dense":
         raise ValueError("fidelity.starvation_model = \"theta\" runs on Newton–Krylov's uniform grids: set "
                          "fidelity.solver = \"krylov\" (and a fidelity.grid it takes, e.g. [129, 257])")
     return model
@@ -545,8 +548,9 @@ ADAPTER = register(Adapter(
                                doc="finite line EHL: dense Newton (clustered cells) or matrix-free Newton–Krylov "
                                    "(uniform cells); default dense where the grid fits it"),
         "fidelity.starvation_model": Key("choice", choices=("meniscus", "theta"), read_by=("starvation_finite_line",),
-                                         doc="starved finite line EHL: a meniscus per y cell (default) or the "
-                                             "mass-conserving θ-model (Newton–Krylov only)"),
+                                         doc="starved finite line EHL: a meniscus per y cell (the dense solver's "
+                                             "default) or the mass-conserving θ-model (Newton–Krylov only, its "
+                                             "default)"),
     },
     inputs=(InputBuilder(("oil_layer",), ROLLER_KINDS + BALL_BEARING_KINDS, _oil_layer),),
     blocks=(
