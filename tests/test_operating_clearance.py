@@ -1,6 +1,7 @@
 """Operating clearance from fits, temperatures and speed against the elasticity it comes from:
 the compound cylinder and the spinning annulus solved here from u = A r + B/r (+ the body-force
-term) and their boundary conditions, independently of the closed forms the module uses."""
+term) and their boundary conditions, independently of the closed forms the module uses; and
+against SKF's worked example of a pump bearing's operating clearance."""
 
 import jax
 import jax.numpy as jnp
@@ -8,6 +9,7 @@ import numpy as np
 import pytest
 from .helpers import assert_jvp_matches_central_difference
 
+from diffbearing import bearing_fits
 from diffbearing.operating_clearance import (Mounting, fit_pressure, inner_surface_shrinkage,
                                              operating_clearance_change, outer_surface_growth, spin_growth)
 from diffbearing.params import BEARING_STEEL, Material
@@ -156,3 +158,38 @@ def test_clearance_change_derivatives_match_central_differences():
 def test_bad_mounting_is_refused(field, value):
     with pytest.raises(ValueError, match=f"mounting.{field}"):
         Mounting(**{field: value})
+
+
+# SKF, Rolling bearings, PUB BU/P1 17000/1 EN (2018), example C.3 "Centrifugal pump", the NU 311 ECP:
+# d = 55 mm, D = 120 mm (F = 70.5 mm from the NU 311 ECP's product table and E = 106.5 mm from
+# the N 311 ECP's, so D_w = 18 mm), solid steel shaft k6, thick housing K7, Normal clearance, the
+# inner ring 10 °C hotter than the outer ring; SKF's Δr_temp = 0.012 ΔT d_m is α = 12e-6 1/K.
+# Columns (min, avg, max) of the operating clearance, SKF's sign: negative interference, negative
+# reduction. The interferences are the example's Δ₁, Δ₂; the reductions and clearances its results.
+SKF_C3 = {"initial": (40.0, 55.0, 70.0), "shaft": (-32.0, -19.0, -6.0), "housing": (-20.0, 0.0, 20.0),
+          "fit": (-42.0, -15.0, -5.0), "temperature": -11.0, "operating": (-13.0, 30.0, 55.0)}
+
+
+def test_skf_centrifugal_pump_operating_clearance():
+    """SKF's worked example C.3 (constants above): its probable (mean) k6 and K7 interferences are
+    `bearing_fits`' 19 and 0 µm; diffbearing's operating clearance is within 2 % of its probable
+    30 µm and within the printed 1 µm of its −13 and 55 µm; the fit reductions within 2 % (min and
+    probable) or the printed digit (max: 6 µm × d/F), the thermal one within the printed digit
+    (SKF takes d_m = (d + D)/2 = 87.5 mm, the rolling elements' pitch circle here is F + D_w = 88.5 mm)."""
+    bore, outside, inner, outer = 55e-3, 120e-3, 70.5e-3, 106.5e-3
+    assert bearing_fits.shaft_interference("k6", bore) * 1e6 == pytest.approx(-SKF_C3["shaft"][1], abs=1e-9)
+    assert bearing_fits.housing_interference("K7", outside) * 1e6 == pytest.approx(-SKF_C3["housing"][1], abs=1e-9)
+    for column, initial in enumerate(SKF_C3["initial"]):
+        mounting = Mounting(shaft_interference=-SKF_C3["shaft"][column] * 1e-6,
+                            housing_interference=-SKF_C3["housing"][column] * 1e-6,
+                            inner_ring_temperature=10.0, shaft_temperature=10.0, ring_expansion=12e-6,
+                            element_expansion=12e-6, shaft_expansion=12e-6, housing_expansion=12e-6)
+        change = operating_clearance_change(mounting, bore, inner, outer, outside, 0.5 * (outer - inner), BEARING_STEEL)
+        fit = float(change.shaft_fit + change.housing_fit) * 1e6
+        operating = initial + float(change.change) * 1e6
+        assert fit == pytest.approx(SKF_C3["fit"][column], rel=0.02, abs=0.5 if column == 2 else 0.0)
+        assert float(change.thermal) * 1e6 == pytest.approx(SKF_C3["temperature"], abs=0.5)
+        assert float(change.centrifugal) == 0.0
+        assert operating == pytest.approx(SKF_C3["operating"][column], abs=0.5)
+        if column == 1:  # the probable operating clearance
+            assert operating == pytest.approx(SKF_C3["operating"][1], rel=0.02)
