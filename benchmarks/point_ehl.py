@@ -136,6 +136,12 @@ def plot(rows, refinement):
                            label=f"h_c, {nx} × {(nx - 1) // 2}")
         ratio_axis.scatter(ms, [r["minimum"] / r["hd_minimum"] for r in chosen], marker=marker, facecolors="none",
                            edgecolors="k", label=f"h_min, {nx} × {(nx - 1) // 2}")
+    failed = [r for r in rows if not r["converged"]]
+    if failed:
+        ms = [moes(*CASES[r["case"]][1:3], CASES[r["case"]][4])[0] for r in failed]
+        ratio_axis.scatter(ms + ms, [r["central"] / r["hd_central"] for r in failed]
+                           + [r["minimum"] / r["hd_minimum"] for r in failed], marker="x", s=90, color="red",
+                           label="not converged (last iterate)")
     for level in (0.9, 1.1):
         ratio_axis.axhline(level, color="grey", ls="--", lw=0.8)
     ratio_axis.set(xscale="log", xlabel="Moes M", ylabel="numerical / Hamrock–Dowson",
