@@ -354,19 +354,21 @@ def interpolate_level(unknowns, coarse: UniformLevel, fine: UniformLevel):
     return jnp.concatenate([result, jnp.clip(menisci, INLET, highest)])
 
 
-def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=None):
+def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=None, forcing=FORCING_LARGEST,
+                 restart=30):
     """(the finest UniformLevel built from the live `arguments`, its solution with implicit
     derivatives): `start(coarsest level)` → unknowns there, solved by Newton–Krylov in at most
     `coarsest_steps` (None: taken as solved), then interpolated to each finer level and solved
     again in at most NEWTON_STEPS (starved: after the held menisci and the supply continuation of
-    the module docstring); no derivative flows through the iterations.
-    `level_at(*arguments)` → a function (nx, ny) → UniformLevel."""
+    the module docstring); no derivative flows through the iterations. The loosest linear solve
+    is `forcing` on flooded levels and STARVED_FORCING on starved ones; `restart` is GMRES's
+    Krylov dimension. `level_at(*arguments)` → a function (nx, ny) → UniformLevel."""
     solving = level_at(*jax.lax.stop_gradient(arguments))
 
     def solve(level, unknowns, steps, stage=None):
         return newton_krylov(level.residual, unknowns, stage, level.preconditioner, tolerance=tolerance,
                              max_steps=steps, limit=level.limit, scale=level.residual_scale,
-                             loosest=STARVED_FORCING if level.starved else FORCING_LARGEST)[0]
+                             loosest=STARVED_FORCING if level.starved else forcing, restart=restart)[0]
 
     def solve_finer(level, unknowns):
         """Starved: the pressure and H₀ first with the menisci held; then the supply continued
@@ -410,7 +412,7 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
         unknowns = solve_finer(current, interpolate_level(unknowns, previous, current))
         previous = current
     finest = level_at(*arguments)(*levels[-1])
-    return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns))
+    return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns), restart=restart)
 
 
 def line_scales(load, radius, effective_modulus, flat_length):

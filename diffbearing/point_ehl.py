@@ -16,7 +16,8 @@ the deflection is a DC-FFT convolution.
 
 Solver: the finite line contact's matrix-free Newton–Krylov (`finite_line_krylov.solve_nested`):
 on the coarsest grid from the dry Hertz pressure at the Hamrock–Dowson central film, each step
-at most LARGEST_STEP long, then grid by grid, x nodes and y cells doubled, to the finest.
+at most LARGEST_STEP long, then grid by grid, x nodes and y cells doubled, to the finest; every
+linear solve to FORCING in GMRES(RESTART).
 Derivatives implicit through the finest solution.
 
 The starved inlet: `starved_point_ehl` (the mass-conserving θ-model on the same grid).
@@ -40,6 +41,14 @@ COARSEST_STEPS = 120  # Newton–Krylov steps on the coarsest grid, from the Her
 # (50 N, Rx = 10 mm, 3 m/s on 33 × 16); limited, they converge in about 20 steps
 LARGEST_STEP = (0.2, 0.06)
 DOMAIN_SIDE = (1.5, 1.5)  # the half domain across rolling: Y_end = 1.5 a/b_r + 1.5
+# the linear solves: every one to at least 1e-8 relative, in GMRES(100). The column blocks of the
+# preconditioner leave the coupling across columns to GMRES, strong where the cells across rolling
+# are as fine as along it (circles on 257 × 128): with the finite line contact's loosest 1e-3 and
+# GMRES(30) the light circle there stalls at a scaled residual of 1e-5; the fast one (M = 40)
+# stalls with either change alone; with both, each converges in 13 to 15 Newton steps
+# (docs/validation/lubricant_film.md)
+FORCING = 1e-8
+RESTART = 100
 
 
 class PointFilm(eqx.Module):
@@ -134,7 +143,7 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
     arguments = (load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus)
     constants = jax.lax.stop_gradient(arguments)
     finest, unknowns = solve_nested(level_at, arguments, levels, lambda level: _hertz_start(level, constants),
-                                    tolerance, coarsest_steps=COARSEST_STEPS)
+                                    tolerance, coarsest_steps=COARSEST_STEPS, forcing=FORCING, restart=RESTART)
     reference = hertz_scales(load, radius_rolling, radius_transverse, effective_modulus)[0]
     pressure, film, _, error, converged = finest.solution(unknowns, tolerance)
     return film_result(finest, reference, radius_rolling, pressure, film, converged, error)
