@@ -107,6 +107,10 @@ from .raceway_contact import (
     inner_curvature as inner_curvature,
     outer_curvature as outer_curvature,
 )
+from .radial_load_factors import (
+    load_factors as load_factors,
+    relative_axial_load as relative_axial_load,
+)
 from .roller_contact import RollerContact as RollerContact, roller_contact as roller_contact
 from .roller_equilibrium import (
     RollerEquilibrium as RollerEquilibrium,

@@ -468,11 +468,21 @@ def _controls(operating: Operating):
     """(free, offset): which unknowns are solved (1) or prescribed (0), and the prescribed displacement.
 
     With `operating.axial_displacement` the axial displacement δz is held fixed (preload by
-    displacement); otherwise every component follows from the applied load.
+    displacement), with `operating.misalignment` the tilts θx, θy (a ring held by its shaft);
+    every other component follows from the applied load.
     """
-    if operating.axial_displacement is None:
-        return jnp.ones(5), jnp.zeros(5)
-    return jnp.array([1.0, 1.0, 0.0, 1.0, 1.0]), jnp.zeros(5).at[2].set(operating.axial_displacement)
+    free, offset = jnp.ones(5), jnp.zeros(5)
+    if operating.axial_displacement is not None:
+        free, offset = free.at[2].set(0.0), offset.at[2].set(operating.axial_displacement)
+    if operating.misalignment is not None:
+        free, offset = free.at[3:].set(0.0), offset.at[3:].set(operating.misalignment)
+    return free, offset
+
+
+def prescribed_coordinates(operating: Operating):
+    """(5,) 1 where the inner ring's coordinate [δx, δy, δz, θx, θy] is prescribed (its load
+    follows), 0 where it follows from the applied load (`_controls`)."""
+    return 1.0 - _controls(operating)[0]
 
 
 def _displacement(y, unknown, operating):
@@ -624,7 +634,7 @@ class Equilibrium(eqx.Module):
     """Solution of the ring problem: displacement Δ [m, rad] and how it was reached."""
 
     displacement: jax.Array
-    force: jax.Array  # [Fx, Fy, Fz, Mx, My] the balls exert: the applied load, and Fz under displacement control
+    force: jax.Array  # [Fx, Fy, Fz, Mx, My] the balls exert: the applied load, or the reaction of a prescribed coordinate
     converged: jax.Array  # bool: residual below RESIDUAL_TOLERANCE and the state within the model
     residual: jax.Array  # max of the scaled ring residual and the relative ball residuals [-]
     approach_ratio: jax.Array  # largest contact approach / D_w [-] (ball_validity)
@@ -640,7 +650,8 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     outside the model (`ball_validity`: approach beyond 1 % of D_w, a contact angle beyond ±90°).
 
     With `operating.axial_displacement` set, δz is prescribed (preload by displacement) and the
-    axial force is an output (`Equilibrium.force[2]`).
+    axial force is an output (`Equilibrium.force[2]`); with `operating.misalignment`, θx and θy are
+    prescribed and the moments are (`Equilibrium.force[3:]`).
 
     Differentiable with respect to every array leaf of `bearing` and `operating` (implicit adjoint,
     forward and reverse mode). At a singular stiffness (zero load, or a direction the bearing does

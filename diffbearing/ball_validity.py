@@ -15,6 +15,11 @@ raceways. Such a state is reported as not converged, with its reason, rather tha
 * **Contact angle.** A contact angle outside (−90°, 90°) puts the contact on the far side of the
   groove's curvature centre: the ball has been pushed through the raceway.
 
+* **Low shoulder.** An angular-contact bearing's outer ring (or inner ring) is ground away on one side
+  of the groove: a loaded contact at a negative angle would sit on the shoulder that is not there.
+  `lowest_loaded_angle` is checked against 0 for that bearing type by the application layer; a
+  deep-groove bearing's full groove takes either sign.
+
 Peak pressures above the ISO 76 limit (4.2 GPa for ball bearings) remain inside the model: they are
 a warning of the application layer, not an error.
 """
@@ -38,3 +43,10 @@ def largest_contact_angle(inner_angle, outer_angle):
 def within_model(approach_ratio, contact_angle):
     """True where both measures are inside the model's limits (module docstring)."""
     return (approach_ratio <= MAX_APPROACH_FRACTION) & (contact_angle < MAX_CONTACT_ANGLE)
+
+
+def lowest_loaded_angle(inner_load, inner_angle, outer_load, outer_angle):
+    """min over the loaded contacts (Q > 0) of the contact angle α [rad]; +π/2 where none is loaded."""
+    inner = jnp.where(inner_load > 0.0, inner_angle, 0.5 * jnp.pi)
+    outer = jnp.where(outer_load > 0.0, outer_angle, 0.5 * jnp.pi)
+    return jnp.minimum(jnp.min(inner), jnp.min(outer))

@@ -5,10 +5,10 @@
       C_r = b_m f_c (i cos α)^0.7 Z^{2/3} D_w^1.8          (D_w ≤ 25.4 mm)
       C_r = 3.647 b_m f_c (i cos α)^0.7 Z^{2/3} D_w^1.4    (D_w > 25.4 mm),   D_w in mm, C_r in N,
   α the nominal contact angle (0 for deep-groove bearings).
-* `equivalent_dynamic_load` and `basic_rating_life` — ISO 281 eqs. (3)–(4), Table 3: P = X F_r + Y F_a,
-  L10 = (C_r/P)³ [10⁶ revolutions]; radial contact groove bearings take e, Y from f₀F_a/C₀r, which for
-  them is F_a/(Z D_w²) [N, mm] (C₀r = f₀ Z D_w² by ISO 76), angular contact bearings α₀ ≥ 20° the
-  fixed factors of Table 3.
+* `equivalent_dynamic_load` and `basic_rating_life` — ISO 281 eqs. (3)–(4), Table 3 (`radial_load_factors`):
+  P = X F_r + Y F_a, L10 = (C_r/P)³ [10⁶ revolutions]; up to α = 15° e and Y follow the relative axial
+  load f₀ i F_a/C₀r = F_a/(Z D_w² cos α) [N, mm] (C₀r = f₀ i Z D_w² cos α by ISO 76), above it they are
+  constants.
 * `reference_rating_life` — ISO/TS 16281 eqs. (19)–(29): raceway ratings Q_ci, Q_ce from C_r, the
   equivalent ball loads of the rotating inner ring (cubic mean) and the fixed outer ring (10/3 mean)
   from the computed load distribution, and L10r = ((Q_ci/Q_ei)^{-10/3} + (Q_ce/Q_ee)^{-10/3})^{-9/10}.
@@ -18,6 +18,7 @@ All pure JAX (piecewise-linear table interpolation), differentiable almost every
 import jax.numpy as jnp
 import numpy as np
 
+from . import radial_load_factors
 from .params import BallBearing
 
 # ISO 281:2007 Table 2, first column: D_w cos α / D_pw → f_c.
@@ -26,17 +27,6 @@ FC_RATIO = np.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.10,
 FC_VALUE = np.array([29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6, 59.9,
                       59.9, 59.6, 59.0, 58.2, 57.1, 56.0, 54.6, 53.2, 51.7, 50.0, 48.4])
 BM_BALL = 1.3
-
-# ISO 281:2007 Table 3, single-row radial contact groove ball bearings: f₀F_a/C₀r → e, Y (X = 0.56).
-RADIAL_RELATIVE_AXIAL = np.array([0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89])
-RADIAL_E = np.array([0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44])
-RADIAL_Y = np.array([2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00])
-# ISO 281:2007 Table 3, single-row angular contact ball bearings, α = 20°…45°: e, X, Y.
-ANGULAR_ALPHA = np.radians(np.array([20.0, 25.0, 30.0, 35.0, 40.0, 45.0]))
-ANGULAR_E = np.array([0.57, 0.68, 0.80, 0.95, 1.14, 1.34])
-ANGULAR_X = np.array([0.43, 0.41, 0.39, 0.37, 0.35, 0.33])
-ANGULAR_Y = np.array([1.00, 0.87, 0.76, 0.66, 0.57, 0.50])
-
 
 def nominal_contact_angle(bearing: BallBearing):
     """α for the ratings [rad]: 0 for deep-groove (radial contact) bearings, α₀ otherwise."""
@@ -54,24 +44,14 @@ def basic_dynamic_load_rating(bearing: BallBearing):
 
 
 def equivalent_dynamic_load(bearing: BallBearing, force):
-    """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] for force [Fx, Fy, Fz] [N].
-
-    Valid for deep-groove bearings and angular-contact bearings with 20° ≤ α₀ ≤ 45°; for
-    angular-contact bearings below 20° ISO 281 needs C₀r, which is not modelled: the result is NaN.
-    """
+    """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row ball bearing for
+    force [Fx, Fy, Fz] [N]: Table 3 at its nominal contact angle (`nominal_contact_angle`; 0°…45°, NaN
+    beyond) and relative axial load F_a/(Z D_w² cos α) (`radial_load_factors`)."""
     radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
     axial = jnp.abs(force[2])
-    if bearing.kind == "deep_groove_ball":
-        relative_axial = axial / (bearing.ball_count * (bearing.ball_diameter * 1e3) ** 2)
-        e = jnp.interp(relative_axial, RADIAL_RELATIVE_AXIAL, RADIAL_E)
-        x, y = 0.56, jnp.interp(relative_axial, RADIAL_RELATIVE_AXIAL, RADIAL_Y)
-    else:
-        angle = bearing.free_contact_angle
-        e = jnp.interp(angle, ANGULAR_ALPHA, ANGULAR_E)
-        x, y = jnp.interp(angle, ANGULAR_ALPHA, ANGULAR_X), jnp.interp(angle, ANGULAR_ALPHA, ANGULAR_Y)
-        e = jnp.where((angle < ANGULAR_ALPHA[0] - 1e-9) | (angle > ANGULAR_ALPHA[-1] + 1e-9), jnp.nan, e)
-    light_axial = axial <= e * radial
-    return jnp.where(light_axial, radial, x * radial + y * axial)
+    angle = nominal_contact_angle(bearing)
+    relative = radial_load_factors.relative_axial_load(axial, bearing.ball_count, bearing.ball_diameter, angle)
+    return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative)
 
 
 def basic_rating_life(rating, equivalent_load):

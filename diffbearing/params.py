@@ -22,6 +22,7 @@ import jax.numpy as jnp
 import numpy as np
 
 BALL_BEARING_KINDS = ("deep_groove_ball", "angular_contact_ball")
+MAX_MISALIGNMENT = 0.05  # rad: the small-angle limit of an imposed ring tilt (sin θ ≈ θ within 0.04 %)
 
 
 def _as_float(value):
@@ -278,6 +279,8 @@ class Operating(eqx.Module):
     # Preload by axial displacement: δz [m] held fixed (Fz must be 0; the axial force follows).
     axial_displacement: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v),
                                                       default=None)
+    # Imposed inner-ring tilt [θx, θy] [rad] (the moments must be 0; the moments the balls carry follow).
+    misalignment: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
 
     def __check_init__(self):
         check_range("operating.inner_speed", self.inner_speed, unit=" rad/s")
@@ -292,6 +295,11 @@ class Operating(eqx.Module):
         if self.axial_displacement is not None and _is_concrete(self.force) and np.any(np.asarray(self.force)[..., 2] != 0):
             raise ValueError("operating.force: Fz must be 0 with operating.axial_displacement "
                              "(the axial force follows from the prescribed displacement)")
+        check_range("operating.misalignment", self.misalignment, low=-MAX_MISALIGNMENT, high=MAX_MISALIGNMENT,
+                    unit=" rad", why="small-angle misalignment, |θ| < 0.05 rad ≈ 2.9°")
+        if self.misalignment is not None and _is_concrete(self.moment) and np.any(np.asarray(self.moment) != 0):
+            raise ValueError("operating.moment: with operating.misalignment the inner ring's tilt is imposed and the "
+                             "moments follow; give one of them")
 
 
 CAGE_POCKETS = ("outer_lock", "cylindrical")

@@ -227,6 +227,27 @@ def test_preload_by_axial_displacement_inverts_preload_by_force(solve):
     np.testing.assert_allclose(by_displacement.displacement, by_force.displacement, rtol=1e-8, atol=1e-14)
 
 
+def test_imposed_misalignment_inverts_moment_control(solve):
+    """Solve under [Mx, My] = [50, −120] N·m with the tilts free, then impose the tilts found: the
+    moments returned are the applied ones and the other components are unchanged; the moments'
+    derivative with respect to the imposed tilt (the implicit adjoint) matches a central difference."""
+    bearing = deep_groove_6411E()
+    by_moment, _, _ = solve(bearing, Operating(3000 * RPM, 0.0, [6e3, 1e3, 2e3], [50.0, -120.0]))
+    imposed = Operating(3000 * RPM, 0.0, [6e3, 1e3, 2e3], [0.0, 0.0], misalignment=by_moment.displacement[3:])
+    solver = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))
+    by_tilt = solver(bearing, imposed)
+    assert bool(by_tilt.converged)
+    np.testing.assert_allclose(by_tilt.force, [6e3, 1e3, 2e3, 50.0, -120.0], rtol=1e-8, atol=1e-6)
+    np.testing.assert_allclose(by_tilt.displacement, by_moment.displacement, rtol=1e-8, atol=1e-14)
+
+    def moments(tilt):
+        operating = Operating(3000 * RPM, 0.0, [6e3, 1e3, 2e3], [0.0, 0.0], misalignment=tilt)
+        return solver(bearing, operating).force[3:]
+
+    assert_jvp_matches_central_difference(moments, jnp.asarray(by_moment.displacement[3:]), jnp.array([1.0, -0.5]),
+                                          1e-6, rtol=1e-5)
+
+
 def test_inner_raceway_control_converges_and_balances():
     """Inner-raceway control (gyroscopic moment reacted at the inner contact) at 12000 r/min: the
     ball equations and the ring balance hold, and the outer contact angles differ from outer control."""

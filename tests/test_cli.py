@@ -319,3 +319,35 @@ def test_rating_effects_only_when_named():
                                               "effects.friction=palmgren", "lubricant.preset=iso_vg_68",
                                               "lubricant.temperature=60 degC", "lubricant.cleanliness=high"]))
     assert {block.name for block in named.blocks} - plain == rating_blocks
+
+
+def test_switching_an_effect_off_by_set_leaves_its_keys_as_a_warning(capsys):
+    """The ratings example with its life effect switched off: the cleanliness that only a_ISO reads
+    is reported unread, the run goes on; the same key added by --set to a scene that never reads it
+    is still refused."""
+    code, out, err = run_cli(capsys, "run", "gearbox_6411_ratings", "--set", "effects.life=false")
+    assert code == 0, err
+    assert "lubricant.cleanliness is not read with effects.life as set (the scene file's effects read it)" in out
+    code, _, err = run_cli(capsys, "run", "--set", 'lubricant.preset="iso_vg_68"')
+    assert code == 2 and "'lubricant.preset' not read by anything" in err
+
+
+@pytest.mark.parametrize("override, expected", [
+    ("sweep.operating.inner_speed.num=3", {"start": "0 rpm", "stop": "20000 rpm", "num": 3}),
+    ('sweep."operating.inner_speed".stop="100 Hz"', {"start": "0 rpm", "stop": "100 Hz", "num": 201}),
+    ('sweep.operating.inner_speed={start = "1 rpm", stop = "2 rpm", num = 2}', {"start": "1 rpm", "stop": "2 rpm", "num": 2}),
+])
+def test_set_reaches_the_sweep_table(override, expected):
+    scene = load_scene("aero_speed_sweep", [override])
+    assert scene.sweep == {"operating.inner_speed": expected}
+    axis = build_model(scene).sweep_axes["operating.inner_speed"]
+    assert axis.shape == (expected["num"],)
+
+
+@pytest.mark.parametrize("override, named", [
+    ("sweep.operating.inner_sped.num=3", "unknown key 'operating.inner_sped' (did you mean 'operating.inner_speed'?)"),
+    ("sweep.operating.force.num=3", "the scene has no {start, stop, num} sweep of operating.force"),
+])
+def test_a_bad_sweep_override_exits_2(capsys, override, named):
+    code, _, err = run_cli(capsys, "run", "aero_speed_sweep", "--set", override)
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from diffbearing import build_model, load_scene, overrolling, run_model
+from diffbearing.app.report import format_report
 
 from .helpers import BEARING_6411E, central_difference_jvp, example_scene
 
@@ -86,13 +87,17 @@ def test_speed_effects_shift_the_frequencies_from_the_nominal(tmp_path):
 
 
 def test_cylindrical_roller_frequencies_are_the_closed_forms(tmp_path):
-    """A cylindrical roller bearing (α = 0) at 3000 r/min: the textbook forms to 1e-12."""
-    values = run_model(build_model(load_scene(example_scene("cylindrical_roller_bearing"), overrides=[
+    """A cylindrical roller bearing (α = 0) at 3000 r/min: the textbook forms to 1e-12; its report
+    names rollers, not balls."""
+    result = run_model(build_model(load_scene(example_scene("cylindrical_roller_bearing"), overrides=[
         "effects.frequencies=true", "effects.stiffness=false", "effects.life=false",
-        "operating.inner_speed=3000 rpm"])), progress=False).values
+        "operating.inner_speed=3000 rpm"])), progress=False)
+    values = result.values
     want = textbook(50.0, 0.0, 12, 25.4e-3, 106.6e-3, 0.0)
     for field in FIELDS:
         assert float(values[f"frequencies.{field}"]) == pytest.approx(want[field], rel=1e-12), field
+    report = format_report(result)
+    assert "roller pass, outer raceway BPFO" in report and "roller spin BSF" in report and "ball" not in report
 
 
 def test_tapered_roller_rolls_on_both_raceways():

@@ -104,7 +104,7 @@ def test_mounting_table_without_the_effect_is_refused(tmp_path):
 
 
 @pytest.mark.parametrize("change, named", [
-    (('shaft_interference = "15 um"', 'shaft_interference = "2 mm"'), "bearing.radial_clearance must be ≥"),
+    (('shaft_interference = "15 um"', 'shaft_interference = "2 mm"'), "mounting.shaft_interference must be ≥"),
     (('bore = "55 mm"\n', ""), "bearing.bore"),
     (('housing_material = "cast_iron"', 'housing_material = "wood"'), "mounting.housing_material"),
     (('housing_material = "cast_iron"', 'housing_material = "cast_iron"\nshaft_tolerance = "k5"'), "not both"),

@@ -52,10 +52,16 @@ def state_column(name: str, flags, ok: str = "converged") -> tuple[str, list[str
     return name, [ok if flag else "NO" for flag in flags]
 
 
+ROUND_OFF = 1e-9  # relative size below which a stiffness coupling is shown as 0
+
+
 def stiffness_lines(matrix, elements: str) -> list[str]:
     """Report lines of a 5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] in N/µm and N·m/mrad;
-    `elements` names what was re-equilibrated ("balls", "rollers")."""
+    `elements` names what was re-equilibrated ("balls", "rollers"). A coupling below 1e-9 of its
+    diagonals' geometric mean √|K_ii K_jj| (the same units) is rounding noise and shows as 0."""
     k = np.asarray(matrix)
+    diagonal = np.sqrt(np.abs(np.outer(np.diag(k), np.diag(k))))
+    k = np.where(np.abs(k) < ROUND_OFF * diagonal, 0.0, k)
     names = ["x", "y", "z", "θx", "θy"]
     lines = ["", f"Stiffness K = dF/dΔ ({elements} re-equilibrated; rows F: N, M: N·m; columns δ: µm, θ: mrad)",
              "  " + " " * 6 + "".join(f"{'∂/∂' + n:>13}" for n in names)]

@@ -45,6 +45,7 @@ class Model:
     not_implemented: list
     sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a [sweep] table
     idle_settings: list = dataclasses.field(default_factory=list)  # fidelity keys only another level reads
+    switched_off: list = dataclasses.field(default_factory=list)  # keys left unread by an effect an override changed
 
     @property
     def outputs(self) -> dict:
@@ -93,6 +94,8 @@ def build_model(scene: Scene) -> Model:
         if block.validate is not None:
             block.validate(settings, inputs)  # bad grid or tolerance fails here, before compiling
     unread, idle = _unread(scene, blocks, values.asked, axes)
+    switched_off = unread if scene.switched else []  # the file's keys of an effect --set turned off: a warning
+    unread = [] if scene.switched else unread
     if unread:
         effects = ", ".join(f"{k} = {v!r}" for k, v in settings["effects"].items()) or "none"
         raise ValueError(f"scene key{'s' if len(unread) > 1 else ''} {', '.join(repr(k) for k in unread)} "
@@ -100,7 +103,7 @@ def build_model(scene: Scene) -> Model:
                          f"{'them' if len(unread) > 1 else 'it'} or switch on the effect that reads "
                          f"{'them' if len(unread) > 1 else 'it'}")
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,
-                 sweep_axes=axes, idle_settings=idle)
+                 sweep_axes=axes, idle_settings=idle, switched_off=switched_off)
 
 
 def run_model(model: Model, progress: bool = True) -> RunResult:

@@ -23,4 +23,7 @@ class RunResult:
         errors, warnings = problems(self.model.blocks, self.values, shape)
         idle = [f"{key} is not used by this scene's effects (another level of the effect reads it)"
                 for key in self.model.idle_settings]
-        return errors, idle + warnings
+        switched = ", ".join(self.model.scene.switched)
+        unread = [f"{key} is not read with {switched} as set (the scene file's effects read it)"
+                  for key in self.model.switched_off]
+        return errors, idle + unread + warnings

@@ -17,12 +17,14 @@ DEFAULT_EXAMPLE = "aero_angular_contact"
 
 @dataclasses.dataclass(frozen=True)
 class Scene:
-    """A validated scene: `values` maps dotted keys to SI values; `sweep` is the raw [sweep] table."""
+    """A validated scene: `values` maps dotted keys to SI values; `sweep` is the raw [sweep] table;
+    `switched` names the effects an override changed from the file's (their keys may go unread)."""
 
     title: str
     values: dict
     sweep: dict | None
     source: str
+    switched: tuple[str, ...] = ()
 
     @property
     def bearing_type(self) -> str:
@@ -32,6 +34,9 @@ class Scene:
         """{key: value} of one table ("effects", "fidelity", ...)."""
         prefix = name + "."
         return {k[len(prefix):]: v for k, v in self.values.items() if k.startswith(prefix)}
+
+
+SWEEP_FIELDS = ("start", "stop", "num")
 
 
 def parse_override(text: str) -> tuple[str, object]:
@@ -47,15 +52,50 @@ def parse_override(text: str) -> tuple[str, object]:
     return key, value
 
 
+def _sweep_override(document: dict, key: str, value) -> None:
+    """Set one [sweep] entry or one of its fields: `sweep.operating.inner_speed.num=11` (or the
+    entry quoted, `sweep."operating.inner_speed".num`), or a whole entry,
+    `sweep.operating.force=[[...], ...]` / `={start = ..., stop = ..., num = ...}`."""
+    try:
+        path = []
+        tree = tomllib.loads(f"{key} = 0")
+        while isinstance(tree, dict):
+            (name, tree), = tree.items()
+            path.append(name)
+    except (tomllib.TOMLDecodeError, ValueError):
+        raise ValueError(f"--set: cannot read {key!r} as a dotted key") from None
+    field = path[-1] if path[-1] in SWEEP_FIELDS else None
+    entry = ".".join(path[1:-1] if field else path[1:])
+    lookup(entry)
+    sweep = document.setdefault("sweep", {})
+    if field is None:
+        sweep[entry] = value
+    elif isinstance(sweep.get(entry), dict):
+        sweep[entry][field] = value
+    else:
+        raise ValueError(f"--set {key}: the scene has no {{start, stop, num}} sweep of {entry} to change; give the "
+                         f"whole entry, sweep.{entry}={{start = ..., stop = ..., num = ...}}")
+
+
 def apply_overrides(document: dict, overrides) -> dict:
-    """A copy of a parsed scene with each (dotted key, value) set; unknown keys raise ValueError."""
+    """A copy of a parsed scene with each (dotted key, value) set; unknown keys raise ValueError.
+    Keys under `sweep.` set the [sweep] table (`_sweep_override`)."""
     document = copy.deepcopy(document)
     for key, value in overrides:
+        if key.startswith("sweep."):
+            _sweep_override(document, key, value)
+            continue
         lookup(key)
         table, _, name = key.rpartition(".")
         target = document.setdefault(table, {}) if table else document
         target[name] = value
     return document
+
+
+def _switched_effects(original: dict, overridden: dict) -> tuple[str, ...]:
+    """The effects whose value the overrides changed from the file's."""
+    before, after = original.get("effects", {}), overridden.get("effects", {})
+    return tuple(f"effects.{name}" for name in after if before.get(name) != after[name])
 
 
 def _example_files() -> dict:
@@ -93,8 +133,9 @@ def read_document(path: str | None) -> tuple[dict, str]:
 def load_scene(path: str | None = None, overrides=()) -> Scene:
     """Read, override and validate a scene (a file path, a packaged example's name, or None for
     the default example); `overrides` holds 'dotted.key=VALUE' strings."""
-    document, source = read_document(path)
-    document = apply_overrides(document, [parse_override(text) for text in overrides])
+    original, source = read_document(path)
+    document = apply_overrides(original, [parse_override(text) for text in overrides])
     values = validate(document)
     sweep = document.get("sweep")
-    return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source)
+    return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source,
+                 switched=_switched_effects(original, document))

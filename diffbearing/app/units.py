@@ -31,8 +31,22 @@ SI_UNITS = {
 @functools.cache
 def registry() -> pint.UnitRegistry:
     """The one pint registry of diffbearing (rpm, deg, µm, ... all understood; "60 degC" is read as
-    333.15 K, a temperature, not a product with an offset unit)."""
-    return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    333.15 K, a temperature, not a product with an offset unit; "r" and "rev" are revolutions, as in
+    the catalogues' r/min)."""
+    units = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    units.define("rev = revolution")
+    units.define("r = revolution")
+    return units
+
+
+def _angular_speed(quantity: pint.Quantity) -> float:
+    """A speed in rad/s: a unit with an angle in it (rad/s, deg/s, rpm, r/min) converts as it says; a
+    bare frequency (Hz, 1/s, 1/min, min⁻¹) counts revolutions, 2π rad each — not radians, which is
+    pint's reading of 1/s (radian is dimensionless there)."""
+    root = quantity.to_root_units()
+    if "radian" in root.units._units:
+        return float(quantity.to("rad/s").magnitude)
+    return 2.0 * math.pi * float(quantity.to("1/s").magnitude)
 
 
 def to_si(value, dimension: str, key: str) -> float:
@@ -57,7 +71,10 @@ def to_si(value, dimension: str, key: str) -> float:
         raise ValueError(f"{key}: cannot read {value!r} as a quantity ({type(error).__name__})") from None
     target = SI_UNITS[dimension]
     try:
+        if dimension == "angular_speed":
+            return _angular_speed(quantity)
         return float(quantity.to(target).magnitude) if target else float(quantity.to("dimensionless").magnitude)
     except pint.DimensionalityError:
         wanted = dimension.replace("_", " ")
-        raise ValueError(f"{key}: {value!r} is not a {wanted} (expected units convertible to {target or '1'})") from None
+        article = "an" if wanted[0] in "aeiou" else "a"
+        raise ValueError(f"{key}: {value!r} is not {article} {wanted} (expected units convertible to {target or '1'})") from None

@@ -1,6 +1,7 @@
 """Ball bearings: geometry, Hertz constants at the free contact angle, the quasi-static
 equilibrium with its load distribution (always), the stiffness matrix (effect `stiffness`)."""
 
+import jax
 import jax.numpy as jnp
 import numpy as np
 
@@ -12,7 +13,7 @@ from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curva
 from ..formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .materials import material
-from .mounting import ball_operating_clearance
+from .mounting import operating_clearance
 
 # ISO 76:2006, 7.1: contact stress limit at the basic static load rating of ball bearings.
 ISO76_BALL_PRESSURE_LIMIT = 4.2e9  # Pa
@@ -29,8 +30,8 @@ def _bearing(v, built) -> dict:
     bearing = catalogue_bearing(v, ring)
     if built["mounting"] is None:
         return {"bearing": bearing}
-    return {"bearing": with_radial_clearance(bearing, ball_operating_clearance(radial_clearance(bearing),
-                                                                               built["mounting"]))}
+    return {"bearing": with_radial_clearance(bearing, operating_clearance(radial_clearance(bearing), built["mounting"],
+                                                                          v["bearing.pitch_diameter"], v))}
 
 
 def catalogue_bearing(v, ring):
@@ -54,7 +55,7 @@ def _operating(v, built) -> dict:
     return {"operating": Operating(
         inner_speed=v.get("operating.inner_speed", 0.0), outer_speed=v.get("operating.outer_speed", 0.0),
         force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
-        axial_displacement=v.get("operating.axial_displacement"),
+        axial_displacement=v.get("operating.axial_displacement"), misalignment=v.get("operating.misalignment"),
     )}
 
 
@@ -145,9 +146,12 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, operating = inputs["bearing"], inputs["operating"]
     solution = ball_equilibrium.solve_equilibrium(bearing, operating, model)
     balls = ball_equilibrium.ball_results(solution.displacement, bearing, operating, model)
-    out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
+    out = {"displacement": solution.displacement, "force": solution.force,
+           "prescribed": ball_equilibrium.prescribed_coordinates(operating),
+           "free_tilt": free_tilt(solution.displacement, operating), "converged": solution.converged,
            "residual": solution.residual, "validity.approach_ratio": solution.approach_ratio,
-           "validity.contact_angle": solution.contact_angle, "balls.azimuth": balls.azimuth,
+           "validity.contact_angle": solution.contact_angle,
+           "validity.lowest_contact_angle": low_shoulder_angle(bearing, balls), "balls.azimuth": balls.azimuth,
            "balls.orbital_speed": balls.orbital_speed, "balls.spin_speed": balls.spin_speed}
     for side in ("inner", "outer"):
         out |= {f"balls.{side}.{field}": getattr(balls, f"{side}_{field}") for field in _BALL_FIELDS}
@@ -158,10 +162,24 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     return out
 
 
-def validity_errors(approach, angle, subject: str) -> list[str]:
+def low_shoulder_angle(bearing, balls):
+    """The lowest loaded contact angle [rad] of an angular-contact bearing (`ball_validity.lowest_loaded_angle`;
+    its low shoulder lies at α < 0), +π/2 for a deep-groove bearing, whose groove is full."""
+    if bearing.kind != "angular_contact_ball":
+        return jnp.asarray(0.5 * np.pi)
+    return jax.lax.stop_gradient(ball_validity.lowest_loaded_angle(balls.inner_load, balls.inner_contact_angle,
+                                                                   balls.outer_load, balls.outer_contact_angle))
+
+
+def validity_errors(approach, angle, subject: str, lowest=None) -> list[str]:
     """Errors for a ball state outside the model (`ball_validity`): the largest approach / D_w and
-    |contact angle| [rad] of `subject` ("equilibrium", "bearing 1", ...)."""
+    |contact angle| [rad] of `subject` ("equilibrium", "bearing 1", ...), and its lowest loaded
+    contact angle [rad] (`low_shoulder_angle`)."""
     errors = []
+    if lowest is not None and float(lowest) < 0.0:
+        errors.append(f"{subject} outside the model: a ball loaded at α = {np.degrees(float(lowest)):.1f}° on the "
+                      "angular-contact bearing's low-shoulder side (its axial load, −z, pushes the inner ring towards "
+                      "the open side: reverse operating.force[2] or the bearing)")
     if float(approach) > ball_validity.MAX_APPROACH_FRACTION:
         errors.append(f"{subject} outside the model: a contact approach of {float(approach) * 100:.3g} % of Dw passes "
                       f"the limit of {ball_validity.MAX_APPROACH_FRACTION * 100:g} % of Dw (Hertz theory's small "
@@ -172,14 +190,39 @@ def validity_errors(approach, angle, subject: str) -> list[str]:
     return errors
 
 
+FREE_TILT_WARNING = 0.5e-3  # rad: a free inner ring tilting more than this without a moment is worth a word
+
+
+def free_tilt(displacement, operating):
+    """The inner ring's largest tilt [rad] where nothing holds it: its tilts free and no moment applied
+    (0 otherwise)."""
+    if operating.misalignment is not None:
+        return jnp.zeros(())
+    tilt = jnp.max(jnp.abs(displacement[3:]))
+    return jnp.where(jnp.any(operating.moment != 0.0), 0.0, tilt)
+
+
+def free_tilt_warnings(tilt) -> list[str]:
+    """A warning where the inner ring tilts by more than `FREE_TILT_WARNING` with nothing holding it
+    (`free_tilt`): a single bearing under combined load tilts freely unless a shaft holds it, which
+    a catalogue calculation or ISO/TS 16281 takes as a given misalignment."""
+    if float(np.max(tilt)) > FREE_TILT_WARNING:
+        return [f"the inner ring tilts freely by {float(np.max(tilt)) * 1e3:.3g} mrad (no moment given): a bearing on a "
+                "shaft is held by it; set operating.misalignment = [\"0 mrad\", \"0 mrad\"] to hold it aligned, or "
+                "mount it on a shaft ([[bearings]])"]
+    return []
+
+
 def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
     """Errors: a state outside the ball model (ball_validity) or a solver that did not converge;
     warnings: a peak pressure above the ISO 76 static limit."""
     warnings = []
-    errors = validity_errors(values["validity.approach_ratio"], values["validity.contact_angle"], "equilibrium")
+    errors = validity_errors(values["validity.approach_ratio"], values["validity.contact_angle"], "equilibrium",
+                             values["validity.lowest_contact_angle"])
     if not errors and not bool(values["converged"]):
         errors.append(f"equilibrium solver did not converge: largest scaled residual {float(values['residual']):.1e} "
                       f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})")
+    warnings += free_tilt_warnings(values["free_tilt"])
     for side in ("inner", "outer"):
         pressure = np.asarray(values[f"balls.{side}.max_pressure"])
         ball = int(np.argmax(pressure))
@@ -236,13 +279,20 @@ EQUILIBRIUM = Block(
     uses=("centrifugal", "gyroscopic"),
     outputs=(
         Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]", in_report=False),
-        Output("force", "N, N*m", "", "load the balls carry [Fx, Fy, Fz, Mx, My] (Fz follows under axial_displacement)",
+        Output("force", "N, N*m", "", "load the balls carry [Fx, Fy, Fz, Mx, My] (Fz follows under axial_displacement, "
+                                      "Mx, My under misalignment)", in_report=False),
+        Output("prescribed", "", "", "1 where [δx, δy, δz, θx, θy] was prescribed (its load an output), 0 where free",
+               in_report=False),
+        Output("free_tilt", "rad", "mrad", "largest inner-ring tilt with the tilts free and no moment applied (else 0)",
                in_report=False),
         Output("converged", "", "", "the equilibrium solver converged to a state within the model", in_report=False),
         Output("residual", "", "", "largest scaled residual of ring and ball equations", in_report=False),
         Output("validity.approach_ratio", "", "",
                f"largest contact approach δ / Dw (model limit {ball_validity.MAX_APPROACH_FRACTION:g})", in_report=False),
         Output("validity.contact_angle", "rad", "deg", "largest |contact angle| (model limit 90°)", in_report=False),
+        Output("validity.lowest_contact_angle", "rad", "deg", "lowest loaded contact angle of an angular-contact "
+                                                              "bearing (model limit 0: its low shoulder; 90° for deep "
+                                                              "groove)", in_report=False),
         Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x", column="ψ"),
         *_ball_outputs("inner"),
         *_ball_outputs("outer"),
@@ -321,7 +371,10 @@ def _header(result) -> list[str]:
         f"fo = {float(bearing.outer_groove_ratio):.4f}",
         f"Materials  rings {bearing.ring_material.name}, balls {bearing.ball_material.name}",
         f"Operating  inner ring {float(speeds[0]):.1f} r/min, outer ring {float(speeds[1]):.1f} r/min; "
-        f"F = [{', '.join(f'{f:.3f}' for f in force)}] kN; M = [{', '.join(f'{m:.1f}' for m in moment)}] N·m",
+        f"F = [{', '.join(f'{f:.3f}' for f in force)}] kN; " + (
+            f"M = [{', '.join(f'{m:.1f}' for m in moment)}] N·m" if operating.misalignment is None else
+            f"misalignment imposed [θx, θy] = [{', '.join(f'{t * 1e3:.4g}' for t in np.asarray(operating.misalignment))}] "
+            "mrad"),
     ]
 
 
@@ -335,6 +388,13 @@ def _report(result) -> list[str]:
              f"θx = {d[3] * 1e3:.4f} mrad, θy = {d[4] * 1e3:.4f} mrad"]
     if result.model.inputs["operating"].axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
+    if result.model.inputs["operating"].misalignment is not None:
+        lines.append(f"  moments at the imposed misalignment: Mx = {float(values['force'][3]):.4g} N·m, "
+                     f"My = {float(values['force'][4]):.4g} N·m")
+    names = np.array(["δx", "δy", "δz", "θx", "θy"])
+    held = np.asarray(values["prescribed"]) > 0
+    lines.append(f"  free (from the load): {', '.join(names[~held]) or 'none'}; prescribed (load an output): "
+                 f"{', '.join(names[held]) or 'none'}")
     if "stiffness" in values:
         lines += stiffness_lines(values["stiffness"], "balls")
     lines += element_table_lines(result, "Balls (load distribution; semi-axes and spin speed in --json; "
@@ -380,6 +440,9 @@ ADAPTER = register(Adapter(
         "operating.force": Key("quantities", "force", length=3, doc="[Fx, Fy, Fz] on the inner ring"),
         "operating.moment": Key("quantities", "moment", length=2, doc="[Mx, My] on the inner ring"),
         "operating.axial_displacement": quantity("length", "preload by axial displacement: δz held fixed, Fz must be 0"),
+        "operating.misalignment": Key("quantities", "angle", length=2,
+                                      doc="imposed inner-ring tilt [θx, θy] (ball and roller bearings): the ring held "
+                                          "by its shaft; the moments are then outputs (give no operating.moment)"),
         "effects.centrifugal": Key("boolean"),
         "effects.gyroscopic": Key("boolean"),
         "effects.stiffness": Key("boolean"),

@@ -14,12 +14,12 @@ import numpy as np
 from ... import ball_validity
 from ...ball_equilibrium import ball_results
 from ...bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_force, preload_offset
-from ...params import BALL_BEARING_KINDS, _as_float, radial_clearance, with_radial_clearance
+from ...params import BALL_BEARING_KINDS, _as_float, _is_concrete, check_range, radial_clearance, with_radial_clearance
 from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 from ..formatting import format_number, stiffness_lines, swept_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .ball import ADAPTER as BALL_ADAPTER
-from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
+from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, low_shoulder_angle, validity_errors
 from .materials import material
 
 SET = ("bearing.arrangement",)  # the set's layout
@@ -48,6 +48,12 @@ def _layout(v, built) -> dict:
     if "bearing.width" not in v:
         raise ValueError("bearing.arrangement needs bearing.width (the two bearings' centres are a width apart, plus "
                          "bearing.spacer)")
+    if _is_concrete(v["bearing.ball_diameter"]):
+        check_range("bearing.width", v["bearing.width"], low=float(v["bearing.ball_diameter"]), unit=" m",
+                    why="bearing.ball_diameter: a ring holds its ball")
+    check_range("bearing.spacer", v.get("bearing.spacer"), low=0.0, low_open=False, unit=" m")
+    check_range("operating.preload", v.get("operating.preload"), low=0.0, low_open=False, unit=" N",
+                why="a set with end play: a negative operating.preload_offset")
     for key in ("operating.axial_displacement", "operating.outer_speed"):
         if v.get(key, 0.0) not in (0.0, None):
             raise ValueError(f"{key}: not with a bearing set (its preload is operating.preload or "
@@ -85,7 +91,7 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     solution = solve_shaft(shaft)
     out = {"set.displacement": solution.displacement, "set.converged": solution.converged,
            "set.residual": solution.residual, "set.preload_force": preload, "set.preload_offset": offset}
-    approach, angle = [], []
+    approach, angle, lowest = [], [], []
     for number, (support, local, force) in enumerate(zip(supports, solution.bearing_displacements,
                                                          solution.bearing_forces)):
         balls = ball_results(local, bearing, operating, model)
@@ -98,7 +104,9 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
         approach.append(ball_validity.largest_approach_ratio(balls.inner_approach, balls.outer_approach,
                                                              bearing.ball_diameter))
         angle.append(ball_validity.largest_contact_angle(balls.inner_contact_angle, balls.outer_contact_angle))
+        lowest.append(low_shoulder_angle(bearing, balls))
     out["set.validity.approach_ratio"] = jax.lax.stop_gradient(jnp.max(jnp.stack(approach)))
+    out["set.validity.lowest_contact_angle"] = jnp.min(jnp.stack(lowest))
     out["set.validity.contact_angle"] = jax.lax.stop_gradient(jnp.max(jnp.stack(angle)))
     if settings["effects"].get("stiffness", False) is True:
         out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft)
@@ -109,7 +117,8 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
     """Errors: a state outside the ball model or a shaft solve that did not converge; warnings: a
     peak pressure above the ISO 76 limit, a bearing of a preloaded pair that has lost its load."""
     warnings = []
-    errors = validity_errors(values["set.validity.approach_ratio"], values["set.validity.contact_angle"], "set")
+    errors = validity_errors(values["set.validity.approach_ratio"], values["set.validity.contact_angle"], "set",
+                             values["set.validity.lowest_contact_angle"])
     if not errors and not bool(values["set.converged"]):
         errors.append(f"shaft equilibrium of the set did not converge: largest scaled residual "
                       f"{float(values['set.residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})")
@@ -196,6 +205,8 @@ SET_BLOCK = Block(
         Output("set.residual", "", "", "largest scaled residual of the shaft equilibrium", in_report=False),
         Output("set.validity.approach_ratio", "", "", "largest contact approach δ / Dw in the set", in_report=False),
         Output("set.validity.contact_angle", "rad", "deg", "largest |contact angle| in the set", in_report=False),
+        Output("set.validity.lowest_contact_angle", "rad", "deg", "lowest loaded contact angle in the set (model "
+                                                                  "limit 0: the low shoulder)", in_report=False),
         Output("set.stiffness", "N/m, N/rad, N*m/m, N*m/rad", "", "5×5 stiffness of the set at its middle (exact)",
                effect="stiffness", in_report=False),
         *(output for number in range(SET_SIZE) for output in _bearing_outputs(number)),

@@ -13,10 +13,17 @@ from .ball import ball_model
 from .bearing_set import SET, SET_SIZE
 from .roller_bearing import WHOLE_BEARING
 
+# (output field, report label, description); "ball" reads "roller" for a roller bearing (`_fields`)
 FIELDS = (("cage", "cage FTF", "cage (fundamental train) frequency FTF"),
-          ("ball_pass_outer", "ball pass, outer raceway BPFO", "ball (roller) pass frequency, outer raceway BPFO"),
-          ("ball_pass_inner", "ball pass, inner raceway BPFI", "ball (roller) pass frequency, inner raceway BPFI"),
-          ("ball_spin", "ball spin BSF", "ball (roller) spin frequency BSF, rolling relative to the cage"))
+          ("ball_pass_outer", "ball pass, outer raceway BPFO", "ball pass frequency, outer raceway BPFO"),
+          ("ball_pass_inner", "ball pass, inner raceway BPFI", "ball pass frequency, inner raceway BPFI"),
+          ("ball_spin", "ball spin BSF", "ball spin frequency BSF, rolling relative to the cage"))
+
+
+def _fields(element: str) -> tuple:
+    """FIELDS with the labels and descriptions naming the rolling `element` ("ball", "roller"); the
+    output keys stay those of FIELDS for every bearing type."""
+    return tuple((field, label.replace("ball", element), text.replace("ball", element)) for field, label, text in FIELDS)
 
 
 def _keyed(frequencies: overrolling.OverrollingFrequencies, prefix: str) -> dict:
@@ -60,14 +67,15 @@ def _set_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
     return out
 
 
-def _outputs(nominal: bool) -> tuple[Output, ...]:
-    outputs = [Output(f"frequencies.{field}", "Hz", "Hz", text, in_report=False) for field, _, text in FIELDS]
+def _outputs(nominal: bool, element: str) -> tuple[Output, ...]:
+    fields = _fields(element)
+    outputs = [Output(f"frequencies.{field}", "Hz", "Hz", text, in_report=False) for field, _, text in fields]
     outputs += [Output(f"frequencies.orders.{field}", "", "", f"{text}, per revolution of the inner ring relative "
-                                                                "to the outer", in_report=False) for field, _, text in FIELDS]
+                                                                "to the outer", in_report=False) for field, _, text in fields]
     if nominal:
         outputs += [Output(f"frequencies.nominal.{field}", "Hz", "Hz", f"{text}, textbook closed form at the "
                                                                         "nominal angle (deep groove 0, else α0)", in_report=False)
-                    for field, _, text in FIELDS]
+                    for field, _, text in fields]
     return tuple(outputs)
 
 
@@ -76,13 +84,14 @@ def _report(result) -> list[str]:
     if "frequencies.cage" not in values:  # a set: its bearings' frequencies are in the output table
         return []
     nominal = "frequencies.nominal.cage" in values
+    element = "roller" if any(block.name == "roller_frequencies" for block in result.model.blocks) else "ball"
     title = "Overrolling frequencies at the operating contact angles"
     if nominal:
         angle = "0°" if result.model.inputs["bearing"].kind == "deep_groove_ball" else "the free contact angle α0"
         title += f" (nominal: textbook, at {angle})"
     lines = ["", title, f"  {'':<40}{'[Hz]':>12}{'[per rev]':>12}"
              + (f"{'nominal [Hz]':>14}{'difference':>12}" if nominal else "")]
-    for field, label, _ in FIELDS:
+    for field, label, _ in _fields(element):
         value, order = float(values[f"frequencies.{field}"]), float(values[f"frequencies.orders.{field}"])
         line = f"  {label:<40}{value:>12.4f}{order:>12.5f}"
         if nominal:
@@ -103,7 +112,7 @@ ADAPTER = register(Adapter(
         enabled_by=("frequencies", True),
         requires=("equilibrium",),
         inputs=("bearing", "operating"),
-        outputs=_outputs(nominal=True),
+        outputs=_outputs(nominal=True, element="ball"),
         compute=_ball_frequencies,
     ), Block(
         name="roller_frequencies",
@@ -111,7 +120,7 @@ ADAPTER = register(Adapter(
         enabled_by=("frequencies", True),
         requires=(),
         inputs=("bearing", "raceways", "operating"),
-        outputs=_outputs(nominal=False),
+        outputs=_outputs(nominal=False, element="roller"),
         compute=_roller_frequencies,
         scene_keys=WHOLE_BEARING,
     ), Block(

@@ -2,10 +2,11 @@
 ISO/TS 16281 reference rating life from the solved load distribution (balls, or the rollers'
 laminae)."""
 
+import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ... import life, life_modification, roller_life, static_safety
+from ... import life, life_modification, radial_load_factors, roller_life, static_safety
 from ...params import BALL_BEARING_KINDS, check_range
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import column
@@ -27,6 +28,16 @@ def _life(inputs: dict, settings: dict, results: dict) -> dict:
         "life.L10r": life.reference_rating_life(bearing, rating, results["balls.inner.load"],
                                                 results["balls.outer.load"]),
     }
+
+
+def table3_angle(settings: dict, inputs: dict) -> None:
+    """ISO 281 Table 3 rates radial ball bearings up to α = 45°; beyond, the bearing is a thrust
+    bearing of Table 4 (not modelled): ValueError naming the contact angle."""
+    bearing = inputs["bearing"]
+    angle = life.nominal_contact_angle(bearing)
+    if not isinstance(angle, jax.core.Tracer) and float(angle) > radial_load_factors.LARGEST_ANGLE + 1e-12:
+        raise ValueError(f"bearing.contact_angle: ISO 281's equivalent load (life, safety) rates radial ball "
+                         f"bearings up to 45°, got {np.degrees(float(angle)):.4g}°")
 
 
 def ball_load_rating(bearing):
@@ -123,8 +134,23 @@ def _contamination(v, built) -> dict:
     return {"contamination": {"constants": tables[supply][level], **ep_additives}}
 
 
-def _fatigue_load_limit(v, built) -> dict:
-    return {"fatigue_load_limit": v.get("bearing.fatigue_load_limit")}
+def _checked_fatigue_load_limit(v, static_rating):
+    """The scene's C_u [N] inside (0, C₀) (ISO 281 Annex B: the load below which no fatigue
+    occurs lies far below the static rating), or None."""
+    given = v.get("bearing.fatigue_load_limit")
+    if given is not None and not isinstance(static_rating, jax.core.Tracer):
+        check_range("bearing.fatigue_load_limit", given, low=0.0, high=float(static_rating), unit=" N",
+                    why="C0 by ISO 76")
+    return {"fatigue_load_limit": given}
+
+
+def _ball_fatigue_load_limit(v, built) -> dict:
+    return _checked_fatigue_load_limit(v, static_safety.ball_bearing_static_load_rating(built["bearing"]))
+
+
+def _roller_fatigue_load_limit(v, built) -> dict:
+    return _checked_fatigue_load_limit(v, static_safety.roller_bearing_static_load_rating(built["bearing"],
+                                                                                          built["raceways"]))
 
 
 def _lubrication(rolling_element, pitch, static_rating, inputs, speed) -> dict:
@@ -290,7 +316,9 @@ ADAPTER = register(Adapter(
     inputs=(InputBuilder(("load_rating",), ROLLER_KINDS, _load_rating, scene_keys=WHOLE_BEARING),
             InputBuilder(("contamination",), BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT, _contamination,
                          scene_keys=MODIFIED),
-            InputBuilder(("fatigue_load_limit",), BALL_BEARING_KINDS + ROLLER_KINDS, _fatigue_load_limit)),
+            InputBuilder(("fatigue_load_limit",), BALL_BEARING_KINDS, _ball_fatigue_load_limit, after=("bearing",)),
+            InputBuilder(("fatigue_load_limit",), ROLLER_KINDS, _roller_fatigue_load_limit, after=("bearing", "raceways"),
+                         scene_keys=WHOLE_BEARING)),
     blocks=(Block(
         name="life",
         bearing_types=BALL_BEARING_KINDS,
@@ -305,6 +333,7 @@ ADAPTER = register(Adapter(
             Output("life.L10r", "1e6 rev", "1e6 rev", "ISO/TS 16281 reference rating life L10r"),
         ),
         compute=_life,
+        validate=table3_angle,
     ), Block(
         name="roller_life",
         bearing_types=ROLLER_KINDS,

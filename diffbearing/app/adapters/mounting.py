@@ -2,10 +2,12 @@
 fits, the temperatures and the rings' speed (`operating_clearance`), which the equilibrium then
 uses in place of the bearing's own clearance (negative: a preloaded bearing)."""
 
+import jax
+
 from ... import bearing_fits
 from ...operating_clearance import (RING_EXPANSION, SEAT_MATERIALS, Mounting, OperatingClearance,
                                    operating_clearance_change)
-from ...params import BALL_BEARING_KINDS, radial_clearance
+from ...params import BALL_BEARING_KINDS, check_range, radial_clearance
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
 from .materials import material
@@ -13,6 +15,15 @@ from .materials import material
 TEMPERATURES = ("inner_ring", "outer_ring", "shaft", "housing")
 ROUGHNESSES = ("shaft", "inner_ring", "outer_ring", "housing")  # Rz of the shaft seat, ring bore, ring outside, housing bore
 EFFECT_ON = "effects.mounting"
+# The envelope of the fit and temperature model (docs/theory.md §Envelopes): linear expansion and
+# elastic rings hold for through-hardened bearing steel from −60 °C to +250 °C (its dimensional
+# stabilisation classes end at 250 °C, SN at 120 °C); an interference above 1 % of the fit diameter
+# lies beyond every ISO 286 fit and the rings' elastic range; expansion coefficients of engineering
+# metals and filled polymers lie in (0, 1e-4) 1/K.
+TEMPERATURE_RANGE = (213.15, 523.15)  # K
+INTERFERENCE_SHARE = 0.01  # of the fit diameter
+EXPANSION_LIMIT = 1e-4  # 1/K
+OPERATING_CLEARANCE_FLOOR = 0.01  # of d_m: −G_r above that is outside the preloaded bearing's model
 WHOLE_BEARING = ("operating.force",)  # a whole roller bearing's layout (as adapters/roller_bearing.py)
 
 
@@ -28,6 +39,7 @@ def _mounting(v, built) -> dict:
     if "bearing.bore" not in v or "bearing.outer_diameter" not in v:
         raise ValueError("effects.mounting needs bearing.bore and bearing.outer_diameter (the rings' thickness "
                          "for the fits)")
+    _check_envelope(v)
     shaft, shaft_expansion = SEAT_MATERIALS[v.get("mounting.shaft_material", "steel")]
     housing, housing_expansion = SEAT_MATERIALS[v.get("mounting.housing_material", "steel")]
     reference = v.get("mounting.reference_temperature", 293.15)
@@ -53,6 +65,44 @@ def _mounting(v, built) -> dict:
         material(v), v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))}
 
 
+def _check_envelope(v) -> None:
+    """The [mounting] table inside the model's envelope (the constants above); ValueError names the key."""
+    for name in ("reference", *TEMPERATURES):
+        check_range(f"mounting.{name}_temperature", v.get(f"mounting.{name}_temperature"), low=TEMPERATURE_RANGE[0],
+                    high=TEMPERATURE_RANGE[1], low_open=False, high_open=False, unit=" K", why="−60 °C to 250 °C")
+    for name in ("shaft_expansion", "housing_expansion"):
+        check_range(f"mounting.{name}", v.get(f"mounting.{name}"), low=0.0, high=EXPANSION_LIMIT, unit=" 1/K")
+    for seat, diameter in (("shaft", "bearing.bore"), ("housing", "bearing.outer_diameter")):
+        limit = INTERFERENCE_SHARE * v[diameter]
+        check_range(f"mounting.{seat}_interference", v.get(f"mounting.{seat}_interference"), low=-limit, high=limit,
+                    low_open=False, high_open=False, unit=" m", why=f"±1 % of {diameter}")
+    check_range("mounting.shaft_bore", v.get("mounting.shaft_bore"), low=0.0, high=v["bearing.bore"], low_open=False,
+                unit=" m", why="a hollow shaft's bore inside bearing.bore")
+    check_range("mounting.housing_outer_diameter", v.get("mounting.housing_outer_diameter"),
+                low=v["bearing.outer_diameter"], unit=" m", why="a housing around bearing.outer_diameter")
+
+
+def operating_clearance(own, change: OperatingClearance, pitch, v):
+    """The operating diametral clearance [m]: the bearing's own `own` changed by its mounting. Where it
+    falls below −1 % of d_m (`pitch` [m]), ValueError names the scene key behind the largest closing
+    contribution (the fit's interference or class, the temperatures, the speed) rather than the
+    bearing's clearance, which the user did not set wrong."""
+    running = own + change.change
+    if not any(isinstance(x, jax.core.Tracer) for x in (running, pitch)):  # a sweep's corners were checked
+        floor = -OPERATING_CLEARANCE_FLOOR * float(pitch)
+        if float(running) < floor:
+            given = lambda seat: f"mounting.{seat}_tolerance" if f"mounting.{seat}_tolerance" in v \
+                else f"mounting.{seat}_interference"
+            culprits = {"shaft_fit": given("shaft"), "housing_fit": given("housing"),
+                        "thermal": "mounting.inner_ring_temperature",
+                        "centrifugal": "operating.inner_speed"}
+            largest = min(culprits, key=lambda name: float(getattr(change, name)))
+            raise ValueError(f"{culprits[largest]}: the mounting closes the clearance to {float(running) * 1e6:.4g} µm "
+                             f"({largest.replace('_', ' ')} {float(getattr(change, largest)) * 1e6:.4g} µm), below the "
+                             f"model's floor of −1 % of d_m ({floor * 1e6:.4g} µm)")
+    return running
+
+
 def _interference(v, seat: str, diameter: str, from_class):
     """The scene's diametral interference of the `seat` ("shaft", "housing") [m]: given, or from
     its ISO 286 class at `mounting.fit_value` (`bearing_fits`), or 0."""
@@ -62,12 +112,6 @@ def _interference(v, seat: str, diameter: str, from_class):
     if tolerance in v:
         return from_class(v[tolerance], v[diameter], v.get("mounting.fit_value", "probable"))
     return v.get(given, 0.0)
-
-
-def ball_operating_clearance(own, change: OperatingClearance):
-    """The diametral clearance [m] a ball bearing runs with: its own changed by the mounting
-    (negative: preloaded, `params.contact_angle_and_interference`)."""
-    return own + change.change
 
 
 def _outputs(change: OperatingClearance, running) -> dict:

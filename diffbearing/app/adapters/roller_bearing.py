@@ -24,6 +24,7 @@ from ..formatting import (element_table_lines, format_number, state_column, stif
                           to_display)
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, convergence_checks, quantity, register
 from .ball import stiffness_against_sweep
+from .mounting import operating_clearance
 from .roller import contact_settings, profile_line
 
 WHOLE_BEARING = ("operating.force",)  # the scene key of this layout (registry: a whole roller bearing)
@@ -65,7 +66,7 @@ def scene_raceways(v, built) -> dict:
     pitch, clearance, cup = (v["bearing.pitch_diameter"], v.get("bearing.radial_clearance", 0.0),
                              v.get("bearing.contact_angle", 0.0))
     if built["mounting"] is not None:  # effects.mounting: the operating clearance
-        clearance = clearance + built["mounting"].change
+        clearance = operating_clearance(clearance, built["mounting"], pitch, v)
     if any(_traced(x) for x in (pitch, clearance, cup, bearing.cone_half_angle, bearing.large_diameter)):
         # a sweep's point: its corners were validated with concrete values (sweep.check_corners),
         # and `roller_raceways` writes bounds made of these values into its messages with float()
@@ -508,8 +509,8 @@ ADAPTER = register(Adapter(
         "operating.force": Key("quantities", "force", length=3, doc="[Fx, Fy, Fz] on the inner ring"),
         "operating.moment": Key("quantities", "moment", length=2, doc="[Mx, My] on the inner ring"),
         "operating.misalignment": Key("quantities", "angle", length=2,
-                                      doc="roller bearings: imposed inner-ring tilt [θx, θy]; the moments are then "
-                                          "outputs (give no operating.moment)"),
+                                      doc="imposed inner-ring tilt [θx, θy] (ball and roller bearings): the ring held "
+                                          "by its shaft; the moments are then outputs (give no operating.moment)"),
         "operating.inner_speed": quantity("angular_speed"),
         "operating.outer_speed": quantity("angular_speed"),
         "effects.centrifugal": Key("boolean"),

@@ -12,7 +12,7 @@ from ...params import BALL_BEARING_KINDS, SILICON_NITRIDE
 from ...roller_geometry import ROLLER_KINDS
 from ..registry import SHAFT, Adapter, Block, Key, Output, register
 from .bearing_set import SET, SET_SIZE
-from .life import ball_load_rating, roller_load_ratings
+from .life import ball_load_rating, roller_load_ratings, table3_angle
 from .roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 
@@ -149,6 +149,7 @@ ADAPTER = register(Adapter(
         outputs=(*_outputs("3", "0.01"), HYBRID_OUTPUT),
         compute=_ball_safety,
         checks=_ball_checks,
+        validate=table3_angle,
     ), Block(
         name="roller_safety",
         bearing_types=ROLLER_KINDS,

@@ -28,7 +28,7 @@ from ..formatting import format_number, stiffness_lines
 from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
 from ..units import to_si
 from .ball import ADAPTER as BALL_ADAPTER
-from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, validity_errors
+from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, low_shoulder_angle, validity_errors
 from .life import ball_bearing_life, roller_bearing_life
 from .materials import material
 from .roller import scene_roller_bearing
@@ -132,6 +132,20 @@ def _sections(v, positions, loads) -> tuple:
                                 v.get("shaft.stiffness_at", 0.0), v.get("shaft.element_length"))
 
 
+def _check_spacing(entries) -> None:
+    """Two bearings' centres at least one rolling element apart (closer, their rows would overlap: a
+    double-row bearing is not two [[bearings]] at one position); ValueError names the later one."""
+    size = lambda entry: max(entry.get(f"bearing.{name}", 0.0) for name in ("ball_diameter", "roller_diameter",
+                                                                            "roller_large_diameter"))
+    order = sorted(range(len(entries)), key=lambda index: entries[index]["position"])
+    for first, second in zip(order, order[1:]):
+        gap = abs(entries[second]["position"] - entries[first]["position"])
+        least = max(size(entries[first]), size(entries[second]))
+        if gap < least:
+            raise ValueError(f"bearings[{max(first, second)}].position: {gap * 1e3:.4g} mm from bearings"
+                             f"[{min(first, second)}], closer than one rolling element ({least * 1e3:.4g} mm)")
+
+
 def _layout(v, built) -> dict:
     shared = {key: v[key] for key in v if key.startswith("material.")}  # (items() would mark every key read)
     bearings, envelopes = [], []
@@ -149,6 +163,7 @@ def _layout(v, built) -> dict:
                              "bearing on a shaft")
     loads = v["loads"]
     positions = [entry["position"] for entry in v["bearings"]]
+    _check_spacing(v["bearings"])
     sections, mesh = _sections(v, positions, loads)
     return {"shaft": ShaftLayout(
         tuple(bearings), positions, [entry["offset"] for entry in v["bearings"]],
@@ -175,14 +190,16 @@ def _results(support, local, speed):
 
 
 def _validity(support, elements):
-    """(largest approach / D_w, largest |contact angle|) of a ball bearing (`ball_validity`), from
-    its results; zeros for a roller bearing."""
+    """(largest approach / D_w, largest |contact angle|, lowest loaded angle of an angular-contact
+    bearing) of a ball bearing (`ball_validity`, `low_shoulder_angle`), from its results; (0, 0, π/2)
+    for a roller bearing."""
     if isinstance(support, BallSupport):
         return jax.lax.stop_gradient(jnp.stack([
             ball_validity.largest_approach_ratio(elements.inner_approach, elements.outer_approach,
                                                  support.bearing.ball_diameter),
-            ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle)]))
-    return jnp.zeros(2)
+            ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle),
+            low_shoulder_angle(support.bearing, elements)]))
+    return jnp.array([0.0, 0.0, 0.5 * jnp.pi])
 
 
 def _life(support, elements):
@@ -277,8 +294,8 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
 
 
 def _checks(values: dict) -> tuple[list[str], list[str]]:
-    errors = [line for number, (approach, angle) in enumerate(np.asarray(values["bearings.validity"]))
-              for line in validity_errors(approach, angle, f"bearing {number}")]
+    errors = [line for number, (approach, angle, lowest) in enumerate(np.asarray(values["bearings.validity"]))
+              for line in validity_errors(approach, angle, f"bearing {number}", lowest)]
     if not errors and not bool(values["shaft.converged"]):
         errors.append(f"shaft equilibrium did not converge: largest scaled residual {float(values['shaft.residual']):.1e} "
                       f"(tolerance {RESIDUAL_TOLERANCE:g})")
@@ -347,8 +364,9 @@ BLOCK = Block(
                in_report=False),
         Output("bearings.max_pressure", "Pa", "GPa", "each bearing's peak Hertz pressure (rollers: of their laminae)",
                in_report=False),
-        Output("bearings.validity", "-, rad", "", "each bearing's largest approach / Dw and |contact angle| "
-               "(model limits 1 %, 90°)", in_report=False),
+        Output("bearings.validity", "-, rad, rad", "", "each bearing's largest approach / Dw, largest |contact angle| "
+               "and lowest loaded contact angle of an angular-contact bearing (model limits 1 %, 90°, 0)",
+               in_report=False),
         Output("bearings.elements.azimuth", "rad", "deg", "each bearing's element azimuths ψ in its own frame "
                "(NaN beyond its element count)", in_report=False),
         *(output for side in ("inner", "outer") for output in (

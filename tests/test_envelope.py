@@ -1,0 +1,103 @@
+"""The model's envelope (docs/theory.md §Envelopes): a scene value outside it is refused with a
+ValueError (exit 2 from the CLI) that names the key the user wrote and the allowed range."""
+
+from pathlib import Path
+
+import pytest
+
+import diffbearing.scenes
+
+from diffbearing import build_model, load_scene
+
+
+SCENES = Path(diffbearing.scenes.__file__).parent
+
+
+def refused(example: str, *overrides: str) -> str:
+    with pytest.raises(ValueError) as error:
+        build_model(load_scene(example, list(overrides)))
+    return str(error.value)
+
+
+@pytest.mark.parametrize("override, message", [
+    ('mounting.shaft_interference="5 mm"', "mounting.shaft_interference must be ≥ -0.00055 m and ≤ 0.00055 m"),
+    ('mounting.inner_ring_temperature="-300 degC"', "mounting.inner_ring_temperature must be ≥ 213.15 K"),
+    ('mounting.outer_ring_temperature="2000 degC"', "mounting.outer_ring_temperature must be ≥ 213.15 K and ≤ 523.15 K"),
+    ('mounting.shaft_bore="80 mm"', "mounting.shaft_bore must be ≥ 0 m and < 0.055 m (a hollow shaft's bore inside"),
+    ('mounting.housing_outer_diameter="100 mm"', "mounting.housing_outer_diameter must be > 0.14 m"),
+    ("mounting.shaft_expansion=-1e-5", "mounting.shaft_expansion must be > 0 1/K and < 0.0001 1/K"),
+    ('mounting.housing_expansion="1e-3 1/K"', "mounting.housing_expansion must be > 0 1/K and < 0.0001 1/K"),
+])
+def test_mountings_outside_the_envelope_name_their_key(override, message):
+    assert message in refused("mounted_6411", override)
+
+
+def test_a_mounting_that_closes_the_clearance_beyond_the_model_names_the_fit():
+    """An interference within ±1 % of the bore whose fit still closes the clearance below −1 % of d_m
+    (a 97.5 mm pitch, a thin inner ring) names the fit, not bearing.radial_clearance."""
+    message = refused("mounted_6411", 'mounting.shaft_interference="0.54 mm"', 'bearing.bore="54 mm"',
+                      'mounting.housing_interference="1.4 mm"')
+    assert message.startswith("mounting.housing_interference: the mounting closes the clearance to"), message
+    assert "below the model's floor of −1 % of d_m (-975 µm)" in message
+
+
+@pytest.mark.parametrize("override, message", [
+    ('bearing.width="0 mm"', "bearing.width must be > 0.01"),
+    ('bearing.spacer="-2 mm"', "bearing.spacer must be ≥ 0 m"),
+    ('operating.preload="-500 N"', "operating.preload must be ≥ 0 N (a set with end play"),
+])
+def test_sets_outside_the_envelope_name_their_key(override, message):
+    assert message in refused("spindle_pair", override)
+
+
+def test_two_shaft_bearings_closer_than_a_ball_are_refused(tmp_path):
+    scene = tmp_path / "one_position.toml"
+    scene.write_text((SCENES / "gearbox_shaft.toml").read_text().replace('position = "100 mm"', 'position = "-90 mm"'))
+    assert "bearings[1].position: 10 mm from bearings[0], closer than one rolling element (26.99 mm)" in refused(str(scene))
+
+
+@pytest.mark.parametrize("example, overrides, message", [
+    ("gearbox_6411_ratings", ['bearing.fatigue_load_limit="0 N"'], "bearing.fatigue_load_limit must be > 0 N and < 62016 N"),
+    ("gearbox_6411_ratings", ['bearing.fatigue_load_limit="200 kN"'], "< 62016 N (C0 by ISO 76), got 200000 N"),
+    ("cylindrical_roller_bearing", ['bearing.fatigue_load_limit="1000 kN"', "effects.life=true",
+                                    'lubricant.cleanliness="high"', 'lubricant.preset="iso_vg_68"'],
+     "bearing.fatigue_load_limit must be > 0 N and < 150170 N (C0 by ISO 76)"),
+])
+def test_a_fatigue_load_limit_outside_zero_to_c0_is_refused(example, overrides, message):
+    assert message in refused(example, *overrides)
+
+
+@pytest.mark.parametrize("effect", ["effects.life=true", "effects.safety=true"])
+def test_an_angle_beyond_table_3_is_refused_where_a_rating_needs_it(effect):
+    message = refused("aero_angular_contact", 'bearing.contact_angle="50 deg"', effect)
+    assert message == "bearing.contact_angle: ISO 281's equivalent load (life, safety) rates radial ball bearings up " \
+                      "to 45°, got 50°"
+
+
+LOW_SHOULDER_SCENE = """title = "a 40° angular-contact bearing (7205 B type) loaded against its low shoulder"
+[bearing]
+type = "angular_contact_ball"
+ball_diameter = "7.938 mm"
+pitch_diameter = "38.5 mm"
+balls = 12
+inner_groove_ratio = 0.52
+outer_groove_ratio = 0.53
+contact_angle = "40 deg"
+[operating]
+inner_speed = "3000 rpm"
+force = ["0 N", "0 N", "-2 kN"]
+"""
+
+
+def test_an_axial_load_against_the_low_shoulder_exits_3(tmp_path, capsys):
+    """Fz = −2 kN pushes the inner ring towards the open side: the solved contacts sit at −41.6°, a
+    state the full-groove model reaches but no angular-contact bearing has; +2 kN is fine."""
+    from diffbearing.app import cli
+
+    path = tmp_path / "low_shoulder.toml"
+    path.write_text(LOW_SHOULDER_SCENE)
+    assert cli.main(["run", str(path)]) == 3
+    err = capsys.readouterr().err
+    assert "equilibrium outside the model: a ball loaded at α = -41.6° on the angular-contact bearing's " \
+           "low-shoulder side" in err and len(err.strip().splitlines()) == 1
+    assert cli.main(["run", str(path), "--set", 'operating.force=["0 N", "0 N", "2 kN"]']) == 0

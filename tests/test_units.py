@@ -1,0 +1,39 @@
+"""Scene quantities and their display: speeds as engineers write them (docs/scenes.md §Scene files) — a bare frequency
+counts revolutions, an angle per time converts as written, a bare number is SI."""
+
+import math
+
+import numpy as np
+import pytest
+
+from diffbearing.app.formatting import stiffness_lines
+from diffbearing.app.units import to_si
+
+THREE_THOUSAND_RPM = 3000.0 * 2.0 * math.pi / 60.0  # rad/s
+
+
+@pytest.mark.parametrize("written", ["3000 r/min", "3000 rpm", "3000 rev/min", "3000 1/min", "3000 min⁻¹",
+                                     "3000 min^-1", "50 Hz", "50 1/s", "50 rps", "0.05 kHz"])
+def test_every_spelling_of_a_shaft_speed_is_revolutions(written):
+    assert to_si(written, "angular_speed", "operating.inner_speed") == pytest.approx(THREE_THOUSAND_RPM, rel=1e-15)
+
+
+@pytest.mark.parametrize("written, expected", [("50 rad/s", 50.0), (50, 50.0), ("18000 deg/s", THREE_THOUSAND_RPM)])
+def test_angles_per_time_and_bare_numbers_convert_as_written(written, expected):
+    assert to_si(written, "angular_speed", "operating.inner_speed") == pytest.approx(expected, rel=1e-15)
+
+
+def test_a_speed_with_the_wrong_dimension_names_its_key():
+    with pytest.raises(ValueError, match=r"shaft.speed: '3 N' is not an angular speed"):
+        to_si("3 N", "angular_speed", "shaft.speed")
+
+
+def test_stiffness_round_off_prints_as_zero():
+    """A coupling of 1e-15 N/m beside diagonals of 1e9 N/m is rounding noise: the report shows 0; a
+    real coupling (a tenth of the diagonals) is printed."""
+    matrix = np.diag([1e9, 1e9, 2e8, 3e5, 3e5])
+    matrix[0, 1] = matrix[1, 0] = 1e-15
+    matrix[2, 4] = 1e6
+    rows = stiffness_lines(matrix, "balls")[3:]
+    assert rows[0].split() == ["Fx", "1000", "0", "0", "0", "0"]
+    assert rows[2].split()[-1] == "1000"
