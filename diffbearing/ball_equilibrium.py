@@ -90,6 +90,9 @@ RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled ring residual and ball re
 
 RING_STEP_TOLERANCE = 1e-11  # ring Newton stops when every scaled step component is below this × (1 + |y|)
 RING_MAX_STEPS = 100
+# Speed continuation of the ring solve with speed effects (`_ring_solve`): fractions of the ring
+# speeds whose squares rise in equal steps (centrifugal force and gyroscopic moment ∝ ω²).
+SPEED_STAGES = tuple(float(x) for x in (((1.0 + jnp.arange(4)) / 4.0) ** 0.5))
 # The static energy is only the start for Newton: a gradient of 1e-8 (scaled) is close enough, and
 # the energy's rounding error stops Armijo's test from resolving much less.
 STATIC_GRADIENT_TOLERANCE = 1e-8
@@ -203,6 +206,16 @@ def _contact_angles(centres, positions):
     return jnp.arctan2(to_inner[..., 0], to_inner[..., 1]), jnp.arctan2(positions[..., 0], positions[..., 1])
 
 
+def _facing(approach, radial_component):
+    """The approach [m] of a contact whose groove faces the ball: a ring's groove is the arc on the
+    ring's side of its curvature centre, so a ball beyond that centre (the radial component of the
+    ball-to-contact normal ≤ 0, |α| ≥ 90°) does not touch it, however far the full circle would
+    overlap it; its approach is then −|δ| (open). Without this the circle's far side gives loaded
+    'contacts' at |α| > 90° (the far balls of a ring moved by more than its clearance), spurious
+    roots and diverging Newton steps (docs/theory.md §Numerical notes)."""
+    return jnp.where(radial_component > 0.0, approach, -jnp.abs(approach))
+
+
 def ball_state(bearing: BallBearing, operating: Operating, centres, positions, model: BallModel, constants=None,
                table=None):
     """Per-ball contact and kinematic state for ball centres `positions` (Z, 2); SI units.
@@ -213,16 +226,19 @@ def ball_state(bearing: BallBearing, operating: Operating, centres, positions, m
     """
     inner_offset, outer_offset = _groove_offsets(bearing)
     to_inner = centres - positions
-    outer_approach = jnp.linalg.norm(positions, axis=-1) - outer_offset
-    inner_approach = jnp.linalg.norm(to_inner, axis=-1) - inner_offset
     outer_angle = jnp.arctan2(positions[..., 0], positions[..., 1])
     inner_angle = jnp.arctan2(to_inner[..., 0], to_inner[..., 1])
+    outer_approach = _facing(jnp.linalg.norm(positions, axis=-1) - outer_offset, positions[..., 1])
+    inner_approach = _facing(jnp.linalg.norm(to_inner, axis=-1) - inner_offset, to_inner[..., 1])
     if constants is None:
         constants = hertz_constants(bearing, inner_angle, outer_angle, model, table)
     k_inner, k_outer = constants
     ratio = bearing.ball_diameter / bearing.pitch_diameter
     relative_speed = operating.inner_speed - operating.outer_speed
-    orbital, spin, beta = kinematics.ball_speeds(relative_speed, inner_angle, outer_angle, ratio, model.race_control)
+    # a ball beyond the inner groove's centre (|α_i| ≥ 90°, no contact there) rolls on the outer
+    # raceway alone: its speeds at α_i = α_o, not at the direction of a contact that does not exist
+    rolling_inner = jnp.where(to_inner[..., 1] > 0.0, inner_angle, outer_angle)
+    orbital, spin, beta = kinematics.ball_speeds(relative_speed, rolling_inner, outer_angle, ratio, model.race_control)
     orbital = orbital + operating.outer_speed
     state = dict(
         inner_approach=inner_approach, outer_approach=outer_approach,
@@ -329,6 +345,16 @@ def _ball_equations(positions, args):
     return _masked_residual(positions, centres, bearing, operating, model, free, table=table)
 
 
+def _solve_ball_blocks(blocks, rhs, scale):
+    """x with (J_j − μ I) x_j = rhs_j for each ball's 2×2 block J_j (Z, 2, 2) and right-hand sides
+    (Z, 2, k), μ = 1e-12 (max |J_j| + `scale` [N/m]). A ball touching neither raceway has J_j = 0:
+    the shift makes its Newton step a (limited) move along the net force on it — the centrifugal
+    force carries it out to the outer raceway — where a bare solve would return NaN; a ball in
+    contact has J_j ≈ −(contact stiffness), which μ leaves unchanged to 1e-12."""
+    shift = 1e-12 * (jnp.max(jnp.abs(blocks), axis=(-2, -1)) + scale)
+    return jnp.linalg.solve(blocks - shift[..., None, None] * jnp.eye(2), rhs)
+
+
 def _ball_step(positions, args):
     """(Z, 2) per-ball Newton step −J⁻¹g [m], each ball's 2×2 Jacobian (`_ball_blocks`) with the
     Hertz constants held at the current contact angles (their weak angle dependence left out)."""
@@ -336,7 +362,7 @@ def _ball_step(positions, args):
     constants = hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
     residual, linear = jax.linearize(
         lambda x: _masked_residual(x, centres, bearing, operating, model, free, constants), positions)
-    return -jnp.linalg.solve(_ball_blocks(linear, positions.shape), residual[..., None])[..., 0]
+    return -_solve_ball_blocks(_ball_blocks(linear, positions.shape), residual[..., None], free.scale)[..., 0]
 
 
 def _ball_tangent_solve(linear, rhs):
@@ -346,16 +372,28 @@ def _ball_tangent_solve(linear, rhs):
 
 def _speed_start(bearing, operating, centres, model, table):
     """Start for the per-ball Newton: the static split, with a ball whose inner contact is open
-    pressed onto the outer raceway by its centrifugal force along the line of groove centres."""
+    pressed onto the outer raceway by its centrifugal force along the line of groove centres. A
+    ball the inner ring does not touch there (total approach ≤ 0) starts at the bottom of the outer
+    groove (α_o = 0), pressed by the centrifugal force of its orbit at α_i = α_o = 0: the line of
+    groove centres may point far up the groove, or past its edge, where the ring has moved by more
+    than the clearance, and the static split puts the ball on the far side of the groove centre."""
     static = static_positions(bearing, centres, model, table=table)
     if not model.centrifugal:
         return static
+    _, outer_offset = _groove_offsets(bearing)
     state = ball_state(bearing, operating, centres, static, model, table=table)
     pressed = (state["centrifugal_force"] / state["outer_constant"]) ** (2.0 / 3.0)
-    _, outer_offset = _groove_offsets(bearing)
-    approach = jnp.maximum(state["outer_approach"], pressed)
-    direction = static / jnp.linalg.norm(static, axis=-1, keepdims=True)
-    return direction * (outer_offset + approach)[:, None]
+    along_centres = (static / jnp.linalg.norm(static, axis=-1, keepdims=True)
+                     * (outer_offset + jnp.maximum(state["outer_approach"], pressed))[:, None])
+    bottom = jnp.zeros(())
+    orbital, _, _ = kinematics.ball_speeds(operating.inner_speed - operating.outer_speed, bottom, bottom,
+                                           bearing.ball_diameter / bearing.pitch_diameter, model.race_control)
+    force = kinematics.centrifugal_force(bearing.ball_material.density, bearing.ball_diameter, bearing.pitch_diameter,
+                                         orbital + operating.outer_speed)
+    at_bottom = jnp.stack([jnp.zeros(()), outer_offset
+                           + (force / hertz_constants(bearing, bottom, bottom, model, table)[1]) ** (2.0 / 3.0)])
+    touched = (jnp.linalg.norm(centres, axis=-1) - groove_curvature_centre_distance(bearing)) > 0.0
+    return jnp.where(touched[:, None], along_centres, at_bottom)
 
 
 def _without_gradient(tree):
@@ -600,34 +638,56 @@ def _speed_step(unknowns, args):
     balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
     ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
     balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
-    solved = jnp.linalg.solve(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1))
+    solved = _solve_ball_blocks(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1), free.scale)
     schur = ring_ring - jnp.einsum("jab,jbc->ac", ring_balls, solved[..., 1:])
     dy = _ring_step(schur, ring - jnp.einsum("jab,jb->a", ring_balls, solved[..., 0]))
     return -dy, -(solved[..., 0] - solved[..., 1:] @ dy)
 
 
+def _at_speed_fraction(operating: Operating, fraction):
+    """The operating point with both ring speeds scaled by `fraction` (a stage of `_ring_solve`)."""
+    return eqx.tree_at(lambda o: (o.inner_speed, o.outer_speed), operating,
+                       (fraction * operating.inner_speed, fraction * operating.outer_speed))
+
+
 def _ring_solve(residual, start, args):
     """Ring Newton from the static solution `start`: (y, (ball centres (Z, 2) [m] or None, steps)).
 
-    Without speed effects on the ring unknowns at the static split (`_static_step`); with them on
-    the ring and ball unknowns together (`_speed_step`), the balls first solved at the static
-    ring position (`ball_positions`), each ball's step limited to a tenth of its radius. Full
-    Newton steps (`newton`); stops when every ring step component is below `RING_STEP_TOLERANCE`
-    (1 + |y|) and every ball step below `BALL_POSITION_TOLERANCE` D_w.
+    Without speed effects on the ring unknowns at the static split (`_static_step`). With them on
+    the ring and ball unknowns together (`_speed_step`), continued in speed: the speeds rise in
+    `SPEED_STAGES` (fractions whose squares, and so the centrifugal forces and gyroscopic moments,
+    rise in equal steps), each stage's Newton starting from the last one's solution, the balls
+    first solved at the static ring position at the first stage's speed (`ball_positions`). At once
+    from the static solution, Newton's first steps can carry a light or radially loaded ring past
+    the clearance, where contacts switch and the iteration wanders off (measured: 12 % of random
+    angular-contact bearings at speed ended unconverged or on a spurious root, docs/theory.md
+    §Numerical notes). Full Newton steps (`newton`), each ball's limited to a tenth of its radius;
+    each stage stops when every ring step component is below `RING_STEP_TOLERANCE` (1 + |y|) and
+    every ball step below `BALL_POSITION_TOLERANCE` D_w.
     """
-    bearing, operating, model, table, unknown, _, _ = args
+    bearing, operating, model, table, unknown, weight, load_scale = args
     options = dict(max_steps=RING_MAX_STEPS, loop="while", line_search=False)
     if not model.speed_effects:
         y, steps = newton(residual, start, args, linear_step=_static_step,
                           step_tolerance=(RING_STEP_TOLERANCE, RING_STEP_TOLERANCE), **options)
         return y, (None, steps.astype(y.dtype))  # custom_root's JVP rule takes floating aux only
-    positions = ball_positions(_displacement(start, unknown, operating), bearing, operating, model, table)
-    (y, positions), steps = newton(
-        None, (start, positions), args, linear_step=_speed_step,
-        limit=lambda step: (step[0], _limited_ball_step(bearing, step[1])),
-        step_tolerance=((RING_STEP_TOLERANCE, BALL_POSITION_TOLERANCE * bearing.ball_diameter),
-                        (RING_STEP_TOLERANCE, 0.0)), **options)
-    return y, (positions, steps.astype(y.dtype))
+    fractions = jnp.asarray(SPEED_STAGES)
+    first = _at_speed_fraction(operating, fractions[0])
+    positions = ball_positions(_displacement(start, unknown, first), bearing, first, model, table)
+
+    def stage(unknowns, fraction):
+        staged = (bearing, _at_speed_fraction(operating, fraction), model, table, unknown, weight, load_scale)
+        solved, steps = newton(None, unknowns, staged, linear_step=_speed_step,
+                               limit=lambda step: (step[0], _limited_ball_step(bearing, step[1])),
+                               step_tolerance=((RING_STEP_TOLERANCE, BALL_POSITION_TOLERANCE * bearing.ball_diameter),
+                                               (RING_STEP_TOLERANCE, 0.0)), **options)
+        # a stage that ran out of steps or off to non-finite values keeps the last stage's solution:
+        # the report then names the residual at full speed, with finite values
+        reached = (steps < RING_MAX_STEPS) & jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in jax.tree.leaves(solved)]))
+        return jax.tree.map(lambda new, old: jnp.where(reached, new, old), solved, unknowns), steps
+
+    (y, positions), steps = jax.lax.scan(stage, (start, positions), fractions)
+    return y, (positions, jnp.sum(steps).astype(y.dtype))
 
 
 class Equilibrium(eqx.Module):
@@ -688,7 +748,8 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     residual = jax.lax.stop_gradient(residual)
     approach_ratio = jax.lax.stop_gradient(ball_validity.largest_approach_ratio(
         state["inner_approach"], state["outer_approach"], bearing.ball_diameter))
-    contact_angle = jax.lax.stop_gradient(ball_validity.largest_contact_angle(state["inner_angle"], state["outer_angle"]))
+    contact_angle = jax.lax.stop_gradient(ball_validity.largest_contact_angle(
+        state["inner_angle"], state["outer_angle"], state["inner_load"], state["outer_load"]))
     converged = (residual < RESIDUAL_TOLERANCE) & ball_validity.within_model(approach_ratio, contact_angle)
     return Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
                        steps.astype(static_steps.dtype))

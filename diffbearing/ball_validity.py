@@ -12,8 +12,9 @@ raceways. Such a state is reported as not converged, with its reason, rather tha
   deep-groove bearing) that is a peak pressure of 5.7–7.0 GPa, well past the 4.2 GPa of ISO 76
   where steel starts to yield, with a contact semi-major axis of 0.35–0.50 D_w
   (`hertz.point_contact` at α₀).
-* **Contact angle.** A contact angle outside (−90°, 90°) puts the contact on the far side of the
-  groove's curvature centre: the ball has been pushed through the raceway.
+* **Contact angle.** A loaded contact's angle outside (−90°, 90°) puts the contact on the far side of
+  the groove's curvature centre: the ball has been pushed through the raceway, or lifted over the
+  inner groove's edge by its centrifugal force. An open contact's angle is not a contact's.
 
 * **Low shoulder.** An angular-contact bearing's outer ring (or inner ring) is ground away on one side
   of the groove: a loaded contact at a negative angle would sit on the shoulder that is not there.
@@ -35,9 +36,13 @@ def largest_approach_ratio(inner_approach, outer_approach, ball_diameter):
     return jnp.maximum(jnp.max(inner_approach), jnp.max(outer_approach)) / ball_diameter
 
 
-def largest_contact_angle(inner_angle, outer_angle):
-    """max over balls and both contacts of |α| [rad]."""
-    return jnp.maximum(jnp.max(jnp.abs(inner_angle)), jnp.max(jnp.abs(outer_angle)))
+def largest_contact_angle(inner_angle, outer_angle, inner_load, outer_load):
+    """max over the loaded contacts (Q > 0) of |α| [rad] (0 where none is loaded): an open contact's
+    angle is only the direction of its line of groove centres, which may point anywhere once the
+    ring has moved by more than the clearance (the far balls of a radially loaded bearing)."""
+    inner = jnp.where(inner_load > 0.0, jnp.abs(inner_angle), 0.0)
+    outer = jnp.where(outer_load > 0.0, jnp.abs(outer_angle), 0.0)
+    return jnp.maximum(jnp.max(inner), jnp.max(outer))
 
 
 def within_model(approach_ratio, contact_angle):

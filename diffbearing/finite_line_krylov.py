@@ -89,6 +89,15 @@ def krylov_levels(grid, fewest_cells: int = COARSEST_CELLS) -> list[tuple[int, i
     return levels
 
 
+def preconditioner_bytes(grid, starved: bool = False) -> int:
+    """Bytes [B] of the column preconditioner's stored inverses on the half-domain grid (nx, ny):
+    ny dense float64 blocks of (nx − 2)² ((nx − 1)² starved, with the meniscus row), the part of
+    the solve's memory that grows as nx²·ny (the films, FFTs and Krylov vectors grow as nx·ny)."""
+    nx, ny = (int(n) for n in grid)
+    size = nx - 1 if starved else nx - 2
+    return 8 * ny * size * size
+
+
 class Stage(eqx.Module):
     """The equations a starved level solves at one stage of `solve_nested` (the `args` of its
     residual and preconditioner): with `held`, each meniscus row X_m − X_m,now (the menisci held

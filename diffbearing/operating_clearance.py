@@ -113,8 +113,8 @@ class Mounting(eqx.Module):
     def __check_init__(self):
         check_range("mounting.shaft_bore", self.shaft_bore, low=0.0, low_open=False, unit=" m")
         check_range("mounting.housing_outer_diameter", self.housing_outer_diameter, low=0.0, unit=" m")
-        for index, name in enumerate(("shaft", "inner ring bore", "outer ring outside", "housing bore")):
-            check_range(f"mounting.roughness ({name})", jnp.asarray(self.roughness)[index], low=0.0, low_open=False,
+        for index, name in enumerate(("shaft", "inner_ring", "outer_ring", "housing")):  # the scene's keys
+            check_range(f"mounting.{name}_roughness", jnp.asarray(self.roughness)[index], low=0.0, low_open=False,
                         unit=" m")
 
 

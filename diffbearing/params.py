@@ -99,13 +99,18 @@ class Lubricant(eqx.Module):
         check_range("lubricant.density", self.density, low=0.0, unit=" kg/m^3")
 
 
+WOOSTER_LOWEST_VISCOSITY = 1e-3 * 10.0 ** (-0.6 / 0.965)  # Pa·s: where Wooster's α reaches 0
+
+
 def wooster_pressure_viscosity(viscosity):
     """Pressure–viscosity coefficient α [1/Pa] of a mineral oil from its viscosity η₀ [Pa·s].
 
     Wooster's correlation α = (0.6 + 0.965 log₁₀ η₀[cP]) × 1e-8 Pa⁻¹ (Stachowiak & Batchelor,
-    *Engineering Tribology*, ch. 2). A rough estimate: replace it with supplier data.
+    *Engineering Tribology*, ch. 2). A rough estimate: replace it with supplier data. Positive only
+    above η₀ = 10^(−0.6/0.965) cP ≈ 0.24 mPa·s; below, ValueError (give lubricant.pressure_viscosity).
     """
-    check_range("lubricant.viscosity", viscosity, low=0.0, unit=" Pa*s")
+    check_range("lubricant.viscosity", viscosity, low=WOOSTER_LOWEST_VISCOSITY, unit=" Pa*s",
+                why="Wooster's α is positive above it; else give lubricant.pressure_viscosity")
     return (0.6 + 0.965 * math.log10(viscosity * 1e3)) * 1e-8
 
 
@@ -244,12 +249,14 @@ def ball_bearing(
     (Harris & Kotzalas vol. 1, ch. 2; the 6411E chamfer paper). Raises ValueError naming the offending parameter.
     """
     check_range("bearing.ball_diameter", ball_diameter, low=0.0, unit=" m")
+    check_range("bearing.pitch_diameter", pitch_diameter, low=0.0, unit=" m")
     for side, ratio, radius in (("inner", inner_groove_ratio, inner_groove_radius),
                                 ("outer", outer_groove_ratio, outer_groove_radius)):
         if (ratio is None) == (radius is None):
             raise ValueError(f"bearing: give exactly one of {side}_groove_ratio and {side}_groove_radius")
         if radius is not None and _is_concrete(radius, ball_diameter):
-            check_range(f"bearing.{side}_groove_radius", radius, low=0.5 * float(ball_diameter), unit=" m", why="the ball radius")
+            check_range(f"bearing.{side}_groove_radius", radius, low=0.5 * float(ball_diameter), high=float(ball_diameter),
+                        high_open=False, unit=" m", why="the ball radius to the ball diameter: f in (0.5, 1]")
     fi = inner_groove_ratio if inner_groove_ratio is not None else inner_groove_radius / ball_diameter
     fo = outer_groove_ratio if outer_groove_ratio is not None else outer_groove_radius / ball_diameter
     if (contact_angle is None) == (radial_clearance is None):
@@ -361,6 +368,12 @@ def ball_cage(bearing: BallBearing, *, pocket: str = "outer_lock", pocket_cleara
     where the sphere meets the cage's outer surface, is narrower than the ball (else the pocket
     would not lock) and that the pushing and resisting counts fit the bearing; ValueError names
     the parameter."""
+    if _is_concrete(bearing.ball_diameter, bearing.pitch_diameter):
+        check_range("cage.pocket_clearance", pocket_clearance, low=0.0, high=0.5 * float(bearing.ball_diameter),
+                    unit=" m", why="half bearing.ball_diameter: a pocket that holds its ball")
+        check_range("cage.guide_clearance", guide_clearance, low=2.0 * float(film_threshold),
+                    high=0.8 * float(bearing.ball_diameter), unit=" m",
+                    why="twice the land film threshold, and the land's 0.8 D_w above the pitch circle")
     if land_diameter is None:
         land_diameter = bearing.pitch_diameter + 0.8 * bearing.ball_diameter
     if land_spacing is None:

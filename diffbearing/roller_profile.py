@@ -72,6 +72,7 @@ def roller_profile(kind: str = "straight", *, length=None, **parameters) -> Roll
         if parameters.get(name) is None:
             raise ValueError(f"missing required key 'profile.{name}' (profile kind {kind!r})")
     given = {name: value for name, value in parameters.items() if value is not None}
+    check_range("bearing.roller_length", length, low=0.0, unit=" m")
     if kind == "circular":
         concrete = length is not None and _is_concrete(length, given["flat_length"])
         check_range("profile.flat_length", given["flat_length"], low=0.0, low_open=False,

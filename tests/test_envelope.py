@@ -101,3 +101,45 @@ def test_an_axial_load_against_the_low_shoulder_exits_3(tmp_path, capsys):
     assert "equilibrium outside the model: a ball loaded at α = -41.6° on the angular-contact bearing's " \
            "low-shoulder side" in err and len(err.strip().splitlines()) == 1
     assert cli.main(["run", str(path), "--set", 'operating.force=["0 N", "0 N", "2 kN"]']) == 0
+
+
+@pytest.mark.parametrize("example, speed", [("aero_angular_contact", "1e9 rpm"), ("cylindrical_roller_bearing", "1e6 rpm")])
+def test_a_speed_beyond_any_rolling_bearing_is_refused(example, speed):
+    message = refused(example, f'operating.inner_speed="{speed}"')
+    assert message.startswith("operating.inner_speed: n·d_m = ") and "is far beyond any rolling bearing (limit 1e+07" in message
+
+
+@pytest.mark.parametrize("force", ['["4 kN", "0 kN", "0 kN"]', '["4 kN", "0 kN", "1 kN"]', '["0 kN", "0 kN", "-1 kN"]'])
+def test_a_tapered_bearing_without_enough_axial_load_is_refused(force):
+    """Fz ≤ Fr tan α_o has no equilibrium (its cup pushes each roller along α_o = 15°): refused
+    naming operating.force with the axial load it needs, 4 kN · tan 15° = 1072 N."""
+    message = refused("tapered_roller_bearing", f"operating.force={force}")
+    assert message.startswith("operating.force: a tapered roller bearing takes Fr = ")
+    if force.startswith('["4'):
+        assert "Fz > Fr tan α_o = 1072 N" in message
+
+
+def test_a_tapered_bearing_just_above_the_axial_limit_converges():
+    """Fz = 1.1 Fr tan α_o, a few rollers loaded: an equilibrium exists and is found."""
+    from diffbearing import run_model
+
+    result = run_model(build_model(load_scene("tapered_roller_bearing", ['operating.force=["4 kN", "0 kN", "1.18 kN"]'])),
+                       progress=False)
+    assert bool(result.values["converged"]), result.problems
+
+
+POINT_FILM = ['operating.force=["8 kN", "0 N", "0 N"]', 'effects.film="point"', 'lubricant.preset="iso_vg_68"']
+
+
+def test_a_point_contact_grid_beyond_the_machine_is_refused_with_its_memory():
+    """fidelity.grid = [4097, 4097]: 2049 dense column blocks of 4095² in float64, held twice —
+    2 × 8 B × 2049 × 4095² = 512 GiB, refused before anything compiles."""
+    message = refused("deep_groove_6411", *POINT_FILM, 'operating.inner_speed="3000 rpm"',
+                      "fidelity.grid=[4097, 4097]")
+    assert message.startswith("fidelity.grid: the 4097 × 2049 half-domain grid needs about 512 GiB"), message
+
+
+def test_a_point_contact_film_at_standstill_is_refused():
+    """No rolling, no film: refused naming the speed (it compiled 97 s, then printed h < 0)."""
+    message = refused("deep_groove_6411", *POINT_FILM)
+    assert message.startswith("operating.inner_speed: effects.film = \"point\" needs rolling"), message

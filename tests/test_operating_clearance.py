@@ -153,10 +153,12 @@ def test_clearance_change_derivatives_match_central_differences():
         assert_jvp_matches_central_difference(change, point, direction, 1e-3, rtol=1e-7, atol=1e-12)
 
 
-@pytest.mark.parametrize("field, value", [("shaft_bore", -1e-3), ("housing_outer_diameter", 0.0),
-                                          ("roughness", (-1e-6, 0.0, 0.0, 0.0))])
-def test_bad_mounting_is_refused(field, value):
-    with pytest.raises(ValueError, match=f"mounting.{field}"):
+@pytest.mark.parametrize("field, value, key", [("shaft_bore", -1e-3, "mounting.shaft_bore"),
+                                               ("housing_outer_diameter", 0.0, "mounting.housing_outer_diameter"),
+                                               ("roughness", (0.0, 0.0, -1e-6, 0.0), "mounting.outer_ring_roughness")])
+def test_bad_mounting_is_refused(field, value, key):
+    """ValueError naming the scene key (each roughness its own: shaft, inner_ring, outer_ring, housing)."""
+    with pytest.raises(ValueError, match=f"^{key} must be"):
         Mounting(**{field: value})
 
 

@@ -29,7 +29,7 @@ def build(**changes):
     (dict(pitch_diameter=60e-3), "so that the balls fit on the pitch circle"),
     (dict(inner_groove_radius=None, inner_groove_ratio=0.5), "bearing.inner_groove_ratio must be > 0.5"),
     (dict(outer_groove_radius=None, outer_groove_ratio=0.49), "bearing.outer_groove_ratio must be > 0.5"),
-    (dict(inner_groove_radius=13.0e-3), "bearing.inner_groove_radius must be > 0.0134938 m (the ball radius)"),
+    (dict(inner_groove_radius=13.0e-3), "bearing.inner_groove_radius must be > 0.0134938 m and ≤ 0.0269875 m"),
     (dict(radial_clearance=-1.1e-3), "bearing.radial_clearance must be ≥ -0.000975 m"),
     (dict(radial_clearance=None), "give exactly one of contact_angle and radial_clearance"),
     (dict(radial_clearance=None, contact_angle=math.radians(95)), "bearing.contact_angle must be ≥ 0 rad and < 1.5708"),

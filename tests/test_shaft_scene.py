@@ -8,7 +8,7 @@ import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
-from diffbearing.app.adapters.shaft import _supports
+from diffbearing.app.adapters.shaft import PERMISSIBLE_MISALIGNMENT, _supports, misalignment_warnings
 from diffbearing.flexible_shaft import flexible_shaft, solve_flexible_shaft
 from diffbearing.shaft_equilibrium import Shaft
 
@@ -68,6 +68,23 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     assert float(shaft.values["bearings.a_iso"][0]) == pytest.approx(float(single.values["life.a_iso_reference"]), rel=1e-9)
     assert 0.1 < float(shaft.values["bearings.a_iso"][0]) < 50.0
     assert float(shaft.values["shaft.L10rm"]) == pytest.approx(float(single.values["life.L10rm"]), rel=1e-9)
+    # issue 46: the single bearing's free tilt (2.80 mrad) is warned of; on the shaft it is 0.2 mrad
+    # short of the 10′ a rigid bearing permits
+    tilt = float(np.hypot(*single.values["displacement"][3:]))
+    assert any(f"tilts freely by {tilt * 1e3:.3g} mrad" in line for line in single.problems[1])
+    assert (tilt > PERMISSIBLE_MISALIGNMENT) == any("its rings tilt" in line for line in shaft.problems[1])
+
+
+def test_a_bearing_tilted_beyond_ten_arcmin_is_warned_of():
+    """A bearing's rings tilted against each other by more than 10′ (2.909 mrad), on either axis:
+    a warning naming the bearing and the tilt; within it, none."""
+    limit = np.radians(10.0 / 60.0)
+    tilts = np.array([[0.0, 0.0, 0.0, 0.99 * limit, 0.0], [0.0, 0.0, 0.0, 0.6 * limit, 0.9 * limit],
+                      [0.0, 0.0, 0.0, 0.0, -1.01 * limit]])
+    warnings = misalignment_warnings(tilts)
+    assert len(warnings) == 2
+    assert warnings[0].startswith(f"bearing 1: its rings tilt {np.hypot(0.6, 0.9) * limit * 1e3:.3g} mrad")
+    assert warnings[1].startswith("bearing 2: its rings tilt 2.94 mrad (10.1′)")
 
 
 @pytest.mark.slow

@@ -65,7 +65,7 @@ def test_sweep_json_has_batch_axes(capsys, scene_file, tmp_path):
 
 
 def test_bad_sweep_entries_exit_2(capsys, scene_file):
-    for override, message in (("sweep.x=1", "unknown key 'sweep.x'"),):
+    for override, message in (("sweep.x=1", "sweep.x: unknown key 'x'"),):
         assert cli.main(["run", str(scene_file), "--set", override]) == 2
         assert message in capsys.readouterr().err
     bad = scene_file.parent / "bad.toml"

@@ -66,7 +66,10 @@ def _sweep_override(document: dict, key: str, value) -> None:
         raise ValueError(f"--set: cannot read {key!r} as a dotted key") from None
     field = path[-1] if path[-1] in SWEEP_FIELDS else None
     entry = ".".join(path[1:-1] if field else path[1:])
-    lookup(entry)
+    try:
+        lookup(entry)
+    except ValueError as error:
+        raise ValueError(f"{key}: {error} (a [sweep] entry names a scene key)") from None
     sweep = document.setdefault("sweep", {})
     if field is None:
         sweep[entry] = value

@@ -54,11 +54,14 @@ def to_si(value, dimension: str, key: str) -> float:
 
     `value` is a quantity string ("28 mm", "1500 rpm", "25 deg") or a bare number taken as SI;
     "inf" is accepted for an infinite length (a flat raceway). Raises ValueError naming `key` when
-    the string does not parse or has the wrong dimension (e.g. "97.5 N" for a length).
+    the string does not parse, has the wrong dimension (e.g. "97.5 N" for a length) or is not
+    finite ("nan mm", "-inf N").
     """
     if isinstance(value, bool):
         raise ValueError(f"{key}: expected a {dimension.replace('_', ' ')}, got {value!r}")
     if isinstance(value, (int, float)):
+        if math.isnan(value) or value == -math.inf:
+            raise ValueError(f"{key}: {value!r} is not a finite number")
         return float(value)
     if not isinstance(value, str):
         raise ValueError(f"{key}: expected a quantity string such as \"28 mm\", got {value!r}")
@@ -72,9 +75,13 @@ def to_si(value, dimension: str, key: str) -> float:
     target = SI_UNITS[dimension]
     try:
         if dimension == "angular_speed":
-            return _angular_speed(quantity)
-        return float(quantity.to(target).magnitude) if target else float(quantity.to("dimensionless").magnitude)
+            converted = _angular_speed(quantity)
+        else:
+            converted = float(quantity.to(target).magnitude) if target else float(quantity.to("dimensionless").magnitude)
     except pint.DimensionalityError:
         wanted = dimension.replace("_", " ")
         article = "an" if wanted[0] in "aeiou" else "a"
         raise ValueError(f"{key}: {value!r} is not {article} {wanted} (expected units convertible to {target or '1'})") from None
+    if not math.isfinite(converted):
+        raise ValueError(f"{key}: {value!r} is not a finite number (only a flat raceway's radius is written \"inf\")")
+    return converted

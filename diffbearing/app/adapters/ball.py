@@ -51,7 +51,33 @@ def catalogue_bearing(v, ring):
     )
 
 
+# n·d_m [mm·r/min]: above the first, oil-lubricated ball bearings need special designs (the
+# catalogues' limiting speeds of standard bearings stay below 1e6); beyond the second, far past any
+# rolling bearing (aero-engine main-shaft bearings run at 2–3e6, test rigs have reached about 4e6;
+# the aero paper's own speed sweep, aero_speed_sweep, ends at 5e6), the input is a slip of units.
+SPEED_FACTOR_WARNING, SPEED_FACTOR_LIMIT = 1.0e6, 1.0e7
+
+
+def speed_factor(speed, pitch_diameter):
+    """n·d_m [mm·r/min] of a ring speed [rad/s] on a pitch diameter [m]."""
+    return jnp.abs(speed) * 30.0 / np.pi * pitch_diameter * 1e3
+
+
+def check_speed_factor(v, pitch_key: str = "bearing.pitch_diameter") -> None:
+    """Refuse a ring speed beyond `SPEED_FACTOR_LIMIT` n·d_m (ValueError naming the speed key)."""
+    pitch = v.get(pitch_key)
+    for key in ("operating.inner_speed", "operating.outer_speed"):
+        speed = v.get(key)
+        if speed is None or pitch is None or isinstance(speed, jax.core.Tracer) or isinstance(pitch, jax.core.Tracer):
+            continue
+        factor = abs(float(speed)) * 30.0 / np.pi * float(pitch) * 1e3  # n·d_m, as `speed_factor`, on the host
+        if factor > SPEED_FACTOR_LIMIT:
+            raise ValueError(f"{key}: n·d_m = {factor:.3g} mm·r/min is far beyond any rolling bearing (limit "
+                             f"{SPEED_FACTOR_LIMIT:.0e}; {float(speed) * 30 / np.pi:.4g} r/min on d_m = {pitch * 1e3:.4g} mm)")
+
+
 def _operating(v, built) -> dict:
+    check_speed_factor(v)
     return {"operating": Operating(
         inner_speed=v.get("operating.inner_speed", 0.0), outer_speed=v.get("operating.outer_speed", 0.0),
         force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
@@ -151,7 +177,11 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
            "free_tilt": free_tilt(solution.displacement, operating), "converged": solution.converged,
            "residual": solution.residual, "validity.approach_ratio": solution.approach_ratio,
            "validity.contact_angle": solution.contact_angle,
-           "validity.lowest_contact_angle": low_shoulder_angle(bearing, balls), "balls.azimuth": balls.azimuth,
+           "validity.lowest_contact_angle": low_shoulder_angle(bearing, balls),
+           "validity.centrifugal_ratio": jax.lax.stop_gradient(centrifugal_ratio(balls, operating)),
+           "validity.speed_factor": jax.lax.stop_gradient(speed_factor(operating.inner_speed - operating.outer_speed,
+                                                                       bearing.pitch_diameter)),
+           "balls.azimuth": balls.azimuth,
            "balls.orbital_speed": balls.orbital_speed, "balls.spin_speed": balls.spin_speed}
     for side in ("inner", "outer"):
         out |= {f"balls.{side}.{field}": getattr(balls, f"{side}_{field}") for field in _BALL_FIELDS}
@@ -160,6 +190,9 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     if model.gyroscopic:
         out["balls.gyroscopic_moment"] = balls.gyroscopic_moment
     return out
+
+
+LOW_SHOULDER_ROUNDING = 1e-9  # rad: a ball at the groove bottom (α = 0 within rounding) is inside
 
 
 def low_shoulder_angle(bearing, balls):
@@ -176,7 +209,7 @@ def validity_errors(approach, angle, subject: str, lowest=None) -> list[str]:
     |contact angle| [rad] of `subject` ("equilibrium", "bearing 1", ...), and its lowest loaded
     contact angle [rad] (`low_shoulder_angle`)."""
     errors = []
-    if lowest is not None and float(lowest) < 0.0:
+    if lowest is not None and float(lowest) < -LOW_SHOULDER_ROUNDING:
         errors.append(f"{subject} outside the model: a ball loaded at α = {np.degrees(float(lowest)):.1f}° on the "
                       "angular-contact bearing's low-shoulder side (its axial load, −z, pushes the inner ring towards "
                       "the open side: reverse operating.force[2] or the bearing)")
@@ -186,19 +219,21 @@ def validity_errors(approach, angle, subject: str, lowest=None) -> list[str]:
                       "contacts)")
     if float(angle) >= float(ball_validity.MAX_CONTACT_ANGLE):
         errors.append(f"{subject} outside the model: a contact angle |α| = {np.degrees(float(angle)):.1f}° leaves "
-                      "(−90°, 90°) (a ball pushed through its raceway)")
+                      "(−90°, 90°) (a ball pushed through its raceway, or at speed lifted over the inner groove's edge by its "
+                      "centrifugal force under too light an axial load)")
     return errors
 
 
+STEEP_CONTACT = np.radians(75.0)  # rad: a loaded contact this steep may ride on a shoulder (not modelled)
 FREE_TILT_WARNING = 0.5e-3  # rad: a free inner ring tilting more than this without a moment is worth a word
 
 
 def free_tilt(displacement, operating):
-    """The inner ring's largest tilt [rad] where nothing holds it: its tilts free and no moment applied
-    (0 otherwise)."""
+    """The inner ring's tilt √(θx² + θy²) [rad] where nothing holds it: its tilts free and no moment
+    applied (0 otherwise); a diagnostic, without derivative."""
     if operating.misalignment is not None:
         return jnp.zeros(())
-    tilt = jnp.max(jnp.abs(displacement[3:]))
+    tilt = jax.lax.stop_gradient(jnp.linalg.norm(displacement[3:]))
     return jnp.where(jnp.any(operating.moment != 0.0), 0.0, tilt)
 
 
@@ -213,16 +248,43 @@ def free_tilt_warnings(tilt) -> list[str]:
     return []
 
 
+def centrifugal_ratio(balls, operating):
+    """The balls' largest centrifugal force over the applied load per ball |F|/Z [-] (0 without
+    the centrifugal effect): far above 1 the speed lifts the balls off the inner raceway."""
+    if balls.centrifugal_force is None:
+        return jnp.zeros(())
+    per_ball = jnp.linalg.norm(operating.force) / balls.centrifugal_force.shape[-1]
+    return jnp.max(balls.centrifugal_force) / jnp.maximum(per_ball, 1e-300)
+
+
+def light_at_speed(values: dict) -> str:
+    """The reason a solve at speed did not converge where the centrifugal force outweighs the load."""
+    ratio = float(values.get("validity.centrifugal_ratio", 0.0))
+    if ratio <= 1.0:
+        return ""
+    return (f": each ball's centrifugal force is {ratio:.3g}× the applied load per ball — at this speed the load is "
+            "below the bearing's minimum and the balls leave the inner raceway (no equilibrium inside the model)")
+
+
 def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
     """Errors: a state outside the ball model (ball_validity) or a solver that did not converge;
     warnings: a peak pressure above the ISO 76 static limit."""
     warnings = []
-    errors = validity_errors(values["validity.approach_ratio"], values["validity.contact_angle"], "equilibrium",
-                             values["validity.lowest_contact_angle"])
-    if not errors and not bool(values["converged"]):
-        errors.append(f"equilibrium solver did not converge: largest scaled residual {float(values['residual']):.1e} "
-                      f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})")
+    if float(values["residual"]) >= ball_equilibrium.RESIDUAL_TOLERANCE:
+        errors = [f"equilibrium solver did not converge: largest scaled residual {float(values['residual']):.1e} "
+                  f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})" + light_at_speed(values)]
+    else:
+        errors = validity_errors(values["validity.approach_ratio"], values["validity.contact_angle"], "equilibrium",
+                                 values["validity.lowest_contact_angle"])
     warnings += free_tilt_warnings(values["free_tilt"])
+    steepest = float(values["validity.contact_angle"])
+    if steepest > STEEP_CONTACT:
+        warnings.append(f"a loaded contact at |α| = {np.degrees(steepest):.1f}°: the groove's edge (shoulder) is not "
+                        "modelled — check the contact ellipse against the shoulder height")
+    factor = float(values["validity.speed_factor"])
+    if factor > SPEED_FACTOR_WARNING:
+        warnings.append(f"n·d_m = {factor:.3g} mm·r/min is above {SPEED_FACTOR_WARNING:.0e}, where standard ball "
+                        "bearings stop (cage, lubrication and heat, not modelled here, set the limit)")
     for side in ("inner", "outer"):
         pressure = np.asarray(values[f"balls.{side}.max_pressure"])
         ball = int(np.argmax(pressure))
@@ -283,7 +345,7 @@ EQUILIBRIUM = Block(
                                       "Mx, My under misalignment)", in_report=False),
         Output("prescribed", "", "", "1 where [δx, δy, δz, θx, θy] was prescribed (its load an output), 0 where free",
                in_report=False),
-        Output("free_tilt", "rad", "mrad", "largest inner-ring tilt with the tilts free and no moment applied (else 0)",
+        Output("free_tilt", "rad", "mrad", "inner-ring tilt √(θx² + θy²) with the tilts free and no moment applied (else 0)",
                in_report=False),
         Output("converged", "", "", "the equilibrium solver converged to a state within the model", in_report=False),
         Output("residual", "", "", "largest scaled residual of ring and ball equations", in_report=False),
@@ -293,6 +355,9 @@ EQUILIBRIUM = Block(
         Output("validity.lowest_contact_angle", "rad", "deg", "lowest loaded contact angle of an angular-contact "
                                                               "bearing (model limit 0: its low shoulder; 90° for deep "
                                                               "groove)", in_report=False),
+        Output("validity.centrifugal_ratio", "", "", "largest ball centrifugal force over the applied load per ball "
+                                                     "(0 without the centrifugal effect)", in_report=False),
+        Output("validity.speed_factor", "", "", "n·d_m of the relative ring speed [mm·r/min]", in_report=False),
         Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x", column="ψ"),
         *_ball_outputs("inner"),
         *_ball_outputs("outer"),
@@ -400,8 +465,10 @@ def _report(result) -> list[str]:
     lines += element_table_lines(result, "Balls (load distribution; semi-axes and spin speed in --json; "
                                          "– where a ball carries no load)")
     residual = float(values["residual"])
-    state = ("converged" if bool(values["converged"]) else "DID NOT CONVERGE"
-             if residual >= ball_equilibrium.RESIDUAL_TOLERANCE else "converged to a state OUTSIDE THE MODEL")
+    outside = validity_errors(values["validity.approach_ratio"], values["validity.contact_angle"], "",
+                              values["validity.lowest_contact_angle"])
+    state = ("DID NOT CONVERGE" if residual >= ball_equilibrium.RESIDUAL_TOLERANCE
+             else "converged to a state OUTSIDE THE MODEL" if outside or not bool(values["converged"]) else "converged")
     return lines + ["", f"Equilibrium solver: {state} (largest scaled residual {residual:.1e})"]
 
 

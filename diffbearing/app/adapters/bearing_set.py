@@ -103,7 +103,8 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
             out |= {f"{prefix}balls.{side}.{field}": getattr(balls, f"{side}_{field}") for field in BALL_FIELDS}
         approach.append(ball_validity.largest_approach_ratio(balls.inner_approach, balls.outer_approach,
                                                              bearing.ball_diameter))
-        angle.append(ball_validity.largest_contact_angle(balls.inner_contact_angle, balls.outer_contact_angle))
+        angle.append(ball_validity.largest_contact_angle(balls.inner_contact_angle, balls.outer_contact_angle,
+                                                       balls.inner_load, balls.outer_load))
         lowest.append(low_shoulder_angle(bearing, balls))
     out["set.validity.approach_ratio"] = jax.lax.stop_gradient(jnp.max(jnp.stack(approach)))
     out["set.validity.lowest_contact_angle"] = jnp.min(jnp.stack(lowest))

@@ -9,13 +9,15 @@ supplied by an oil layer only, and Er = (h_c,ff − h_c)/h_c,ff against the floo
 when Er > 1 %); for ball bearings with film = "point" only (the θ-model, `starved_point_ehl`).
 """
 
+import os
+
 import jax
 import jax.numpy as jnp
 import numpy as np
 
 from ... import film_formulas, hertz
 from ...finite_line_ehl import MAX_UNKNOWNS, finite_line_film, half_domain_grid
-from ...finite_line_krylov import finite_line_film_krylov, krylov_levels
+from ...finite_line_krylov import finite_line_film_krylov, krylov_levels, preconditioner_bytes
 from ...kinematics import raceway_entrainment_speed
 from ...line_ehl import check_nodes, density_ratio, line_film
 from ...newton_krylov import COMPILER_OPTIONS
@@ -96,9 +98,32 @@ def _ball_film_outputs(side):
 
 # --- ball bearings: the numerical point contact at the most loaded ball ------------------------
 
+# Newton–Krylov holds its column preconditioner (`finite_line_krylov.preconditioner_bytes`) twice at
+# once, the iteration's and the implicit derivative's; a grid whose two copies need more than half
+# the machine's memory is refused before it compiles.
+PRECONDITIONER_COPIES = 2
+MEMORY_SHARE = 0.5
+
+
+def machine_memory() -> int:
+    """This machine's physical memory [B]."""
+    return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+
+
+def check_grid_memory(grid, starved: bool = False) -> None:
+    """ValueError naming fidelity.grid where the Newton–Krylov solve on the half-domain `grid` would
+    not fit in `MEMORY_SHARE` of this machine's memory (its estimate in the message)."""
+    estimate = PRECONDITIONER_COPIES * preconditioner_bytes(grid, starved)
+    if estimate > MEMORY_SHARE * machine_memory():
+        raise ValueError(f"fidelity.grid: the {grid[0]} × {grid[1]} half-domain grid needs about "
+                         f"{estimate / 2**30:.3g} GiB ({grid[1]} dense column blocks of {grid[0] - 2}² in float64, held "
+                         f"twice), more than half of this machine's {machine_memory() / 2**30:.3g} GiB: take a coarser grid")
+
+
 def point_grid(settings: dict) -> tuple[int, int]:
     """(nx, ny on the half domain) of the point contact level from fidelity.grid (default
-    [129, 128]); ValueError naming the key for a grid the solver does not take."""
+    [129, 128]); ValueError naming the key for a grid the solver does not take or the machine
+    cannot hold (`check_grid_memory`)."""
     nx, ny = (int(n) for n in settings["fidelity"].get("grid", DEFAULT_POINT_GRID))
     half = (ny + 1) // 2
     try:
@@ -106,11 +131,19 @@ def point_grid(settings: dict) -> tuple[int, int]:
     except ValueError as error:
         raise ValueError(f"fidelity.grid = [nx, ny] with effects.film = \"point\" (ny across the whole contact, "
                          f"half solved): {str(error).removeprefix('grid: ')}") from None
+    check_grid_memory((nx, half), starved=settings["effects"].get("starvation", False) is True)
     return nx, half
 
 
 def _point_settings(settings: dict, inputs: dict) -> None:
+    """ValueError for a grid the point contact does not take, or rings that do not roll (no
+    entrainment: the Reynolds equation has no film to carry the load)."""
     point_grid(settings)
+    operating = inputs["operating"]
+    relative = operating.inner_speed - operating.outer_speed
+    if not isinstance(relative, jax.core.Tracer) and float(relative) == 0.0:
+        raise ValueError("operating.inner_speed: effects.film = \"point\" needs rolling (inner_speed ≠ outer_speed); "
+                         "at standstill no lubricant film forms")
 
 
 _POINT_FIELDS = ("central", "minimum", "converged", "x", "y", "pressure", "thickness")
@@ -312,7 +345,8 @@ def _line_nodes(settings: dict) -> int:
 def finite_line_settings(settings: dict) -> tuple[tuple[int, int], str]:
     """((nx, ny on the half domain), solver) of the finite line level from fidelity.grid (whole
     roller length, default [33, 96]) and fidelity.solver (default: "dense" where the half grid
-    fits it, else "krylov"); ValueError naming the key for a grid the solver does not take."""
+    fits it, else "krylov"); ValueError naming the key for a grid the solver does not take or the
+    machine cannot hold (`check_grid_memory`)."""
     fidelity = settings["fidelity"]
     nx, ny = (int(n) for n in fidelity.get("grid", DEFAULT_FINITE_LINE_GRID))
     half = (ny + 1) // 2
@@ -324,6 +358,7 @@ def finite_line_settings(settings: dict) -> tuple[tuple[int, int], str]:
     except ValueError as error:
         raise ValueError(f"fidelity.grid = [nx, ny] with fidelity.solver = \"krylov\" (half ⌈ny/2⌉ solved): "
                          f"{str(error).removeprefix('grid: ')}") from None
+    check_grid_memory((nx, half), starved=settings["effects"].get("starvation", False) is True)
     return (nx, half), solver
 
 

@@ -74,6 +74,9 @@ def _entrainment_speed(v):
     """Pure-rolling entrainment speed [m/s] of a cylindrical roller; 0 without a pitch diameter."""
     if "bearing.pitch_diameter" not in v or v["bearing.type"] != "cylindrical_roller":
         return 0.0
+    if not isinstance(v["bearing.roller_diameter"], jax.core.Tracer):
+        check_range("bearing.pitch_diameter", v["bearing.pitch_diameter"], low=float(v["bearing.roller_diameter"]),
+                    unit=" m", why="bearing.roller_diameter: the rollers lie between the raceways")
     return pure_rolling_entrainment_speed(v["bearing.pitch_diameter"], v["bearing.roller_diameter"],
                                           v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))
 

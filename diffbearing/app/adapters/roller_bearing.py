@@ -17,13 +17,14 @@ import numpy as np
 
 from ...params import check_range
 from ...roller_contact import roller_contact
-from ...roller_equilibrium import (RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways, roller_contact_loadings,
-                                   roller_raceways, roller_results, roller_stiffness_matrix, solve_roller_equilibrium)
+from ...roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways,
+                                   roller_contact_loadings, roller_raceways, roller_results, roller_stiffness_matrix,
+                                   solve_roller_equilibrium)
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import (element_table_lines, format_number, state_column, stiffness_lines, swept_display,
                           to_display)
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, convergence_checks, quantity, register
-from .ball import stiffness_against_sweep
+from .ball import check_speed_factor, stiffness_against_sweep
 from .mounting import operating_clearance
 from .roller import contact_settings, profile_line
 
@@ -85,6 +86,7 @@ def scene_raceways(v, built) -> dict:
 
 def _operating(v, built) -> dict:
     bearing = built["bearing"]
+    check_speed_factor(v)
     force = v["operating.force"]
     misalignment = v.get("operating.misalignment")
     if misalignment is not None and "operating.moment" in v:
@@ -97,9 +99,28 @@ def _operating(v, built) -> dict:
     if bearing.kind == "cylindrical_roller" and not _traced(axial) and float(axial) != 0.0:
         raise ValueError(f"operating.force: a cylindrical roller bearing without ribs carries no axial load; "
                          f"Fz must be 0, got {float(axial):g} N")
+    if bearing.kind == "tapered_roller":
+        _check_tapered_load(force, v.get("bearing.contact_angle", 0.0))
     return {"operating": RollerOperating(force=force, moment=v.get("operating.moment", [0.0, 0.0]),
                                          inner_speed=v.get("operating.inner_speed", 0.0),
                                          outer_speed=v.get("operating.outer_speed", 0.0), misalignment=misalignment)}
+
+
+def _check_tapered_load(force, cup_angle) -> None:
+    """ValueError naming operating.force unless Fz > Fr tan α_o: the cup has no rib, so it pushes
+    each roller along its contact normal at α_o, and the applied load balances the sum of those
+    pushes: Fz = Σ Q sin α_o and Fr = |Σ Q cos α_o (cos ψ, sin ψ)| ≤ Σ Q cos α_o = Fz / tan α_o,
+    equal only with a single roller loaded. Below it no equilibrium exists."""
+    if any(_traced(x) for x in (*force, cup_angle)):
+        return
+    radial, axial = math.hypot(float(force[0]), float(force[1])), float(force[2])
+    needed = radial * math.tan(float(cup_angle))
+    if (radial > 0.0 or axial != 0.0) and axial <= needed:
+        raise ValueError(f"operating.force: a tapered roller bearing takes Fr = {radial:.4g} N only with an axial load "
+                         f"Fz > Fr tan α_o = {needed:.4g} N pushing the cone into the cup (+z), got Fz = {axial:.4g} N "
+                         "(its cup pushes the rollers along α_o = "
+                         f"{math.degrees(float(cup_angle)):.3g}°; a radially loaded tapered bearing is held axially by "
+                         "its partner: mount the pair on a shaft, [[bearings]])")
 
 
 def _influence_rollers(v, built) -> dict:
@@ -115,7 +136,8 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     rollers = roller_results(solution.displacement, bearing, raceways, operating, model)
     out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
            "residual": solution.residual, "rollers.azimuth": rollers.azimuth, "rollers.tilt": rollers.tilt,
-           "rollers.shift": rollers.shift, "rollers.lamina_position": rollers.lamina_y}
+           "rollers.shift": rollers.shift, "rollers.lamina_position": rollers.lamina_y,
+           "validity.approach_ratio": rollers.largest_approach / (0.5 * (bearing.small_diameter + bearing.large_diameter))}
     for side in ("inner", "outer"):
         out |= {f"rollers.{side}.load": getattr(rollers, f"{side}_load"),
                 f"rollers.{side}.lamina_load": getattr(rollers, f"{side}_lamina_load"),
@@ -133,6 +155,10 @@ def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
     if not bool(values["converged"]):
         errors.append(f"roller bearing equilibrium solver did not converge: largest scaled residual "
                       f"{float(values['residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})")
+    elif float(values["validity.approach_ratio"]) > MAX_APPROACH_FRACTION:
+        errors.append(f"equilibrium outside the model: a lamina approach of {float(values['validity.approach_ratio']) * 100:.3g} "
+                      f"% of the roller diameter passes the limit of {MAX_APPROACH_FRACTION * 100:g} % (Hertz line "
+                      "contacts small against the roller)")
     for side in ("inner", "outer"):
         pressure = np.asarray(values[f"rollers.{side}.max_pressure"])
         roller = int(np.argmax(pressure))
@@ -233,6 +259,8 @@ EQUILIBRIUM = Block(
                                       "operating.misalignment needs)", in_report=False),
         Output("converged", "", "", "the equilibrium solver converged", in_report=False),
         Output("residual", "", "", "largest scaled residual of ring and roller equations", in_report=False),
+        Output("validity.approach_ratio", "", "", "largest lamina approach / mean roller diameter (model limit "
+                                                  f"{MAX_APPROACH_FRACTION:g})", in_report=False),
         Output("rollers.azimuth", "rad", "deg", "roller azimuth ψ from +x", column="ψ"),
         *_side_outputs("inner"),
         *_side_outputs("outer"),

@@ -197,7 +197,8 @@ def _validity(support, elements):
         return jax.lax.stop_gradient(jnp.stack([
             ball_validity.largest_approach_ratio(elements.inner_approach, elements.outer_approach,
                                                  support.bearing.ball_diameter),
-            ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle),
+            ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle,
+                                                elements.inner_load, elements.outer_load),
             low_shoulder_angle(support.bearing, elements)]))
     return jnp.array([0.0, 0.0, 0.5 * jnp.pi])
 
@@ -293,6 +294,23 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     return out
 
 
+# rad: 10 arcmin, the largest permissible misalignment the catalogues give for rigid (not
+# self-aligning) rolling bearings: deep-groove ball bearings 2′–10′, angular-contact 2′, cylindrical
+# roller 3′–4′ (SKF Rolling bearings catalogue, 2018, "Permissible misalignment" of each type)
+PERMISSIBLE_MISALIGNMENT = np.radians(10.0 / 60.0)
+
+
+def misalignment_warnings(displacements) -> list[str]:
+    """A warning for each bearing whose inner ring tilts against its outer ring by more than
+    `PERMISSIBLE_MISALIGNMENT` (`displacements` (bearings, 5): [x, y, z, θx, θy] [m, rad]) — a shaft
+    on one bearing, or one bending steeply at it, which the catalogues do not allow."""
+    tilts = np.hypot(np.asarray(displacements)[:, 3], np.asarray(displacements)[:, 4])
+    return [f"bearing {number}: its rings tilt {tilt * 1e3:.3g} mrad ({np.degrees(tilt) * 60:.3g}′) against each other, "
+            f"beyond the {np.degrees(PERMISSIBLE_MISALIGNMENT) * 60:.0f}′ a rigid rolling bearing permits (a shaft held "
+            "by one bearing pivots on it: add a second bearing, or check the layout)"
+            for number, tilt in enumerate(tilts) if tilt > PERMISSIBLE_MISALIGNMENT]
+
+
 def _checks(values: dict) -> tuple[list[str], list[str]]:
     errors = [line for number, (approach, angle, lowest) in enumerate(np.asarray(values["bearings.validity"]))
               for line in validity_errors(approach, angle, f"bearing {number}", lowest)]
@@ -303,6 +321,7 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
                 f"{ISO76_BALL_PRESSURE_LIMIT / 1e9:g} GPa"
                 for number, pressure in enumerate(np.asarray(values["bearings.max_pressure"]))
                 if pressure > ISO76_BALL_PRESSURE_LIMIT]
+    warnings += misalignment_warnings(values["bearings.displacement"])
     return errors, warnings
 
 

@@ -1,0 +1,351 @@
+"""Random inputs over the documented envelope (docs/theory.md §Envelopes).
+
+Valid ball and roller bearings: seeded random draws of geometry, speed and load, solved in vmapped
+batches (one compiled program per rolling-element count and bearing type: a batch of hundreds of
+random bearings costs one compilation, where hypothesis's one-example-at-a-time draws would each
+pay a dispatch and the shrinking would re-solve; the seed is printed on failure and set by
+DIFFBEARING_SEED). Every output is finite. At or above the requisite minimum load (ISO 281's
+equivalent load ≥ 0.01 C_r for ball bearings, 0.02 C_r for roller bearings, `minimum_load`), or
+at standstill, ≥ 99.9 % converge; below it at speed, a case converges or reports the reason the
+application layer gives (a state outside the model, `ball_validity`; a centrifugal force above the
+load per ball, `light_at_speed`). The fast profile runs in the default suite, the large one
+(≥ 2000 ball and ≥ 1000 roller bearings) in the slow suite.
+
+Invalid scene values (hypothesis): any quantity key of the packaged examples given a wrong unit,
+NaN, or infinity is refused with a ValueError (exit 2) naming that key.
+"""
+
+import math
+import os
+
+import hypothesis
+import hypothesis.strategies as st
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+from diffbearing import ball_equilibrium, ball_validity, build_model, life, load_scene
+from diffbearing.app.adapters.ball import centrifugal_ratio, low_shoulder_angle
+from diffbearing.app.registry import all_keys
+from diffbearing.app.scene import read_document
+from diffbearing.minimum_load import BALL_MINIMUM_LOAD_RATIO, ROLLER_MINIMUM_LOAD_RATIO
+from diffbearing.params import Operating, ball_bearing
+from diffbearing.roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating,
+                                            roller_centrifugal_force, roller_raceways, roller_results,
+                                            roller_stiffness_matrix, solve_roller_equilibrium)
+from diffbearing.roller_geometry import roller_bearing
+from diffbearing.roller_life import roller_dynamic_load_rating, roller_equivalent_dynamic_load
+from diffbearing.roller_profile import roller_profile
+
+SEED = int(os.environ.get("DIFFBEARING_SEED", "20261127"))
+SPEED_MODEL = ball_equilibrium.BallModel(centrifugal=True, gyroscopic=True)
+# the envelope the draws walk (docs/theory.md §Envelopes, ball bearings)
+BALL_DIAMETER = (3e-3, 30e-3)  # m
+DIAMETER_RATIO = (0.12, 0.32)  # γ = D_w/d_m
+INNER_GROOVE, OUTER_GROOVE = (0.505, 0.56), (0.51, 0.57)
+FREE_ANGLE = {"deep_groove_ball": (0.0, 10.0), "angular_contact_ball": (12.0, 45.0)}  # deg
+SPEED_FACTOR = (0.0, 1.0e6)  # n d_m [mm r/min]
+LOAD_LEVEL = (-2.2, -0.3)  # log10 of |F| / (50 D_w^1.8 12^(2/3)) [N, mm]: a rough C; ~80 % above the minimum load
+
+
+def draw(rng, size: int, kind: str):
+    """(size, 8) random cases: D_w, γ, f_i, f_o, α₀, ω_i, F_r, F_a (SI)."""
+    diameter = rng.uniform(*BALL_DIAMETER, size)
+    ratio = rng.uniform(*DIAMETER_RATIO, size)
+    pitch = diameter / ratio
+    speed = rng.uniform(*SPEED_FACTOR, size) / (pitch * 1e3) * math.pi / 30.0
+    rating = 50.0 * (diameter * 1e3) ** 1.8 * 12.0 ** (2.0 / 3.0)
+    load = rating * 10.0 ** rng.uniform(*LOAD_LEVEL, size)
+    radial_share = rng.uniform(0.0, 1.0, size)
+    axial_share = (1.0 - radial_share) * (0.5 if kind == "deep_groove_ball" else 1.0)
+    return np.stack([diameter, ratio, rng.uniform(*INNER_GROOVE, size), rng.uniform(*OUTER_GROOVE, size),
+                     np.radians(rng.uniform(*FREE_ANGLE[kind], size)), speed, load * radial_share,
+                     load * axial_share], axis=1)
+
+
+def solve_case(case, count: int, kind: str):
+    """One bearing with its tilts held (a shaft holds a single bearing), through the blocks the
+    ball adapter runs: status flags and whether every output is finite."""
+    diameter, ratio, inner, outer, angle, speed, radial, axial = (case[i] for i in range(8))
+    bearing = ball_bearing(ball_diameter=diameter, pitch_diameter=diameter / ratio, balls=count, kind=kind,
+                           inner_groove_ratio=inner, outer_groove_ratio=outer, contact_angle=angle)
+    operating = Operating(speed, 0.0, jnp.stack([radial, 0.0, axial]), jnp.zeros(2), misalignment=jnp.zeros(2))
+    solution = ball_equilibrium.solve_equilibrium(bearing, operating, SPEED_MODEL)
+    balls = ball_equilibrium.ball_results(solution.displacement, bearing, operating, SPEED_MODEL)
+    stiffness = ball_equilibrium.stiffness_matrix(solution.displacement, bearing, operating, SPEED_MODEL)
+    outputs = (solution.displacement, solution.force, solution.residual, stiffness, *jax.tree.leaves(balls))
+    minimum = BALL_MINIMUM_LOAD_RATIO * life.basic_dynamic_load_rating(bearing)
+    return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
+            "residual": solution.residual, "converged": solution.converged,
+            "approach": solution.approach_ratio, "angle": solution.contact_angle,
+            "lowest": low_shoulder_angle(bearing, balls), "light": centrifugal_ratio(balls, operating) > 1.0,
+            "below_minimum": (life.equivalent_dynamic_load(bearing, operating.force) < minimum) & (speed > 0.0)}
+
+
+def classify(out: dict) -> dict[str, np.ndarray]:
+    """Each case's outcome, as the CLI reports it (adapters/ball.py `_equilibrium_checks`)."""
+    solved = out["residual"] < ball_equilibrium.RESIDUAL_TOLERANCE
+    outside = ((out["approach"] > ball_validity.MAX_APPROACH_FRACTION) | (out["angle"] >= np.pi / 2)
+               | (out["lowest"] < -1e-9))
+    return {"converged": solved & ~outside, "outside the model": solved & outside,
+            "light at speed": ~solved & out["light"], "unexplained": ~solved & ~out["light"]}
+
+
+def tally(totals: dict, kind: str, outcome: dict, below_minimum: np.ndarray) -> None:
+    """Add each outcome's count to `totals[kind]`, at or above the minimum load and below it."""
+    for band, inside in (("loaded", ~below_minimum), ("below minimum load", below_minimum)):
+        counts = totals.setdefault(kind, {}).setdefault(band, dict.fromkeys(outcome, 0))
+        for name, flags in outcome.items():
+            counts[name] += int((flags & inside).sum())
+
+
+def check_totals(totals: dict) -> None:
+    """≥ 99.9 % of the cases at or above the minimum load converge; none anywhere unexplained."""
+    print(f"\nseed {SEED}: {totals}")
+    for kind, bands in totals.items():
+        loaded = bands["loaded"]
+        assert loaded["converged"] >= 0.999 * sum(loaded.values()), f"seed {SEED}: {kind}: {loaded}"
+        assert all(band["unexplained"] == 0 for band in bands.values()), f"seed {SEED}: {kind}: {bands}"
+
+
+@pytest.fixture(scope="module")
+def solvers():
+    cache = {}
+
+    def get(count, kind):
+        if (count, kind) not in cache:
+            cache[count, kind] = jax.jit(jax.vmap(lambda case: solve_case(case, count, kind)))
+        return cache[count, kind]
+
+    return get
+
+
+def run_profile(solvers, groups, size: int) -> dict:
+    rng = np.random.default_rng(SEED)
+    totals = {}
+    for kind, count in groups:
+        cases = draw(rng, size, kind)
+        out = jax.tree.map(np.asarray, solvers(count, kind)(jnp.asarray(cases)))
+        assert out["finite"].all(), (f"seed {SEED}: non-finite outputs for {kind}, {count} balls: "
+                                     f"{cases[~out['finite']][:3].tolist()}")
+        outcome = classify(out)
+        tally(totals, kind, outcome, out["below_minimum"])
+        assert not outcome["unexplained"].any(), (f"seed {SEED}: {kind}, {count} balls, unconverged without a reason: "
+                                                  f"{cases[outcome['unexplained']][:3].tolist()}")
+    check_totals(totals)
+    return totals
+
+
+def test_random_ball_bearings_converge_or_say_why(solvers):
+    run_profile(solvers, [("deep_groove_ball", 8), ("angular_contact_ball", 14)], 32)
+
+
+@pytest.mark.slow
+def test_random_ball_bearings_large_profile(solvers):
+    """2800 cases (≥ 2000 of them at or above the minimum load): ≥ 99.9 % of those converge, the
+    rest below it converge or report a reason."""
+    totals = run_profile(solvers, [(kind, count) for kind in ("deep_groove_ball", "angular_contact_ball")
+                                   for count in (8, 14)], 700)
+    assert sum(sum(bands["loaded"].values()) for bands in totals.values()) >= 2000
+
+
+# --- roller bearings -----------------------------------------------------------------------
+
+ROLLER_MODEL = RollerModel(laminae=20, centrifugal=True)
+ROLLER_DIAMETER = (5e-3, 40e-3)  # m
+ROLLER_RATIO = (0.12, 0.3)  # D/d_m
+ROLLER_LENGTH = (0.8, 1.6)  # l/D
+ROLLER_SPEED_FACTOR = (0.0, 6.0e5)  # n d_m [mm r/min]
+CUP_ANGLE = (8.0, 25.0)  # deg above twice the cone half angle
+CONE_HALF_ANGLE = (0.5, 3.0)  # deg
+ROLLER_LOAD_LEVEL = (-1.8, -0.2)  # log10 of |F| / (100 (D l)^(7/9) 12^(3/4)) [N, mm]: about half above the minimum load
+
+
+def draw_rollers(rng, size: int, kind: str):
+    """(size, 8) random cases: D_mean, γ, l/D, diametral clearance (cylindrical) or cone half angle
+    (tapered), cup angle, ω_i, F_r, F_a (SI). A tapered bearing's F_a exceeds F_r tan α_o (below it
+    no equilibrium exists, `adapters/roller_bearing._check_tapered_load`)."""
+    diameter = rng.uniform(*ROLLER_DIAMETER, size)
+    ratio = rng.uniform(*ROLLER_RATIO, size)
+    length = rng.uniform(*ROLLER_LENGTH, size)
+    speed = rng.uniform(*ROLLER_SPEED_FACTOR, size) / (diameter / ratio * 1e3) * math.pi / 30.0
+    rating = 100.0 * (diameter * 1e3 * diameter * length * 1e3) ** (7.0 / 9.0) * 12.0 ** 0.75
+    load = rating * 10.0 ** rng.uniform(*ROLLER_LOAD_LEVEL, size)
+    if kind == "cylindrical_roller":
+        clearance = rng.uniform(-2e-4, 1e-3, size) * diameter / ratio
+        return np.stack([diameter, ratio, length, clearance, np.zeros(size), speed, load, np.zeros(size)], axis=1)
+    half = np.radians(rng.uniform(*CONE_HALF_ANGLE, size))
+    cup = 2.0 * half + np.radians(rng.uniform(*CUP_ANGLE, size))
+    radial = load * rng.uniform(0.0, 1.0, size)
+    axial = radial * np.tan(cup) * rng.uniform(1.3, 4.0, size) + (load - radial)
+    return np.stack([diameter, ratio, length, half, cup, speed, radial, axial], axis=1)
+
+
+def solve_roller_case(case, count: int, kind: str):
+    """One roller bearing with its tilts held, through the blocks the roller adapter runs."""
+    diameter, ratio, length_ratio, fourth, cup, speed, radial, axial = (case[i] for i in range(8))
+    length = diameter * length_ratio
+    profile = roller_profile("circular", length=length, flat_length=0.8 * length, crown_radius=50.0 * diameter)
+    if kind == "cylindrical_roller":
+        bearing = roller_bearing(kind=kind, length=length, diameter=diameter, profile=profile, roller_count=count)
+        raceways = roller_raceways(bearing, pitch_diameter=diameter / ratio, diametral_clearance=fourth)
+    else:
+        spread = length * jnp.tan(fourth)
+        bearing = roller_bearing(kind=kind, length=length, small_diameter=diameter - spread,
+                                 large_diameter=diameter + spread, cone_half_angle=fourth, profile=profile,
+                                 roller_count=count)
+        raceways = roller_raceways(bearing, pitch_diameter=diameter / ratio, cup_angle=cup)
+    force = jnp.stack([radial, 0.0, axial])
+    operating = RollerOperating(force, jnp.zeros(2), inner_speed=speed, misalignment=jnp.zeros(2))
+    solution = solve_roller_equilibrium(bearing, raceways, operating, ROLLER_MODEL)
+    rollers = roller_results(solution.displacement, bearing, raceways, operating, ROLLER_MODEL)
+    stiffness = roller_stiffness_matrix(solution.displacement, bearing, raceways, operating, ROLLER_MODEL)
+    outputs = (solution.displacement, solution.force, solution.residual, stiffness, *jax.tree.leaves(rollers))
+    rating = roller_dynamic_load_rating(count, diameter, length, raceways.cup_angle, raceways.pitch_diameter)
+    equivalent = roller_equivalent_dynamic_load(force, raceways.cup_angle)
+    centrifugal = roller_centrifugal_force(bearing, raceways, operating)
+    return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
+            "residual": solution.residual, "approach": rollers.largest_approach / diameter,
+            "light": centrifugal > jnp.linalg.norm(force) / count,
+            "below_minimum": (equivalent < ROLLER_MINIMUM_LOAD_RATIO * rating) & (speed > 0.0)}
+
+
+def classify_rollers(out: dict) -> dict[str, np.ndarray]:
+    """Each case's outcome, as the CLI reports it (adapters/roller_bearing.py `_equilibrium_checks`)."""
+    solved = out["residual"] < RESIDUAL_TOLERANCE
+    outside = out["approach"] > MAX_APPROACH_FRACTION
+    return {"converged": solved & ~outside, "outside the model": solved & outside,
+            "light at speed": ~solved & out["light"], "unexplained": ~solved & ~out["light"]}
+
+
+def run_roller_profile(groups, size: int) -> dict:
+    rng = np.random.default_rng(SEED + 1)
+    totals = {}
+    for kind, count in groups:
+        cases = draw_rollers(rng, size, kind)
+        out = jax.tree.map(np.asarray, jax.jit(jax.vmap(lambda case: solve_roller_case(case, count, kind)))(
+            jnp.asarray(cases)))
+        assert out["finite"].all(), (f"seed {SEED}: non-finite outputs for {kind}, {count} rollers: "
+                                     f"{cases[~out['finite']][:3].tolist()}")
+        outcome = classify_rollers(out)
+        tally(totals, kind, outcome, out["below_minimum"])
+        assert not outcome["unexplained"].any(), (f"seed {SEED}: {kind}, {count} rollers, unconverged without a "
+                                                  f"reason: {cases[outcome['unexplained']][:3].tolist()}")
+    check_totals(totals)
+    return totals
+
+
+def test_random_roller_bearings_converge_or_say_why():
+    run_roller_profile([("cylindrical_roller", 12)], 24)
+
+
+@pytest.mark.slow
+def test_random_roller_bearings_large_profile():
+    """1200 roller bearings, cylindrical and tapered: ≥ 99.9 % of those at or above the minimum load
+    converge, the rest converge or report a reason."""
+    run_roller_profile([("cylindrical_roller", 12), ("cylindrical_roller", 20), ("tapered_roller", 16)], 400)
+
+
+# --- invalid values of scene keys ----------------------------------------------------------
+
+EXAMPLES = ("aero_angular_contact", "mounted_6411", "gearbox_6411_ratings", "cylindrical_roller_bearing",
+            "tapered_roller_bearing", "cage_b7005", "starved_roller", "spindle_pair")
+SI_OF = {"length": "mm", "force": "N", "moment": "N*m", "angle": "deg", "angular_speed": "rpm", "pressure": "MPa",
+         "viscosity": "Pa*s", "kinematic_viscosity": "mm^2/s", "density": "kg/m^3", "inverse_pressure": "1/Pa",
+         "stiffness": "N/m", "time": "s", "temperature": "degC", "thermal_expansion": "1/K", "dimensionless": ""}
+
+
+def _quantity_keys():
+    """(example, dotted key, dimension, list length or None) of every quantity the examples set."""
+    keys = all_keys()
+    found = []
+    for example in EXAMPLES:
+        document, _ = read_document(example)
+        for table, content in document.items():
+            if not isinstance(content, dict) or table == "sweep":
+                continue
+            for name, value in content.items():
+                key = keys.get(f"{table}.{name}")
+                if key is not None and key.kind in ("quantity", "quantities"):
+                    found.append((example, f"{table}.{name}", key.dimension,
+                                  len(value) if isinstance(value, list) else None))
+    return found
+
+
+QUANTITY_KEYS = _quantity_keys()
+hypothesis.settings.register_profile("fast", max_examples=40, deadline=None)
+hypothesis.settings.register_profile("large", max_examples=400, deadline=None)
+
+
+INVALID = st.sampled_from(["3 kg", "nan", "-inf", "x"])
+
+
+def check_refused(target, bad, position):
+    """The example with one quantity (or one element of a list) set to `bad`: ValueError naming the key."""
+    example, key, dimension, length = target
+    unit = SI_OF[dimension]
+    text = bad if bad in ("3 kg", "x") else f"{bad} {unit}".strip()
+    if length is None:
+        override = f'{key}="{text}"'
+    else:
+        values = [f'"0 {unit}"'] * length
+        values[position % length] = f'"{text}"'
+        override = f"{key}=[{', '.join(values)}]"
+    with pytest.raises(ValueError) as error:
+        build_model(load_scene(example, [override]))
+    assert key in str(error.value), (example, override, str(error.value))
+
+
+def _user_keys(example: str) -> set[str]:
+    document, _ = read_document(example)
+    return {f"{table}.{name}" for table, content in document.items() if isinstance(content, dict) for name in content}
+
+
+def check_scaled(target, factor):
+    """The example with one quantity scaled by `factor` (its sign flipped, zeroed, ×1e3, ×1e-6): it
+    runs, or is refused by a message that starts with a key the user wrote — the changed one, or
+    the other key of a relation between two keys the scene sets — never a derived one."""
+    example, key, _, length = target
+    document, _ = read_document(example)
+    table, name = key.split(".", 1)
+    value = document[table][name]
+
+    def scaled(item):
+        if isinstance(item, (int, float)):
+            return repr(item * factor)
+        number, _, unit = item.strip().partition(" ")
+        return f'"{float(number) * factor:g} {unit}"'
+
+    text = scaled(value) if length is None else "[" + ", ".join(scaled(item) for item in value) + "]"
+    try:
+        build_model(load_scene(example, [f"{key}={text}"]))
+    except ValueError as error:
+        named = str(error).split(":")[0].split(" ")[0]
+        assert named in _user_keys(example) | {key}, (example, key, text, str(error))
+
+
+@hypothesis.given(target=st.sampled_from(QUANTITY_KEYS), bad=INVALID, position=st.integers(0, 2))
+@hypothesis.settings(hypothesis.settings.get_profile("fast"))
+def test_invalid_scene_values_name_their_key(target, bad, position):
+    check_refused(target, bad, position)
+
+
+@hypothesis.given(target=st.sampled_from(QUANTITY_KEYS), factor=st.sampled_from([-1.0, 0.0, 1e3, 1e-6]))
+@hypothesis.settings(hypothesis.settings.get_profile("fast"))
+def test_out_of_range_values_name_a_key_the_user_wrote(target, factor):
+    check_scaled(target, factor)
+
+
+@pytest.mark.slow
+@hypothesis.given(target=st.sampled_from(QUANTITY_KEYS), bad=INVALID, position=st.integers(0, 2))
+@hypothesis.settings(hypothesis.settings.get_profile("large"))
+def test_invalid_scene_values_name_their_key_large(target, bad, position):
+    check_refused(target, bad, position)
+
+
+@pytest.mark.slow
+@hypothesis.given(target=st.sampled_from(QUANTITY_KEYS), factor=st.sampled_from([-1.0, 0.0, 1e3, 1e-6]))
+@hypothesis.settings(hypothesis.settings.get_profile("large"))
+def test_out_of_range_values_name_a_key_the_user_wrote_large(target, factor):
+    check_scaled(target, factor)
