@@ -179,6 +179,7 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
            "validity.contact_angle": solution.contact_angle,
            "validity.lowest_contact_angle": low_shoulder_angle(bearing, balls),
            "validity.centrifugal_ratio": jax.lax.stop_gradient(centrifugal_ratio(balls, operating)),
+           "validity.missing_axial_load": jax.lax.stop_gradient(missing_axial_load(bearing, operating)),
            "validity.speed_factor": jax.lax.stop_gradient(speed_factor(operating.inner_speed - operating.outer_speed,
                                                                        bearing.pitch_diameter)),
            "balls.azimuth": balls.azimuth,
@@ -257,6 +258,32 @@ def centrifugal_ratio(balls, operating):
     return jnp.max(balls.centrifugal_force) / jnp.maximum(per_ball, 1e-300)
 
 
+# Fa/(Fr tan α₀) of a single-row angular-contact bearing with half its balls loaded (the Sjövall
+# integrals at ε = 0.5, Harris & Kotzalas vol. 1, ch. 7): below it the radial load's own axial
+# component is not taken up, and in an arrangement the partner bearing carries it (the catalogues'
+# requisite axial load, Fa ≥ R Fr, R = 1.14 for 40° bearings, SKF Rolling bearings 2018).
+PARTNER_AXIAL_FACTOR = 1.25
+
+
+def missing_axial_load(bearing, operating):
+    """max(0, 1.25 F_r tan α₀ − F_z) [N] of an angular-contact bearing (0 for a deep-groove one): the
+    axial load it lacks to run with half its balls loaded without a partner."""
+    if bearing.kind == "deep_groove_ball":
+        return jnp.zeros(())
+    radial = jnp.sqrt(operating.force[0] ** 2 + operating.force[1] ** 2)
+    return jnp.maximum(PARTNER_AXIAL_FACTOR * radial * jnp.tan(bearing.free_contact_angle) - operating.force[2], 0.0)
+
+
+def without_partner(values: dict) -> str:
+    """The reason a solve did not converge where an angular-contact bearing lacks axial load."""
+    missing = float(values.get("validity.missing_axial_load", 0.0))
+    if missing <= 0.0:
+        return ""
+    return (f": the axial load is {missing:.4g} N short of 1.25 F_r tan α₀, below which a single angular-contact "
+            "bearing runs only against its partner (its balls pressed towards the low shoulder) — mount the pair as a "
+            "set ([set]) or on a shaft")
+
+
 def light_at_speed(values: dict) -> str:
     """The reason a solve at speed did not converge where the centrifugal force outweighs the load."""
     ratio = float(values.get("validity.centrifugal_ratio", 0.0))
@@ -272,7 +299,7 @@ def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
     warnings = []
     if float(values["residual"]) >= ball_equilibrium.RESIDUAL_TOLERANCE:
         errors = [f"equilibrium solver did not converge: largest scaled residual {float(values['residual']):.1e} "
-                  f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})" + light_at_speed(values)]
+                  f"(tolerance {ball_equilibrium.RESIDUAL_TOLERANCE:g})" + (light_at_speed(values) or without_partner(values))]
     else:
         errors = validity_errors(values["validity.approach_ratio"], values["validity.contact_angle"], "equilibrium",
                                  values["validity.lowest_contact_angle"])
@@ -358,6 +385,8 @@ EQUILIBRIUM = Block(
         Output("validity.centrifugal_ratio", "", "", "largest ball centrifugal force over the applied load per ball "
                                                      "(0 without the centrifugal effect)", in_report=False),
         Output("validity.speed_factor", "", "", "n·d_m of the relative ring speed [mm·r/min]", in_report=False),
+        Output("validity.missing_axial_load", "N", "N", "axial load an angular-contact bearing lacks to run without a "
+                                                        "partner: max(0, 1.25 Fr tan α₀ − Fz)", in_report=False),
         Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x", column="ψ"),
         *_ball_outputs("inner"),
         *_ball_outputs("outer"),
