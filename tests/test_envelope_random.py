@@ -5,11 +5,13 @@ batches (one compiled program per rolling-element count and bearing type: a batc
 random bearings costs one compilation, where hypothesis's one-example-at-a-time draws would each
 pay a dispatch and the shrinking would re-solve; the seed is printed on failure and set by
 DIFFBEARING_SEED). Every output is finite. At or above the requisite minimum load (ISO 281's
-equivalent load ≥ 0.01 C_r for ball bearings, 0.02 C_r for roller bearings, `minimum_load`), or
-at standstill, ≥ 99.9 % converge; below it at speed, a case converges or reports the reason the
-application layer gives (a state outside the model, `ball_validity`; a centrifugal force above the
-load per ball, `light_at_speed`). The fast profile runs in the default suite, the large one
-(2000 ball and 900 roller bearings) in the slow suite.
+equivalent load ≥ 0.01 C_r for ball bearings, 0.02 C_r for roller bearings, `minimum_load`, and at
+speed a rolling element's centrifugal force below the load per element), or at standstill, and
+for angular-contact bearings with the axial load to run without a partner, ≥ 99.9 % converge;
+every other case converges or reports the reason the application layer gives (a state outside
+the model, `ball_validity`; a centrifugal force above the load per ball, `light_at_speed`; an
+axial load short of 1.25 F_r tan α₀, `without_partner`). The fast profile runs in the default suite, the large one
+(2000 ball and 600 roller bearings) in the slow suite.
 
 Invalid scene values (hypothesis): any quantity key of the packaged examples given a wrong unit,
 NaN, or infinity is refused with a ValueError (exit 2) naming that key.
@@ -76,11 +78,12 @@ def solve_case(case, count: int, kind: str):
     stiffness = ball_equilibrium.stiffness_matrix(solution.displacement, bearing, operating, SPEED_MODEL)
     outputs = (solution.displacement, solution.force, solution.residual, stiffness, *jax.tree.leaves(balls))
     minimum = BALL_MINIMUM_LOAD_RATIO * life.basic_dynamic_load_rating(bearing)
+    light = centrifugal_ratio(balls, operating) > 1.0
     return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
             "residual": solution.residual, "converged": solution.converged,
             "approach": solution.approach_ratio, "angle": solution.contact_angle,
-            "lowest": low_shoulder_angle(bearing, balls), "light": centrifugal_ratio(balls, operating) > 1.0,
-            "below_minimum": (life.equivalent_dynamic_load(bearing, operating.force) < minimum) & (speed > 0.0),
+            "lowest": low_shoulder_angle(bearing, balls), "light": light,
+            "below_minimum": ((life.equivalent_dynamic_load(bearing, operating.force) < minimum) | light) & (speed > 0.0),
             "without_partner": missing_axial_load(bearing, operating) > 0.0}
 
 
@@ -212,11 +215,10 @@ def solve_roller_case(case, count: int, kind: str):
     outputs = (solution.displacement, solution.force, solution.residual, stiffness, *jax.tree.leaves(rollers))
     rating = roller_dynamic_load_rating(count, diameter, length, raceways.cup_angle, raceways.pitch_diameter)
     equivalent = roller_equivalent_dynamic_load(force, raceways.cup_angle)
-    centrifugal = roller_centrifugal_force(bearing, raceways, operating)
+    light = roller_centrifugal_force(bearing, raceways, operating) > jnp.linalg.norm(force) / count
     return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
-            "residual": solution.residual, "approach": rollers.largest_approach / diameter,
-            "light": centrifugal > jnp.linalg.norm(force) / count,
-            "below_minimum": (equivalent < ROLLER_MINIMUM_LOAD_RATIO * rating) & (speed > 0.0)}
+            "residual": solution.residual, "approach": rollers.largest_approach / diameter, "light": light,
+            "below_minimum": ((equivalent < ROLLER_MINIMUM_LOAD_RATIO * rating) | light) & (speed > 0.0)}
 
 
 def classify_rollers(out: dict) -> dict[str, np.ndarray]:
@@ -250,9 +252,9 @@ def test_random_roller_bearings_converge_or_say_why():
 
 @pytest.mark.slow
 def test_random_roller_bearings_large_profile():
-    """900 roller bearings, cylindrical and tapered: ≥ 99.9 % of those at or above the minimum load
+    """600 roller bearings, cylindrical and tapered: ≥ 99.9 % of those at or above the minimum load
     converge, the rest converge or report a reason."""
-    run_roller_profile([("cylindrical_roller", 12), ("cylindrical_roller", 20), ("tapered_roller", 16)], 300)
+    run_roller_profile([("cylindrical_roller", 12), ("cylindrical_roller", 20), ("tapered_roller", 16)], 200)
 
 
 # --- invalid values of scene keys ----------------------------------------------------------
