@@ -132,20 +132,26 @@ def solvers():
     return get
 
 
-def run_profile(solvers, groups, size: int) -> dict:
-    rng = np.random.default_rng(SEED)
+def run_random(groups, size: int, rng, draw_cases, solver, classify_cases, elements: str) -> dict:
+    """Each (kind, count) of `groups`: `size` cases drawn, solved in one vmapped batch by
+    `solver(count, kind)`, every output finite, none unconverged without a reason; the totals
+    checked (`check_totals`) and returned."""
     totals = {}
     for kind, count in groups:
-        cases = draw(rng, size, kind)
-        out = jax.tree.map(np.asarray, solvers(count, kind)(jnp.asarray(cases)))
-        assert out["finite"].all(), (f"seed {SEED}: non-finite outputs for {kind}, {count} balls: "
+        cases = draw_cases(rng, size, kind)
+        out = jax.tree.map(np.asarray, solver(count, kind)(jnp.asarray(cases)))
+        assert out["finite"].all(), (f"seed {SEED}: non-finite outputs for {kind}, {count} {elements}: "
                                      f"{cases[~out['finite']][:3].tolist()}")
-        outcome = classify(out)
+        outcome = classify_cases(out)
         tally(totals, kind, outcome, out)
-        assert not outcome["unexplained"].any(), (f"seed {SEED}: {kind}, {count} balls, unconverged without a reason: "
-                                                  f"{cases[outcome['unexplained']][:3].tolist()}")
+        assert not outcome["unexplained"].any(), (f"seed {SEED}: {kind}, {count} {elements}, unconverged without a "
+                                                  f"reason: {cases[outcome['unexplained']][:3].tolist()}")
     check_totals(totals)
     return totals
+
+
+def run_profile(solvers, groups, size: int) -> dict:
+    return run_random(groups, size, np.random.default_rng(SEED), draw, solvers, classify, "balls")
 
 
 def test_random_ball_bearings_converge_or_say_why(solvers):
@@ -230,20 +236,10 @@ def classify_rollers(out: dict) -> dict[str, np.ndarray]:
 
 
 def run_roller_profile(groups, size: int) -> dict:
-    rng = np.random.default_rng(SEED + 1)
-    totals = {}
-    for kind, count in groups:
-        cases = draw_rollers(rng, size, kind)
-        out = jax.tree.map(np.asarray, jax.jit(jax.vmap(lambda case: solve_roller_case(case, count, kind)))(
-            jnp.asarray(cases)))
-        assert out["finite"].all(), (f"seed {SEED}: non-finite outputs for {kind}, {count} rollers: "
-                                     f"{cases[~out['finite']][:3].tolist()}")
-        outcome = classify_rollers(out)
-        tally(totals, kind, outcome, out)
-        assert not outcome["unexplained"].any(), (f"seed {SEED}: {kind}, {count} rollers, unconverged without a "
-                                                  f"reason: {cases[outcome['unexplained']][:3].tolist()}")
-    check_totals(totals)
-    return totals
+    def solver(count, kind):
+        return jax.jit(jax.vmap(lambda case: solve_roller_case(case, count, kind)))
+
+    return run_random(groups, size, np.random.default_rng(SEED + 1), draw_rollers, solver, classify_rollers, "rollers")
 
 
 def test_random_roller_bearings_converge_or_say_why():
