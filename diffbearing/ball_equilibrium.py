@@ -92,7 +92,7 @@ RING_STEP_TOLERANCE = 1e-11  # ring Newton stops when every scaled step componen
 RING_MAX_STEPS = 100
 # Speed continuation of the ring solve with speed effects (`_ring_solve`): fractions of the ring
 # speeds whose squares rise in equal steps (centrifugal force and gyroscopic moment ∝ ω²).
-SPEED_STAGES = tuple(float(x) for x in (((1.0 + jnp.arange(4)) / 4.0) ** 0.5))
+SPEED_STAGES = tuple(((1.0 + stage) / 4.0) ** 0.5 for stage in range(4))  # plain floats: no JAX at import
 # The static energy is only the start for Newton: a gradient of 1e-8 (scaled) is close enough, and
 # the energy's rounding error stops Armijo's test from resolving much less.
 STATIC_GRADIENT_TOLERANCE = 1e-8
