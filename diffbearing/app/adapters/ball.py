@@ -59,8 +59,8 @@ SPEED_FACTOR_WARNING, SPEED_FACTOR_LIMIT = 1.0e6, 1.0e7
 
 
 def speed_factor(speed, pitch_diameter):
-    """n·d_m [mm·r/min] of a ring speed [rad/s] on a pitch diameter [m]."""
-    return jnp.abs(speed) * 30.0 / np.pi * pitch_diameter * 1e3
+    """n·d_m [mm·r/min] of a ring speed [rad/s] on a pitch diameter [m] (arrays, or floats on the host)."""
+    return abs(speed) * 30.0 / np.pi * pitch_diameter * 1e3
 
 
 def check_speed_factor(v, pitch_key: str = "bearing.pitch_diameter") -> None:
@@ -70,7 +70,7 @@ def check_speed_factor(v, pitch_key: str = "bearing.pitch_diameter") -> None:
         speed = v.get(key)
         if speed is None or pitch is None or isinstance(speed, jax.core.Tracer) or isinstance(pitch, jax.core.Tracer):
             continue
-        factor = abs(float(speed)) * 30.0 / np.pi * float(pitch) * 1e3  # n·d_m, as `speed_factor`, on the host
+        factor = speed_factor(float(speed), float(pitch))
         if factor > SPEED_FACTOR_LIMIT:
             raise ValueError(f"{key}: n·d_m = {factor:.3g} mm·r/min is far beyond any rolling bearing (limit "
                              f"{SPEED_FACTOR_LIMIT:.0e}; {float(speed) * 30 / np.pi:.4g} r/min on d_m = {pitch * 1e3:.4g} mm)")
