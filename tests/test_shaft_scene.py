@@ -165,6 +165,9 @@ def test_roller_bearing_on_a_shaft_is_the_whole_roller_bearing_run(tmp_path):
         float(alone.values["frequencies.ball_pass_inner"]), rel=1e-12)
     assert float(shaft.values["bearings.friction.torque"][0]) == pytest.approx(float(alone.values["friction.torque"]),
                                                                                rel=1e-9)
+    # the roller bearing's Hertz approach limit reaches the shaft (bearings.validity's first column)
+    assert float(shaft.values["bearings.validity"][0][0]) == pytest.approx(
+        float(alone.values["validity.approach_ratio"]), rel=1e-9)
     rollers = len(alone.values["rollers.azimuth"])  # 12, the 6411E's 7 balls padded with NaN to 12
     assert np.isnan(shaft.values["bearings.elements.inner_contact_angle"][0]).all()
     assert np.isnan(shaft.values["bearings.elements.inner_load"][1][7:]).all()

@@ -191,8 +191,9 @@ def _results(support, local, speed):
 
 def _validity(support, elements):
     """(largest approach / D_w, largest |contact angle|, lowest loaded angle of an angular-contact
-    bearing) of a ball bearing (`ball_validity`, `low_shoulder_angle`), from its results; (0, 0, π/2)
-    for a roller bearing."""
+    bearing) of a ball bearing (`ball_validity`, `low_shoulder_angle`), from its results; for a roller
+    bearing (largest lamina approach / mean roller diameter, as its own scene's `validity.approach_ratio`
+    with the same 1 % limit, `roller_equilibrium.MAX_APPROACH_FRACTION`; 0; π/2)."""
     if isinstance(support, BallSupport):
         return jax.lax.stop_gradient(jnp.stack([
             ball_validity.largest_approach_ratio(elements.inner_approach, elements.outer_approach,
@@ -200,7 +201,8 @@ def _validity(support, elements):
             ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle,
                                                 elements.inner_load, elements.outer_load),
             low_shoulder_angle(support.bearing, elements)]))
-    return jnp.array([0.0, 0.0, 0.5 * jnp.pi])
+    mean_diameter = 0.5 * (support.bearing.small_diameter + support.bearing.large_diameter)
+    return jax.lax.stop_gradient(jnp.stack([elements.largest_approach / mean_diameter, 0.0, 0.5 * jnp.pi]))
 
 
 def _life(support, elements):
@@ -383,9 +385,10 @@ BLOCK = Block(
                in_report=False),
         Output("bearings.max_pressure", "Pa", "GPa", "each bearing's peak Hertz pressure (rollers: of their laminae)",
                in_report=False),
-        Output("bearings.validity", "-, rad, rad", "", "each bearing's largest approach / Dw, largest |contact angle| "
-               "and lowest loaded contact angle of an angular-contact bearing (model limits 1 %, 90°, 0)",
-               in_report=False),
+        Output("bearings.validity", "-, rad, rad", "",
+               "each bearing's largest approach / Dw (a roller bearing's / its mean roller diameter), largest "
+               "|contact angle| and lowest loaded contact angle of an angular-contact bearing (model limits 1 %, "
+               "90°, 0)", in_report=False),
         Output("bearings.elements.azimuth", "rad", "deg", "each bearing's element azimuths ψ in its own frame "
                "(NaN beyond its element count)", in_report=False),
         *(output for side in ("inner", "outer") for output in (
