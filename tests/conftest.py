@@ -10,7 +10,7 @@ import pytest
 # Compiled XLA programs are cached on disk across the test processes (tests, notebook kernels,
 # CLI subprocesses) of one run; set before JAX initialises its backends.
 # Every program is kept, however quick its compilation (JAX's default keeps those over 1 s only):
-# CI runs the default suite twice, the second run from this cache.
+# CI runs the default suite twice, the second run from this cache. JAX reads both from the environment.
 os.environ.setdefault("JAX_COMPILATION_CACHE_DIR", os.path.join(tempfile.gettempdir(), "diffbearing-jax-cache"))
 os.environ.setdefault("JAX_PERSISTENT_CACHE_MIN_COMPILE_TIME_SECS", "0")
 os.environ.setdefault("JAX_PERSISTENT_CACHE_MIN_ENTRY_SIZE_BYTES", "0")
@@ -19,8 +19,6 @@ import jax  # noqa: E402
 
 jax.config.update("jax_enable_x64", True)
 jax.config.update("jax_compilation_cache_dir", os.environ["JAX_COMPILATION_CACHE_DIR"])
-jax.config.update("jax_persistent_cache_min_compile_time_secs", float(os.environ["JAX_PERSISTENT_CACHE_MIN_COMPILE_TIME_SECS"]))
-jax.config.update("jax_persistent_cache_min_entry_size_bytes", int(os.environ["JAX_PERSISTENT_CACHE_MIN_ENTRY_SIZE_BYTES"]))
 
 from diffbearing.app import registry  # noqa: E402
 

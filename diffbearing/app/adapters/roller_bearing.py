@@ -129,6 +129,11 @@ def _influence_rollers(v, built) -> dict:
 
 # --- the equilibrium and its load distribution ------------------------------------------------
 
+def approach_ratio(bearing, rollers):
+    """The largest lamina approach / mean roller diameter [-] (limit `MAX_APPROACH_FRACTION`)."""
+    return rollers.largest_approach / (0.5 * (bearing.small_diameter + bearing.large_diameter))
+
+
 def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     model = roller_model(settings)
     bearing, raceways, operating = inputs["bearing"], inputs["raceways"], inputs["operating"]
@@ -137,7 +142,7 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
            "residual": solution.residual, "rollers.azimuth": rollers.azimuth, "rollers.tilt": rollers.tilt,
            "rollers.shift": rollers.shift, "rollers.lamina_position": rollers.lamina_y,
-           "validity.approach_ratio": rollers.largest_approach / (0.5 * (bearing.small_diameter + bearing.large_diameter))}
+           "validity.approach_ratio": approach_ratio(bearing, rollers)}
     for side in ("inner", "outer"):
         out |= {f"rollers.{side}.load": getattr(rollers, f"{side}_load"),
                 f"rollers.{side}.lamina_load": getattr(rollers, f"{side}_lamina_load"),

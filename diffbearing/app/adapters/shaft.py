@@ -33,7 +33,7 @@ from .life import ball_bearing_life, roller_bearing_life
 from .materials import material
 from .roller import scene_roller_bearing
 from .roller_bearing import ADAPTER as ROLLER_BEARING_ADAPTER
-from .roller_bearing import roller_model, scene_raceways
+from .roller_bearing import approach_ratio, roller_model, scene_raceways
 
 # the [fidelity] keys of the ball and roller bearing models, read by the shaft's block for every bearing
 FIDELITY = {key: dataclasses.replace(adapter.keys[key], read_by=("shaft",))
@@ -201,8 +201,7 @@ def _validity(support, elements):
             ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle,
                                                 elements.inner_load, elements.outer_load),
             low_shoulder_angle(support.bearing, elements)]))
-    mean_diameter = 0.5 * (support.bearing.small_diameter + support.bearing.large_diameter)
-    return jax.lax.stop_gradient(jnp.stack([elements.largest_approach / mean_diameter, 0.0, 0.5 * jnp.pi]))
+    return jax.lax.stop_gradient(jnp.stack([approach_ratio(support.bearing, elements), 0.0, 0.5 * jnp.pi]))
 
 
 def _life(support, elements):
