@@ -441,22 +441,38 @@ def _balls_in_equilibrium(start, displacement, bearing, operating, model, table,
                          _ball_tangent_solve)
 
 
-def equilibrium_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel, table=None):
-    """Ball centres (Z, 2) [m] for displacement Δ: static split, or per-ball solve with speed effects."""
-    if model.speed_effects:
-        return ball_positions(displacement, bearing, operating, model, table)
-    return static_positions(bearing, inner_groove_centres(bearing, displacement), model, table=table)
+def solved_ball_positions(ball_centres, displacement, bearing: BallBearing, operating: Operating, model: BallModel,
+                          table=None):
+    """(Z, 2) ball centres [m] at `ball_centres`, the balls' equilibrium a solve already found for Δ
+    (`Equilibrium.ball_centres`), without a Newton solve of their own; their derivative is that of
+    `ball_positions` (implicit, dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) d(Δ, p)), so a block that reads the
+    solved state traces no second solve (issue 47: one solve per program)."""
+    return _balls_in_equilibrium(jax.lax.stop_gradient(ball_centres), displacement, bearing, operating, model, table,
+                                 lambda residual, start, args: start)
 
 
-def ring_force(displacement, bearing: BallBearing, operating: Operating, model: BallModel, table=None):
+def equilibrium_positions(displacement, bearing: BallBearing, operating: Operating, model: BallModel, table=None,
+                          ball_centres=None):
+    """Ball centres (Z, 2) [m] for displacement Δ: static split, or with speed effects the per-ball
+    solve (`ball_positions`), or the solved `ball_centres` where given (`solved_ball_positions`)."""
+    if not model.speed_effects:
+        return static_positions(bearing, inner_groove_centres(bearing, displacement), model, table=table)
+    if ball_centres is not None:
+        return solved_ball_positions(ball_centres, displacement, bearing, operating, model, table)
+    return ball_positions(displacement, bearing, operating, model, table)
+
+
+def ring_force(displacement, bearing: BallBearing, operating: Operating, model: BallModel, table=None,
+               ball_centres=None):
     """[Fx, Fy, Fz, Mx, My] [N, N·m] the balls exert against an inner-ring displacement Δ.
 
     In equilibrium it equals the applied load; its Jacobian is the stiffness matrix. `table`: the
-    Hertz constants' Chebyshev table (`hertz_constants`).
+    Hertz constants' Chebyshev table (`hertz_constants`). `ball_centres`: the balls' equilibrium
+    at this Δ where a solve found it (`Equilibrium.ball_centres`), else solved here (speed effects).
     """
     centres = inner_groove_centres(bearing, displacement)
     if model.speed_effects:
-        positions = ball_positions(displacement, bearing, operating, model, table)
+        positions = equilibrium_positions(displacement, bearing, operating, model, table, ball_centres)
         state = ball_state(bearing, operating, centres, positions, model, table=table)
     else:
         state = _static_state(bearing, operating, centres, model, table=table)
@@ -701,6 +717,9 @@ class Equilibrium(eqx.Module):
     contact_angle: jax.Array  # largest |contact angle| [rad] (ball_validity)
     static_steps: jax.Array
     steps: jax.Array
+    # (Z, 2) ball centres [m] (axial, radial; outer groove centre as origin) with speed effects, else None:
+    # hand them to `ring_force`, `stiffness_matrix` or `ball_results` at this Δ, which then solve no balls
+    ball_centres: jax.Array | None = None
 
 
 def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> Equilibrium:
@@ -732,8 +751,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     displacement = _displacement(y, unknown, operating)
     centres = inner_groove_centres(bearing, displacement)
     if model.speed_effects:  # the balls of the joint solve, with their implicit derivative
-        positions = _balls_in_equilibrium(positions, displacement, bearing, operating, model, table,
-                                          lambda residual, start, args: start)
+        positions = solved_ball_positions(positions, displacement, bearing, operating, model, table)
         state = ball_state(bearing, operating, centres, positions, model, table=table)
     else:
         state = _static_state(bearing, operating, centres, model, table=table)
@@ -752,12 +770,16 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
         state["inner_angle"], state["outer_angle"], state["inner_load"], state["outer_load"]))
     converged = (residual < RESIDUAL_TOLERANCE) & ball_validity.within_model(approach_ratio, contact_angle)
     return Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
-                       steps.astype(static_steps.dtype))
+                       steps.astype(static_steps.dtype),
+                       jax.lax.stop_gradient(positions) if model.speed_effects else None)
 
 
-def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()):
-    """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated (exact, jacfwd)."""
-    return jax.jacfwd(ring_force)(displacement, bearing, operating, model, constant_table(bearing, model))
+def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel(),
+                     ball_centres=None):
+    """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated (exact, jacfwd;
+    with speed effects through the balls' implicit derivative). `ball_centres`: the solved balls at Δ
+    (`Equilibrium.ball_centres`); without them the balls are solved here."""
+    return jax.jacfwd(ring_force)(displacement, bearing, operating, model, constant_table(bearing, model), ball_centres)
 
 
 class BallResults(eqx.Module):
@@ -765,7 +787,8 @@ class BallResults(eqx.Module):
     outer) the normal load Q [N], contact angle α [rad], Hertz peak pressure [Pa] and semi-axes a, b
     [m] (a across rolling); orbital speed ω_m and spin speed ω_R [rad/s] (`kinematics.ball_speeds`);
     centrifugal force F_c [N] and gyroscopic moment M_g [N·m], None where the model leaves that
-    effect out; the contact approaches δ_i, δ_o [m] (negative: open), for `ball_validity`."""
+    effect out; the contact approaches δ_i, δ_o [m] (negative: open), for `ball_validity`; the ball
+    centres (Z, 2) [m] (`ring_force`'s `ball_centres`)."""
 
     azimuth: jax.Array
     inner_load: jax.Array
@@ -784,14 +807,16 @@ class BallResults(eqx.Module):
     gyroscopic_moment: jax.Array | None
     inner_approach: jax.Array
     outer_approach: jax.Array
+    centre: jax.Array  # (Z, 2) ball centres [m], (axial, radial) from the outer groove centre (module docstring)
 
 
-def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel()
-                 ) -> BallResults:
-    """Per-ball loads, contact angles, Hertz contact sizes and pressures, kinematics at Δ (SI)."""
+def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel(),
+                 ball_centres=None) -> BallResults:
+    """Per-ball loads, contact angles, Hertz contact sizes and pressures, kinematics at Δ (SI).
+    `ball_centres`: the solved balls at Δ (`Equilibrium.ball_centres`); without them, solved here."""
     table = constant_table(bearing, model)
     centres = inner_groove_centres(bearing, displacement)
-    positions = equilibrium_positions(displacement, bearing, operating, model, table)
+    positions = equilibrium_positions(displacement, bearing, operating, model, table, ball_centres)
     state = ball_state(bearing, operating, centres, positions, model, table=table)
     modulus = ball_raceway_modulus(bearing)
     inner, outer = (hertz.point_contact(state[f"{side}_load"], *curvature(bearing, state[f"{side}_angle"]), modulus,
@@ -804,4 +829,4 @@ def ball_results(displacement, bearing: BallBearing, operating: Operating, model
         state["orbital_speed"], state["spin_speed"],
         state["centrifugal_force"] if model.centrifugal else None,
         state["gyroscopic_moment"] if model.gyroscopic else None,
-        state["inner_approach"], state["outer_approach"])
+        state["inner_approach"], state["outer_approach"], positions)

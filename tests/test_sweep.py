@@ -84,7 +84,7 @@ def test_sharded_sweep_matches_single_device(swept, scene_file):
         result = run_model(build_model(load_scene({str(scene_file)!r})), progress=False)
         np.save({str(scene_file.parent / 'sharded.npy')!r}, result.values["displacement"])
     """)
-    env = dict(os.environ, XLA_FLAGS="--xla_force_host_platform_device_count=4")
+    env = dict(os.environ, XLA_FLAGS=f"{os.environ.get('XLA_FLAGS', '')} --xla_force_host_platform_device_count=4")
     subprocess.run([sys.executable, "-c", code], check=True, env=env)
     sharded = np.load(scene_file.parent / "sharded.npy")
     np.testing.assert_allclose(sharded, swept.values["displacement"], rtol=1e-9, atol=1e-15)

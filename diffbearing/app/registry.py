@@ -342,9 +342,18 @@ class Reads(Mapping):
         return len(self._values)
 
 
-def compiler_options(blocks, settings: dict) -> dict:
-    """The XLA compiler options the blocks ask for with these settings, merged (one program holds them all)."""
-    options: dict = {}
+# XLA's quick settings for a single run's programs on the CPU: LLVM at optimisation level 0 and the
+# loop emitters in place of the fusion emitters. A single run is compile-bound: the default scene's
+# program compiles in about half the time and runs a few milliseconds longer (docs/benchmarks.md,
+# §Compile time). Sweeps, whose batches are run-bound, and the programs of their own (the numerical
+# EHL solvers, seconds of run at fine grids) keep XLA's defaults, with their blocks' own options.
+QUICK_COMPILE = {"xla_backend_optimization_level": 0, "xla_cpu_use_fusion_emitters": False}
+
+
+def compiler_options(blocks, settings: dict, quick: bool = False) -> dict:
+    """The XLA compiler options the blocks ask for with these settings, merged (one program holds
+    them all); with `quick`, on the CPU, over `QUICK_COMPILE`."""
+    options: dict = dict(QUICK_COMPILE) if quick and jax.default_backend() == "cpu" else {}
     for block in blocks:
         if block.compiler_options is not None:
             options |= block.compiler_options(settings)
@@ -389,7 +398,7 @@ def compiled(blocks, settings: dict, inputs: dict):
             release_memory()  # the earlier programs' leftovers
         executable, produced = compile_stored(evaluate_after(group, settings), (inputs, earlier),
                                               repr((key, tuple(b.name for b in group))),
-                                              compiler_options(group, settings), release=apart)
+                                              compiler_options(group, settings, quick=not apart), release=apart)
         if apart:
             release_memory()  # the compiler's, before the run maps its buffers beside them
         executables.append(executable)

@@ -171,8 +171,8 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     model = ball_model(settings)
     bearing, operating = inputs["bearing"], inputs["operating"]
     solution = ball_equilibrium.solve_equilibrium(bearing, operating, model)
-    balls = ball_equilibrium.ball_results(solution.displacement, bearing, operating, model)
-    out = {"displacement": solution.displacement, "force": solution.force,
+    balls = ball_equilibrium.ball_results(solution.displacement, bearing, operating, model, solution.ball_centres)
+    out = {"balls.centre": balls.centre, "displacement": solution.displacement, "force": solution.force,
            "prescribed": ball_equilibrium.prescribed_coordinates(operating),
            "free_tilt": free_tilt(solution.displacement, operating), "converged": solution.converged,
            "residual": solution.residual, "validity.approach_ratio": solution.approach_ratio,
@@ -390,6 +390,8 @@ EQUILIBRIUM = Block(
         Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x", column="ψ"),
         *_ball_outputs("inner"),
         *_ball_outputs("outer"),
+        Output("balls.centre", "m", "mm", "ball centre (axial, radial) from the outer groove curvature centre, "
+               "in the ball's azimuth plane", in_report=False),
         Output("balls.orbital_speed", "rad/s", "rpm", "orbital (cage) speed ω_m", column="ωm"),
         Output("balls.spin_speed", "rad/s", "rpm", "ball spin speed ω_R about its own axis", in_report=False),
         Output("balls.centrifugal_force", "N", "N", "centrifugal force F_c", effect="centrifugal", column="Fc"),
@@ -408,7 +410,7 @@ EQUILIBRIUM = Block(
 
 def _stiffness(inputs: dict, settings: dict, results: dict) -> dict:
     matrix = ball_equilibrium.stiffness_matrix(results["displacement"], inputs["bearing"], inputs["operating"],
-                                               ball_model(settings))
+                                               ball_model(settings), results["balls.centre"])
     return {"stiffness": matrix}
 
 
