@@ -66,7 +66,10 @@ down as `table`. The implicit derivative of the solution uses the exact linearis
 solves the balls per ball (2×2 Newton steps) for a given Δ and carries the implicit-function
 derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ (`implicit_root`, block by block), so the ring force
 F(Δ) has exact total derivatives and the stiffness K = dF/dΔ (balls re-equilibrated) is
-`jax.jacfwd(ring_force)`.
+`jax.jacfwd(ring_force)`. Given the solve's ball centres (`Equilibrium.ball_centres`), `ring_force`,
+`stiffness_matrix` and `ball_results` take the balls as solved there and keep only their implicit
+derivative (`solved_ball_positions`): a program holding the solve and its stiffness traces one
+ball solve, not three.
 """
 
 import dataclasses

@@ -24,16 +24,17 @@ def deep_groove_6411E(radial_clearance=28e-6):
 
 
 def solve_everything(bearing, operating):
+    """The solution, its balls and its stiffness, both from the solve's ball centres (as the scenes run them)."""
     solution = solve_equilibrium(bearing, operating, SPEED)
-    results = ball_results(solution.displacement, bearing, operating, SPEED)
-    stiffness = stiffness_matrix(solution.displacement, bearing, operating, SPEED)
+    results = ball_results(solution.displacement, bearing, operating, SPEED, solution.ball_centres)
+    stiffness = stiffness_matrix(solution.displacement, bearing, operating, SPEED, solution.ball_centres)
     return solution, results, stiffness
 
 
 def load_sensitivity(bearing, operating):
     """A scalar of the solution (peak inner load + displacement) for gradient checks."""
     solution = solve_equilibrium(bearing, operating, SPEED)
-    results = ball_results(solution.displacement, bearing, operating, SPEED)
+    results = ball_results(solution.displacement, bearing, operating, SPEED, solution.ball_centres)
     return jnp.max(results.inner_load) * 1e-3 + jnp.sum(solution.displacement * jnp.array([1e5, 1e5, 1e5, 1e3, 1e3]))
 
 
@@ -160,6 +161,24 @@ def test_stiffness_matches_central_difference(solve, aero_bearing, aero_force, s
             block, ref = stiffness[rows, cols], reference[rows, cols]
             large = np.abs(ref) > 1e-3 * np.abs(ref).max()
             np.testing.assert_allclose(block[large], ref[large], rtol=1e-5)
+
+
+def test_the_solved_ball_centres_give_the_balls_and_stiffness_of_a_new_ball_solve(solve, aero_bearing):
+    """`ball_results` and `stiffness_matrix` given the solve's ball centres equal those that solve the
+    balls again at Δ (to the per-ball tolerance, 1e-13 D_w: relative 1e-9), and trace no Newton loop."""
+    bearing, operating = aero_bearing["bearing"], aero_bearing["operating"]
+    solution, balls, stiffness = solve(bearing, operating)
+    assert bool(solution.converged)
+    again = jax.jit(lambda d, b, o: (ball_results(d, b, o, SPEED), stiffness_matrix(d, b, o, SPEED)))
+    balls_again, stiffness_again = again(solution.displacement, bearing, operating)
+    np.testing.assert_allclose(stiffness, stiffness_again, rtol=1e-9, atol=1e-9 * float(jnp.max(jnp.abs(stiffness))))
+    for field in ("inner_load", "outer_load", "inner_contact_angle", "outer_contact_angle", "centre"):
+        np.testing.assert_allclose(getattr(balls, field), getattr(balls_again, field), rtol=1e-9,
+                                   atol=1e-9 * float(jnp.max(jnp.abs(getattr(balls, field)))))
+    solved = jax.make_jaxpr(lambda d, c: stiffness_matrix(d, bearing, operating, SPEED, c))(
+        solution.displacement, solution.ball_centres)
+    resolved = jax.make_jaxpr(lambda d: stiffness_matrix(d, bearing, operating, SPEED))(solution.displacement)
+    assert "while[" not in str(solved) and "while[" in str(resolved)
 
 
 def _block_asymmetry(k):
