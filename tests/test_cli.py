@@ -3,6 +3,7 @@ and 3 (a result outside the model), warnings of limits passed."""
 
 import dataclasses
 import json
+import os
 import subprocess
 import sys
 
@@ -10,6 +11,7 @@ import numpy as np
 import pytest
 
 from diffbearing.app import cli, registry, stored_models
+from diffbearing.app.compilation_cache import compilation_cache_folder
 from diffbearing import build_model, load_scene, run_model
 
 from .helpers import BEARING_6411E, example_scene
@@ -285,11 +287,39 @@ def test_a_key_nothing_reads_is_refused(capsys):
 
 def test_persistent_compilation_cache_folder(monkeypatch, tmp_path):
     monkeypatch.setenv("DIFFBEARING_CACHE", str(tmp_path))
-    assert cli.compilation_cache_folder() == str(tmp_path)
+    assert compilation_cache_folder() == str(tmp_path)
     monkeypatch.setenv("DIFFBEARING_CACHE", "off")
-    assert cli.compilation_cache_folder() is None
+    assert compilation_cache_folder() is None
     monkeypatch.delenv("DIFFBEARING_CACHE")
-    assert cli.compilation_cache_folder().endswith(".cache/diffbearing/jax")
+    assert compilation_cache_folder().endswith(".cache/diffbearing/jax")
+
+
+# a fresh process: run_model, then where its compiled programs went
+_CACHED_RUN = """
+import os, sys
+import jax
+jax.config.update("jax_enable_x64", True)
+if len(sys.argv) > 1:
+    jax.config.update("jax_compilation_cache_dir", sys.argv[1])
+from diffbearing import build_model, load_scene, run_model
+run_model(build_model(load_scene("tapered_roller")))
+print(jax.config.jax_compilation_cache_dir)
+"""
+
+
+@pytest.mark.parametrize("setting", ["folder", "off", "own"])
+def test_run_model_keeps_its_programs_in_the_cache_unless_told_otherwise(tmp_path, setting):
+    """From Python, `run_model` keeps the compiled programs in DIFFBEARING_CACHE (not at import); with
+    DIFFBEARING_CACHE=off nowhere; a cache folder the user set for JAX is used as it is."""
+    ours, own = tmp_path / "ours", tmp_path / "own"
+    env = {key: value for key, value in os.environ.items() if not key.startswith("JAX_")}
+    env["DIFFBEARING_CACHE"] = "off" if setting == "off" else str(ours)
+    done = subprocess.run([sys.executable, "-c", _CACHED_RUN] + ([str(own)] if setting == "own" else []),
+                          env=env, capture_output=True, text=True, check=True)
+    used = done.stdout.strip().splitlines()[-1]
+    assert used == {"folder": str(ours), "off": "None", "own": str(own)}[setting]
+    assert (ours.is_dir() and any(ours.iterdir())) == (setting == "folder")
+    assert (own.is_dir() and any(own.iterdir())) == (setting == "own")
 
 
 def test_a_setting_of_another_level_is_a_warning(capsys, tmp_path):

@@ -22,12 +22,10 @@ did not converge prints the report, then one line naming the limit, and exits wi
 """
 
 import argparse
-import os
 import sys
 from pathlib import Path
 
-CACHE_VARIABLE = "DIFFBEARING_CACHE"
-
+from .compilation_cache import use_compilation_cache
 
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="diffbearing", description="Differentiable rolling-bearing model (JAX).")
@@ -45,25 +43,6 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--processes", type=int, metavar="N", help="number of processes (with --coordinator)")
     run.add_argument("--process-id", type=int, metavar="I", help="this process's index, 0…N−1 (with --coordinator)")
     return parser
-
-
-def compilation_cache_folder() -> str | None:
-    """The persistent compilation cache's folder ($DIFFBEARING_CACHE, else ~/.cache/diffbearing/jax;
-    None when $DIFFBEARING_CACHE is "off")."""
-    chosen = os.environ.get(CACHE_VARIABLE, "")
-    if chosen.lower() == "off":
-        return None
-    return chosen or os.path.join(os.path.expanduser("~"), ".cache", "diffbearing", "jax")
-
-
-def _enable_compilation_cache(jax) -> None:
-    folder = compilation_cache_folder()
-    if folder is None:
-        return
-    jax.config.update("jax_compilation_cache_dir", folder)
-    # every compiled model is kept, however quick its compilation, and the cache never evicts by age
-    jax.config.update("jax_persistent_cache_min_compile_time_secs", 0.0)
-    jax.config.update("jax_persistent_cache_min_entry_size_bytes", 0)
 
 
 def _check_output_files(arguments) -> None:
@@ -98,7 +77,7 @@ def main(argv=None) -> int:
     import jax
 
     jax.config.update("jax_enable_x64", True)
-    _enable_compilation_cache(jax)
+    use_compilation_cache()
     if arguments.distributed:
         jax.config.update("jax_cpu_collectives_implementation", "gloo")  # CPU processes gather through gloo
         jax.distributed.initialize(arguments.coordinator, arguments.processes, arguments.process_id)

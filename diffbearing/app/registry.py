@@ -29,6 +29,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from .compilation_cache import use_compilation_cache
 from .stored_models import compile_stored, release_memory
 
 # The bearing type of a scene with [[bearings]]: a shaft on several bearings (adapters/shaft.py).
@@ -384,8 +385,10 @@ def compiled(blocks, settings: dict, inputs: dict):
     the compilers left (`stored_models.release_memory`), and the callable runs them in order.
     Compiled models are kept per process, keyed by the blocks, the settings and the structure,
     shapes and dtypes of the inputs: a second run of the same model with other numbers reuses them.
-    Between processes they are kept on disk (stored_models.py) where a compilation cache is set.
+    Between processes they are kept on disk (stored_models.py) in the compilation cache
+    (`use_compilation_cache`: switched on here unless JAX has a cache folder or DIFFBEARING_CACHE=off).
     """
+    use_compilation_cache()
     leaves, treedef = jax.tree.flatten(inputs)
     key = repr((tuple(b.name for b in blocks), sorted((k, sorted(v.items())) for k, v in settings.items()),
                 str(treedef), tuple((jnp.shape(x), str(jnp.result_type(x))) for x in leaves)))

@@ -29,6 +29,7 @@ import numpy as np
 from jax.sharding import Mesh, NamedSharding, PartitionSpec
 from tqdm import tqdm
 
+from .compilation_cache import use_compilation_cache
 from .registry import compiler_options
 from .registry import evaluate as evaluate_blocks
 from .result import RunResult
@@ -114,6 +115,7 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
         return (jax.device_put(arrays, sharding) if sharding is not None else arrays), stop - start
 
     first, _ = chunk_inputs(rank * share)
+    use_compilation_cache()  # a sweep's program is kept between processes too (compilation_cache.py)
     start_time = time.perf_counter()
     executable = batched.lower(first).compile(compiler_options(blocks, model.settings) or None)
     compile_s = time.perf_counter() - start_time

@@ -1,0 +1,124 @@
+"""Compile time: what the first answer costs, per packaged example and for the README's gradient.
+
+    python benchmarks/compile_time.py [--examples NAME ...] [--films]
+
+For every packaged example (the 2-D EHL example `starved_roller` only with `--films`: minutes of
+compiling and running its numerical films), each in fresh processes:
+
+  * the CLI cold and warm: `diffbearing run NAME` with an empty compilation cache folder
+    (`DIFFBEARING_CACHE`), then again with the cache it left (wall time of the whole command,
+    interpreter start and imports included; the program's own compile and run time as the JSON
+    reports them);
+  * the model's one program (`jax.jit(model.function())`, all blocks as one program, as a sweep
+    compiles them; the CLI compiles the numerical films apart) traced, lowered and compiled without
+    a cache: trace and lower time, StableHLO lines, XLA compile time with XLA's defaults and with
+    the single run's quick settings (`registry.QUICK_COMPILE`), and the run time under each.
+
+The README's gradient (`jax.grad` of K_zz of the default scene through `model.function()`) is
+measured the same way in a fresh process. Writes benchmarks/results/compile_time.md.
+"""
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+RESULTS = Path(__file__).parent / "results"
+FILMS = ("starved_roller",)
+
+# Run in a fresh interpreter: trace, lower and compile one program both ways, run each (median of 5).
+PROGRAM = r"""
+import json, statistics, sys, time
+import jax
+jax.config.update("jax_enable_x64", True)
+from diffbearing import build_model, load_scene
+from diffbearing.app.registry import QUICK_COMPILE
+name, gradient = sys.argv[1], sys.argv[2] == "gradient"
+model = build_model(load_scene(name))
+function = model.function()
+if gradient:
+    function = jax.grad(lambda inputs, f=model.function(): f(inputs)["stiffness"][2, 2])
+start = time.perf_counter(); traced = jax.jit(function).trace(model.inputs); traced_at = time.perf_counter()
+lowered = traced.lower(); lowered_at = time.perf_counter()
+out = {"trace_s": traced_at - start, "lower_s": lowered_at - traced_at, "lines": lowered.as_text().count("\n")}
+for label, options in (("default", None), ("quick", QUICK_COMPILE)):
+    start = time.perf_counter(); executable = lowered.compile(options); out[f"compile_{label}_s"] = time.perf_counter() - start
+    times = []
+    for _ in range(5):
+        start = time.perf_counter(); jax.block_until_ready(executable(model.inputs)); times.append(time.perf_counter() - start)
+    out[f"run_{label}_s"] = statistics.median(times)
+print(json.dumps(out))
+"""
+
+
+def cli_run(name: str, cache: str) -> tuple[float, dict]:
+    """(wall time [s], the JSON's timing) of `diffbearing run NAME` with the cache folder `cache`."""
+    with tempfile.TemporaryDirectory() as folder:
+        output = Path(folder) / "out.json"
+        start = time.perf_counter()
+        done = subprocess.run([sys.executable, "-m", "diffbearing.app.cli", "run", name, "--json", str(output)],
+                              env=dict(os.environ, DIFFBEARING_CACHE=cache), capture_output=True, text=True)
+        wall = time.perf_counter() - start
+        if done.returncode not in (0, 3):
+            raise RuntimeError(f"{name}: exit {done.returncode}: {done.stderr[-500:]}")
+        return wall, json.loads(output.read_text())["timing"]
+
+
+def program(name: str, gradient: bool = False) -> dict:
+    """The one program's trace, lower, compile and run times and HLO lines (fresh process, no cache)."""
+    done = subprocess.run([sys.executable, "-c", PROGRAM, name, "gradient" if gradient else "value"],
+                          env=dict(os.environ, JAX_ENABLE_COMPILATION_CACHE="false"), capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"{name}: {done.stderr[-800:]}")
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def main() -> None:
+    from diffbearing.app.scene import examples
+    from timing import machine
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--examples", nargs="*", help="example names (default: every packaged example)")
+    parser.add_argument("--films", action="store_true", help="include the 2-D EHL examples")
+    options = parser.parse_args()
+    names = options.examples or [name for name in examples() if options.films or name not in FILMS]
+    rows = []
+    for name in names:
+        with tempfile.TemporaryDirectory() as cache:
+            cold, cold_timing = cli_run(name, cache)
+            warm, warm_timing = cli_run(name, cache)
+        measured = program(name)
+        rows.append((name, cold, cold_timing, warm, measured))
+        print(name, f"cold {cold:.1f} s, warm {warm:.1f} s", measured, flush=True)
+    gradient = program("aero_angular_contact", gradient=True)
+    print("gradient", gradient, flush=True)
+
+    lines = ["# Compile time: the first answer", "", f"Machine: {machine()}. `python benchmarks/compile_time.py`.", "",
+             "CLI: `diffbearing run NAME` in a fresh process, wall time with an empty cache folder (cold) and with the",
+             "cache it left (warm); its program's compile and run time as the JSON reports them (cold run).",
+             "One program: all blocks of the model jitted as one, no cache: trace + lower time, StableHLO lines,",
+             "XLA compile and run time with XLA's defaults and with the single run's quick settings.", "",
+             "| example | CLI cold [s] | compile [s] | run [ms] | CLI warm [s] | trace + lower [s] | HLO lines "
+             "| compile default / quick [s] | run default / quick [ms] |",
+             "|---|---|---|---|---|---|---|---|---|"]
+
+    def program_cells(m):
+        return (f"{m['trace_s'] + m['lower_s']:.1f} | {m['lines']} | {m['compile_default_s']:.1f} / "
+                f"{m['compile_quick_s']:.1f} | {1e3 * m['run_default_s']:.2f} / {1e3 * m['run_quick_s']:.2f}")
+
+    for name, cold, timing, warm, measured in rows:
+        lines.append(f"| {name} | {cold:.1f} | {timing['compile_s']:.1f} | {1e3 * timing['run_s']:.1f} | {warm:.1f} | "
+                     + program_cells(measured) + " |")
+    lines.append("| README's `jax.grad` of K_zz | | | | | " + program_cells(gradient) + " |")
+    RESULTS.mkdir(exist_ok=True)
+    (RESULTS / "compile_time.md").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, str(Path(__file__).parent))
+    main()
