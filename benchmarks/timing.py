@@ -9,6 +9,10 @@ import tracemalloc
 
 import jax
 
+# compile times are measured from scratch: `run_model` and `run_sweep` keep no programs between a
+# benchmark's runs (diffbearing/app/compilation_cache.py), unless the caller set DIFFBEARING_CACHE
+os.environ.setdefault("DIFFBEARING_CACHE", "off")
+
 
 def median_time(function, repeats):
     """Median wall time [s] of `repeats` calls of `function()` (JAX work awaited)."""
