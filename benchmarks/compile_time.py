@@ -55,13 +55,18 @@ print(json.dumps(out))
 """
 
 
+def _without_jax_cache(**settings) -> dict:
+    """This process's environment without a JAX cache folder of the caller's, with `settings`."""
+    return {key: value for key, value in os.environ.items() if key != "JAX_COMPILATION_CACHE_DIR"} | settings
+
+
 def cli_run(name: str, cache: str) -> tuple[float, dict]:
     """(wall time [s], the JSON's timing) of `diffbearing run NAME` with the cache folder `cache`."""
     with tempfile.TemporaryDirectory() as folder:
         output = Path(folder) / "out.json"
         start = time.perf_counter()
         done = subprocess.run([sys.executable, "-m", "diffbearing.app.cli", "run", name, "--json", str(output)],
-                              env=dict(os.environ, DIFFBEARING_CACHE=cache), capture_output=True, text=True)
+                              env=_without_jax_cache(DIFFBEARING_CACHE=cache), capture_output=True, text=True)
         wall = time.perf_counter() - start
         if done.returncode not in (0, 3):
             raise RuntimeError(f"{name}: exit {done.returncode}: {done.stderr[-500:]}")
@@ -71,7 +76,7 @@ def cli_run(name: str, cache: str) -> tuple[float, dict]:
 def program(name: str, gradient: bool = False) -> dict:
     """The one program's trace, lower, compile and run times and HLO lines (fresh process, no cache)."""
     done = subprocess.run([sys.executable, "-c", PROGRAM, name, "gradient" if gradient else "value"],
-                          env=dict(os.environ, JAX_ENABLE_COMPILATION_CACHE="false"), capture_output=True, text=True)
+                          env=_without_jax_cache(JAX_ENABLE_COMPILATION_CACHE="false"), capture_output=True, text=True)
     if done.returncode != 0:
         raise RuntimeError(f"{name}: {done.stderr[-800:]}")
     return json.loads(done.stdout.strip().splitlines()[-1])
