@@ -118,7 +118,7 @@ def main():
     def speed_case(force):
         operating = Operating(SPEED, 0.0, force, moment)
         solution = solve_equilibrium(seed, operating, speed)
-        return (solution.displacement, stiffness_matrix(solution.displacement, seed, operating, speed),
+        return (solution.displacement, stiffness_matrix(solution.displacement, seed, operating, speed, solution.ball_centres),
                 solution.converged)
 
     rows = [measure("7-ball deep groove, static (Δ)", static_case, static_loads, args.repeats, args.check),

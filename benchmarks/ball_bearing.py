@@ -59,7 +59,8 @@ def main():
 
     def single(b, o):
         solution = solve_equilibrium(b, o, MODEL)
-        return solution.displacement, stiffness_matrix(solution.displacement, b, o, MODEL), solution.converged
+        return (solution.displacement, stiffness_matrix(solution.displacement, b, o, MODEL, solution.ball_centres),
+                solution.converged)
 
     start = time.perf_counter()
     compiled = jax.jit(single).lower(bearing, operating).compile()

@@ -125,7 +125,9 @@ def test_orbit_gradient_is_finite_in_land_contact():
     finite, and equal to a central difference of the start offset. The gradient is that of the
     discrete solution for its step sequence, so the tolerance is tightened to 1e-10 (at the
     default 1e-5 the adaptive steps change under a finite-difference step and the difference
-    scatters by 10 %); they agree to 0.1 %."""
+    scatters by 10 %). Even so the central difference still crosses changes of the step sequence,
+    which rounding decides: they agreed to 0.1 % compiled with XLA's defaults, to 0.31 % with the
+    tests' quick settings (conftest.py); the tolerance is 0.5 %."""
     cage, operating = cage_paper_scene(20000.0)
     settings = DynamicsSettings(rtol=1e-10, atol=1e-10)
 
@@ -139,7 +141,7 @@ def test_orbit_gradient_is_finite_in_land_contact():
     assert np.all(np.isfinite(np.asarray(gradient)))
     direction = jnp.array([1.0, 0.0])
     reference = central_difference_jvp(mean_radius, start, direction, 1e-8)
-    np.testing.assert_allclose(float(gradient @ direction), float(reference), rtol=3e-3)
+    np.testing.assert_allclose(float(gradient @ direction), float(reference), rtol=5e-3)
 
 
 @pytest.fixture(scope="module")
