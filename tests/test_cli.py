@@ -247,7 +247,7 @@ def test_examples_lists_every_packaged_scene(capsys):
 @pytest.mark.parametrize("name", ["aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
                                   "tapered_roller", "tapered_roller_bearing", "cylindrical_roller_bearing",
                                   "mounted_6411", "gearbox_6411_ratings",
-                                  pytest.param("starved_roller", marks=pytest.mark.slow),
+                                  pytest.param("starved_roller", marks=(pytest.mark.slow, pytest.mark.extended)),
                                   pytest.param("spindle_pair", marks=pytest.mark.slow),
                                   pytest.param("gearbox_shaft", marks=pytest.mark.slow),
                                   pytest.param("flexible_shaft", marks=pytest.mark.slow)])

@@ -90,6 +90,7 @@ def test_ball_film_effect_reports_null_for_unloaded_balls(capsys, tmp_path):
     assert loads.max() > 0
 
 
+@pytest.mark.extended
 @pytest.mark.slow  # about a minute (2 cores): two point-contact solves
 def test_point_contact_film_at_the_most_loaded_balls_through_the_cli(capsys, tmp_path):
     """effects.film = "point" on the 6411E bearing under 8 kN radial load at 3000 r/min: both
@@ -261,7 +262,8 @@ def starved_ehl_default_grid_films(tmp_path, setting, raceway_edge=True):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("load, paper_minimum, raceway_edge", [(1607.0, 0.215e-6, True), (2471.0, 0.159e-6, False)])
+@pytest.mark.parametrize("load, paper_minimum, raceway_edge", [
+    (1607.0, 0.215e-6, True), pytest.param(2471.0, 0.159e-6, False, marks=pytest.mark.extended)])
 def test_starved_ehl_paper_heavier_loads_through_the_cli(tmp_path, load, paper_minimum, raceway_edge):
     """The starved-EHL paper's roller starved by h_oil = 0.8 µm at the paper's two heavier loads on a 33 × 96 grid: both
     Newton solves converge (at 2471 N through the load continuation), the starved minimum film is
@@ -278,6 +280,7 @@ def test_starved_ehl_paper_heavier_loads_through_the_cli(tmp_path, load, paper_m
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3
 
 
+@pytest.mark.extended
 @pytest.mark.slow
 @pytest.mark.parametrize("oil_layer", [1.8, 2.0])
 def test_starved_ehl_paper_starvation_criterion_through_the_cli(tmp_path, oil_layer):
@@ -304,6 +307,7 @@ def test_finite_line_grid_beyond_the_dense_newton_exits_2(capsys):
     assert "fidelity.grid" in message and "(nx − 2)·⌈ny/2⌉ ≤ 4200" in message and "[65, 129]" in message
 
 
+@pytest.mark.extended
 @pytest.mark.slow
 def test_starved_ehl_paper_as_published_through_the_cli(tmp_path):
     """The public scene as written (grid [65, 129]: 65 × 65 on the half domain, 1028 N,

@@ -64,7 +64,8 @@ def test_the_film_carries_the_load_and_closes_at_the_outlet(groove):
 @pytest.mark.slow  # about 20 s each on 129 × 64, 90 s on 257 × 128 (2 cores)
 @pytest.mark.parametrize("case, grid, minimum_tolerance", [
     (CIRCLE, (129, 64), 0.10), (GROOVE, (129, 64), 0.10),
-    (CIRCLE, (257, 128), 0.10), (dict(CIRCLE, speed=3.0), (257, 128), 0.15),
+    pytest.param(CIRCLE, (257, 128), 0.10, marks=pytest.mark.extended),
+    pytest.param(dict(CIRCLE, speed=3.0), (257, 128), 0.15, marks=pytest.mark.extended),
 ], ids=["circular", "elliptical κ≈9", "circular, 257 × 128", "circular, M = 40, 257 × 128"])
 def test_flooded_film_within_ten_percent_of_hamrock_dowson(case, grid, minimum_tolerance):
     """The central film within 10 % of Hamrock and Dowson's formula (J. Lubr. Technol. 99, 1977),
