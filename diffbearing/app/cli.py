@@ -27,6 +27,7 @@ from pathlib import Path
 
 from .compilation_cache import use_compilation_cache
 
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="diffbearing", description="Differentiable rolling-bearing model (JAX).")
     commands = parser.add_subparsers(dest="command", required=True)

@@ -346,7 +346,7 @@ class Reads(Mapping):
 # XLA's quick settings for a single run's programs on the CPU: LLVM at optimisation level 0 and the
 # loop emitters in place of the fusion emitters. A single run is compile-bound: the default scene's
 # program compiles in about half the time and runs a few milliseconds longer (docs/benchmarks.md,
-# §Compile time). Sweeps, whose batches are run-bound, and the programs of their own (the numerical
+# §Compile times). Sweeps, whose batches are run-bound, and the programs of their own (the numerical
 # EHL solvers, seconds of run at fine grids) keep XLA's defaults, with their blocks' own options.
 QUICK_COMPILE = {"xla_backend_optimization_level": 0, "xla_cpu_use_fusion_emitters": False}
 

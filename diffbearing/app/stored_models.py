@@ -6,9 +6,9 @@ model is stored with `jax.export` beside that cache, under a key of the blocks, 
 inputs' structure, shapes and dtypes, the JAX version and a digest of diffbearing's source (so an
 edit of the code invalidates it); the next process deserializes it and gets the executable from
 the persistent cache. Without a compilation cache folder (DIFFBEARING_CACHE=off, compilation_cache.py)
-nothing is stored, nor is a model whose lowering holds host
-callbacks or LAPACK calls without a stability guarantee (`jax.export` cannot serialize them: the
-cage dynamics' diffrax integration), which is traced anew in each process.
+nothing is stored, nor is a model whose lowering holds host callbacks or LAPACK calls without a
+stability guarantee (`jax.export` cannot serialize them: the cage dynamics' diffrax integration),
+which is traced anew in each process.
 """
 
 import ctypes
