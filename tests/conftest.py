@@ -19,7 +19,7 @@ os.environ.setdefault("JAX_PERSISTENT_CACHE_MIN_ENTRY_SIZE_BYTES", "0")
 # place of the fusion emitters. Measured (docs/benchmarks.md, §Compile times): the default scene's
 # program compiles in 9.0–10.1 s instead of 19.0–21.9 s and runs in 12 ms instead of 4.5–13 ms; the tests'
 # time is compile time. A flag the environment already sets is left as it is.
-_QUICK_XLA_FLAGS = {"--xla_backend_optimization_level": "0", "--xla_cpu_use_fusion_emitters": "false"}
+_QUICK_XLA_FLAGS = {"--xla_backend_optimization_level": "1", "--xla_cpu_use_fusion_emitters": "false"}
 os.environ["XLA_FLAGS"] = " ".join([os.environ.get("XLA_FLAGS", "")] + [
     f"{flag}={value}" for flag, value in _QUICK_XLA_FLAGS.items() if flag not in os.environ.get("XLA_FLAGS", "")]).strip()
 

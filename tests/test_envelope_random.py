@@ -229,6 +229,7 @@ def test_random_roller_bearings_converge_or_say_why():
     run_roller_profile([("cylindrical_roller", 12)], 24)
 
 
+@pytest.mark.extended
 @pytest.mark.slow
 def test_random_roller_bearings_large_profile():
     """400 cylindrical roller bearings: ≥ 99.9 % of those at or above the minimum load converge, the

@@ -147,6 +147,7 @@ def _dry_under_the_layer(film, layer):
     return [j for j in range(pressure.shape[1]) if pressure[:, j].max() <= 0 and thickness[:, j].min() < layer]
 
 
+@pytest.mark.extended
 @pytest.mark.slow  # about 80 s (2 cores): both solvers
 def test_newton_krylov_solves_the_dense_solvers_starved_equations():
     """Starved by 0.8 µm of oil at 1028 N on 65 × 48 uniform cells (33 × 48 dense, then Newton–Krylov):
@@ -165,6 +166,7 @@ def test_newton_krylov_solves_the_dense_solvers_starved_equations():
     assert _dry_under_the_layer(krylov, 0.8e-6) == [] and len(_dry_under_the_layer(dense, 0.8e-6)) >= 1
 
 
+@pytest.mark.extended
 @pytest.mark.slow  # about a minute (2 cores)
 def test_newton_krylov_starved_at_a_heavier_load_converges_through_the_supply_continuation():
     """1607 N starved by 0.8 µm on 65 × 65 (33 × 65 dense first): a Newton–Krylov step that moves

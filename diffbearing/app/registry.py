@@ -348,7 +348,7 @@ class Reads(Mapping):
 # program compiles in about half the time and runs a few milliseconds longer (docs/benchmarks.md,
 # §Compile times). Sweeps, whose batches are run-bound, and the programs of their own (the numerical
 # EHL solvers, seconds of run at fine grids) keep XLA's defaults, with their blocks' own options.
-QUICK_COMPILE = {"xla_backend_optimization_level": 0, "xla_cpu_use_fusion_emitters": False}
+QUICK_COMPILE = {"xla_backend_optimization_level": 1, "xla_cpu_use_fusion_emitters": False}
 
 
 def compiler_options(blocks, settings: dict, quick: bool = False) -> dict:
