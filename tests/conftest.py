@@ -15,10 +15,10 @@ os.environ.setdefault("JAX_COMPILATION_CACHE_DIR", os.path.join(tempfile.gettemp
 os.environ.setdefault("JAX_PERSISTENT_CACHE_MIN_COMPILE_TIME_SECS", "0")
 os.environ.setdefault("JAX_PERSISTENT_CACHE_MIN_ENTRY_SIZE_BYTES", "0")
 
-# XLA's quick settings for the tests' programs: LLVM at optimisation level 0 and the loop emitters in
-# place of the fusion emitters. Measured (docs/benchmarks.md, §Compile times): the default scene's
-# program compiles in 9.0–10.1 s instead of 19.0–21.9 s and runs in 12 ms instead of 4.5–13 ms; the tests'
-# time is compile time. A flag the environment already sets is left as it is.
+# XLA's quick settings for the tests' programs (registry.QUICK_COMPILE): LLVM at optimisation level 1
+# and the loop emitters in place of the fusion emitters. Measured (docs/benchmarks.md, §Compile times):
+# the default scene's program compiles with 16 s of CPU instead of 25 s; the tests' time is compile
+# time. A flag the environment already sets is left as it is.
 _QUICK_XLA_FLAGS = {"--xla_backend_optimization_level": "1", "--xla_cpu_use_fusion_emitters": "false"}
 os.environ["XLA_FLAGS"] = " ".join([os.environ.get("XLA_FLAGS", "")] + [
     f"{flag}={value}" for flag, value in _QUICK_XLA_FLAGS.items() if flag not in os.environ.get("XLA_FLAGS", "")]).strip()

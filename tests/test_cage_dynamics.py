@@ -126,8 +126,8 @@ def test_orbit_gradient_is_finite_in_land_contact():
     discrete solution for its step sequence, so the tolerance is tightened to 1e-10 (at the
     default 1e-5 the adaptive steps change under a finite-difference step and the difference
     scatters by 10 %). Even so the central difference still crosses changes of the step sequence,
-    which rounding decides: they agreed to 0.1 % compiled with XLA's defaults, to 0.31 % with the
-    tests' quick settings (conftest.py); the tolerance is 0.5 %."""
+    which rounding decides: they agreed to 0.1 % compiled with XLA's defaults, to 0.31 % with LLVM
+    at level 0 and the loop emitters; the tolerance is 0.5 %."""
     cage, operating = cage_paper_scene(20000.0)
     settings = DynamicsSettings(rtol=1e-10, atol=1e-10)
 

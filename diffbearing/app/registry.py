@@ -343,11 +343,12 @@ class Reads(Mapping):
         return len(self._values)
 
 
-# XLA's quick settings for a single run's programs on the CPU: LLVM at optimisation level 0 and the
-# loop emitters in place of the fusion emitters. A single run is compile-bound: the default scene's
-# program compiles in about half the time and runs a few milliseconds longer (docs/benchmarks.md,
-# §Compile times). Sweeps, whose batches are run-bound, and the programs of their own (the numerical
-# EHL solvers, seconds of run at fine grids) keep XLA's defaults, with their blocks' own options.
+# XLA's quick settings for a single run's programs on the CPU: LLVM at optimisation level 1 and the
+# loop emitters in place of the fusion emitters (level 0 gave a NaN that level 1 does not). A single
+# run is compile-bound: the default scene's program compiles in two thirds of the time and runs a
+# millisecond or two longer (docs/benchmarks.md, §Compile times). Sweeps, whose batches are
+# run-bound, and the programs of their own (the numerical EHL solvers, seconds of run at fine grids)
+# keep XLA's defaults, with their blocks' own options.
 QUICK_COMPILE = {"xla_backend_optimization_level": 1, "xla_cpu_use_fusion_emitters": False}
 
 
