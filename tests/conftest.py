@@ -10,18 +10,19 @@ import pytest
 # Compiled XLA programs are cached on disk across the test processes (tests, notebook kernels,
 # CLI subprocesses) of one run; set before JAX initialises its backends.
 # Every program is kept, however quick its compilation (JAX's default keeps those over 1 s only):
-# CI runs the default suite twice, the second run from this cache. JAX reads both from the environment.
+# CI's slow suite and the README's `pytest` run side by side from this cache. JAX reads both from the environment.
 os.environ.setdefault("JAX_COMPILATION_CACHE_DIR", os.path.join(tempfile.gettempdir(), "diffbearing-jax-cache"))
 os.environ.setdefault("JAX_PERSISTENT_CACHE_MIN_COMPILE_TIME_SECS", "0")
 os.environ.setdefault("JAX_PERSISTENT_CACHE_MIN_ENTRY_SIZE_BYTES", "0")
 
-# XLA's quick settings for the tests' programs (registry.QUICK_COMPILE): LLVM at optimisation level 1
-# and the loop emitters in place of the fusion emitters. Measured (docs/benchmarks.md, §Compile times):
-# the default scene's program compiles with 16 s of CPU instead of 25 s; the tests' time is compile
-# time. A flag the environment already sets is left as it is.
-_QUICK_XLA_FLAGS = {"--xla_backend_optimization_level": "1", "--xla_cpu_use_fusion_emitters": "false"}
+# The tests' programs compile with a single run's quick XLA settings (registry.QUICK_COMPILE; importing
+# it initialises no backend), through XLA_FLAGS; the tests' time is compile time (docs/benchmarks.md,
+# §Compile times). A flag the environment already sets is left as it is.
+from diffbearing.app.registry import QUICK_COMPILE  # noqa: E402
+
 os.environ["XLA_FLAGS"] = " ".join([os.environ.get("XLA_FLAGS", "")] + [
-    f"{flag}={value}" for flag, value in _QUICK_XLA_FLAGS.items() if flag not in os.environ.get("XLA_FLAGS", "")]).strip()
+    f"--{flag}={str(value).lower()}" for flag, value in QUICK_COMPILE.items()
+    if f"--{flag}" not in os.environ.get("XLA_FLAGS", "")]).strip()
 
 import jax  # noqa: E402
 

@@ -296,7 +296,7 @@ def test_persistent_compilation_cache_folder(monkeypatch, tmp_path):
 
 # a fresh process: run_model, then where its compiled programs went
 _CACHED_RUN = """
-import os, sys
+import sys
 import jax
 jax.config.update("jax_enable_x64", True)
 if len(sys.argv) > 1:

@@ -25,7 +25,6 @@ import argparse
 import sys
 from pathlib import Path
 
-from .compilation_cache import use_compilation_cache
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -78,7 +77,6 @@ def main(argv=None) -> int:
     import jax
 
     jax.config.update("jax_enable_x64", True)
-    use_compilation_cache()
     if arguments.distributed:
         jax.config.update("jax_cpu_collectives_implementation", "gloo")  # CPU processes gather through gloo
         jax.distributed.initialize(arguments.coordinator, arguments.processes, arguments.process_id)
