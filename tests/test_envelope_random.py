@@ -158,6 +158,7 @@ def test_random_ball_bearings_converge_or_say_why(solvers):
     run_profile(solvers, [("deep_groove_ball", 8), ("angular_contact_ball", 14)], 32)
 
 
+@pytest.mark.extended
 @pytest.mark.slow
 def test_random_ball_bearings_large_profile(solvers):
     """2000 cases: ≥ 99.9 % of those at or above the minimum load (and, angular-contact, with the

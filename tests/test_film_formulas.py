@@ -325,6 +325,7 @@ def test_starved_ehl_paper_as_published_through_the_cli(tmp_path):
     assert 6.35e-3 < starvation["minimum_position"] < 6.6e-3 and starvation["relative_error"] > 0.01
 
 
+@pytest.mark.extended
 @pytest.mark.slow  # about 2 minutes (2 cores): flooded and starved, each compiled
 def test_newton_krylov_finite_line_through_the_cli(capsys, tmp_path):
     """The public scene with fidelity.solver = "krylov" on [65, 96] (65 × 48 uniform cells on the

@@ -181,6 +181,7 @@ def test_newton_krylov_starved_at_a_heavier_load_converges_through_the_supply_co
     assert meniscus[-1] == pytest.approx(x[-1] - 0.5 * (x[1] - x[0]), rel=1e-12)
 
 
+@pytest.mark.extended
 @pytest.mark.slow  # about a minute (2 cores): the solve, its forward and reverse derivatives, two more solves
 def test_newton_krylov_film_derivatives_match_central_differences():
     """d(h_c, h_min)/dW [µm/kN] at 1028 N, flooded, 65 × 32: the implicit derivatives (GMRES

@@ -101,6 +101,7 @@ def test_the_rigid_shaft_is_the_limit_of_a_stiffening_one(solve, stiffness_of):
     assert 0.09 < force_fine / force_coarse < 0.11 and 0.09 < stiffness_fine / stiffness_coarse < 0.11
 
 
+@pytest.mark.extended
 @pytest.mark.slow
 def test_stiffness_at_a_point_is_the_equilibriums_response(solve, stiffness_of):
     """The stiffness at the load's point, inverted, is the compliance the equilibrium itself shows:
@@ -121,6 +122,7 @@ def test_stiffness_at_a_point_is_the_equilibriums_response(solve, stiffness_of):
     np.testing.assert_allclose(compliance @ stiffness, np.eye(5), atol=1e-7)
 
 
+@pytest.mark.extended
 @pytest.mark.slow
 def test_derivatives_through_the_flexible_equilibrium(solve, stiffness_of):
     """d/d(the section diameters, the bearing positions) of every bearing's load, the deflection
@@ -142,6 +144,7 @@ def test_derivatives_through_the_flexible_equilibrium(solve, stiffness_of):
     assert_jvp_matches_central_difference(outputs, point, direction, step=1e-6, rtol=2e-5, atol=1e-6)
 
 
+@pytest.mark.extended
 @pytest.mark.slow
 def test_a_bearing_without_load_stays_finite(solve):
     """A hard case: a third bearing far out on a shaft loaded only between the other two carries
