@@ -525,10 +525,12 @@ def _controls(operating: Operating):
     """(free, offset): which unknowns are solved (1) or prescribed (0), and the prescribed displacement.
 
     With `operating.axial_displacement` the axial displacement δz is held fixed (preload by
-    displacement), with `operating.misalignment` the tilts θx, θy (a ring held by its shaft);
-    every other component follows from the applied load.
+    displacement), with `operating.radial_displacement` δx, δy, with `operating.misalignment` the
+    tilts θx, θy (a ring held by its shaft); every other component follows from the applied load.
     """
     free, offset = jnp.ones(5), jnp.zeros(5)
+    if operating.radial_displacement is not None:
+        free, offset = free.at[:2].set(0.0), offset.at[:2].set(operating.radial_displacement)
     if operating.axial_displacement is not None:
         free, offset = free.at[2].set(0.0), offset.at[2].set(operating.axial_displacement)
     if operating.misalignment is not None:
@@ -732,8 +734,9 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     outside the model (`ball_validity`: approach beyond 1 % of D_w, a contact angle beyond ±90°).
 
     With `operating.axial_displacement` set, δz is prescribed (preload by displacement) and the
-    axial force is an output (`Equilibrium.force[2]`); with `operating.misalignment`, θx and θy are
-    prescribed and the moments are (`Equilibrium.force[3:]`).
+    axial force is an output (`Equilibrium.force[2]`); with `operating.radial_displacement`, δx and
+    δy are and the radial force is (`Equilibrium.force[:2]`); with `operating.misalignment`, θx and
+    θy are prescribed and the moments are (`Equilibrium.force[3:]`).
 
     Differentiable with respect to every array leaf of `bearing` and `operating` (implicit adjoint,
     forward and reverse mode). At a singular stiffness (zero load, or a direction the bearing does

@@ -288,6 +288,9 @@ class Operating(eqx.Module):
                                                       default=None)
     # Imposed inner-ring tilt [θx, θy] [rad] (the moments must be 0; the moments the balls carry follow).
     misalignment: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
+    # Imposed radial displacement [δx, δy] [m] (Fx, Fy must be 0; the radial force follows).
+    radial_displacement: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v),
+                                                       default=None)
 
     def __check_init__(self):
         check_range("operating.inner_speed", self.inner_speed, unit=" rad/s")
@@ -307,6 +310,14 @@ class Operating(eqx.Module):
         if self.misalignment is not None and _is_concrete(self.moment) and np.any(np.asarray(self.moment) != 0):
             raise ValueError("operating.moment: with operating.misalignment the inner ring's tilt is imposed and the "
                              "moments follow; give one of them")
+        check_range("operating.radial_displacement", self.radial_displacement, unit=" m")
+        if self.radial_displacement is not None and _is_concrete(self.radial_displacement) and \
+                np.shape(self.radial_displacement)[-1:] != (2,):
+            raise ValueError("operating.radial_displacement must have 2 components [δx, δy], "
+                             f"got shape {np.shape(self.radial_displacement)}")
+        if self.radial_displacement is not None and _is_concrete(self.force) and np.any(np.asarray(self.force)[..., :2] != 0):
+            raise ValueError("operating.force: Fx and Fy must be 0 with operating.radial_displacement "
+                             "(the radial force follows from the prescribed displacement)")
 
 
 CAGE_POCKETS = ("outer_lock", "cylindrical")

@@ -141,13 +141,17 @@ def roller_raceways(bearing: RollerBearing, *, pitch_diameter, diametral_clearan
 
 class RollerOperating(eqx.Module):
     """Load case of a roller bearing: force [Fx, Fy, Fz] [N], moment [Mx, My] [N·m], ring speeds
-    [rad/s], and an imposed inner-ring misalignment [θx, θy] [rad] (None: the moments are applied)."""
+    [rad/s], an imposed inner-ring misalignment [θx, θy] [rad] (None: the moments are applied) and an
+    imposed radial displacement [δx, δy] [m] (None: the radial force is applied; else Fx, Fy are
+    outputs and the given ones are not read)."""
 
     force: jax.Array = eqx.field(converter=_as_float)
     moment: jax.Array = eqx.field(converter=_as_float)
     inner_speed: jax.Array = eqx.field(converter=_as_float, default=0.0)
     outer_speed: jax.Array = eqx.field(converter=_as_float, default=0.0)
     misalignment: jax.Array | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
+    radial_displacement: jax.Array | None = eqx.field(converter=lambda v: None if v is None else _as_float(v),
+                                                      default=None)
 
 
 def roller_azimuths(bearing: RollerBearing):
@@ -411,10 +415,20 @@ def _controls(bearing: RollerBearing, operating: RollerOperating):
     offset = jnp.zeros(5)
     if bearing.kind == "cylindrical_roller":
         free[2] = 0.0
+    if operating.radial_displacement is not None:
+        free[:2] = 0.0
+        offset = offset.at[:2].set(operating.radial_displacement)
     if operating.misalignment is not None:
         free[3:] = 0.0
         offset = offset.at[3:].set(operating.misalignment)
     return jnp.asarray(free), offset
+
+
+def prescribed_coordinates(bearing: RollerBearing, operating: RollerOperating):
+    """(5,) 1 where the inner ring's coordinate [δx, δy, δz, θx, θy] is prescribed (δz of a cylindrical
+    roller bearing held at 0; an imposed radial displacement or misalignment), 0 where it follows
+    from the applied load (`_controls`)."""
+    return 1.0 - _controls(bearing, operating)[0]
 
 
 def _scales(bearing: RollerBearing, raceways: RollerRaceways, operating: RollerOperating, setup: LaminaSetup):

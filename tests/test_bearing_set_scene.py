@@ -131,6 +131,7 @@ def test_life_of_the_set():
     ("bearing.set_size=3", "bearing.set_size"),
     ('bearing.type="deep_groove_ball"', "angular_contact_ball"),
     ('operating.preload_offset="5 um"', "one of preload and preload_offset"),
+    ('operating.misalignment=["0 mrad", "0 mrad"]', "operating.misalignment: not with a bearing set"),
 ])
 def test_bad_sets_are_refused(capsys, override, named):
     code = cli.main(["run", "spindle_pair", "--set", override])

@@ -141,6 +141,8 @@ def test_blocks_of_each_layout():
     ("tapered_roller_bearing", ["operating.moment=[0, 0]"], "operating.moment: with operating.misalignment"),
     ("tapered_roller_bearing", ["bearing.contact_angle=3 deg"], "bearing.contact_angle must be > 0.0837758 rad"),
     ("tapered_roller_bearing", ['operating.misalignment=["0.1 rad", "0 rad"]'], "operating.misalignment must be"),
+    ("cylindrical_roller_bearing", ['operating.radial_displacement=["20 µm", "0 µm"]'],
+     "operating.force: Fx and Fy must be 0 with operating.radial_displacement"),
     ("tapered_roller", ['operating.force=["1 kN", "0 N", "0 N"]'], "give only one of 'contact.load', 'operating.force'"),
 ])
 def test_bad_bearing_input_exits_2_with_one_line(scene, overrides, named):

@@ -214,6 +214,19 @@ def test_misalignment_that_lifts_one_end_of_every_roller(solve, results):
                                             STATIC).force, jnp.asarray(2e-3))
 
 
+def test_prescribed_radial_displacement_inverts_radial_force_control(solve):
+    """The tapered bearing under [Fx, Fy, Fz] = [4, 1, 2] kN, then with the δx, δy found prescribed:
+    the radial force returned is the applied one and the displacement is unchanged."""
+    bearing, raceways = tapered()
+    by_force = solve(bearing, raceways, operating([4e3, 1e3, 2e3]), STATIC)
+    prescribed = re.RollerOperating(force=jnp.array([0.0, 0.0, 2e3]), moment=jnp.zeros(2),
+                                    radial_displacement=by_force.displacement[:2])
+    by_displacement = solve(bearing, raceways, prescribed, STATIC)
+    assert bool(by_force.converged) and bool(by_displacement.converged)
+    np.testing.assert_allclose(by_displacement.force, [4e3, 1e3, 2e3, 0.0, 0.0], rtol=1e-8, atol=1e-6)
+    np.testing.assert_allclose(by_displacement.displacement, by_force.displacement, rtol=1e-8, atol=1e-14)
+
+
 @pytest.mark.parametrize("kind", ["cylindrical", "tapered"])
 def test_zero_load(solve, stiffness, kind):
     """No load, no clearance: Δ = 0, the stiffness is finite (zero: q ∝ δ^{10/9} has no stiffness at

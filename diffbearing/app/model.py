@@ -8,6 +8,7 @@ level is switched by --set) is reported as a warning.
 """
 
 import dataclasses
+import sys
 import time
 
 import jax
@@ -108,11 +109,13 @@ def build_model(scene: Scene) -> Model:
 
 def run_model(model: Model, progress: bool = True) -> RunResult:
     """Compile (timed; reused when cached), then run (timed, excluding compilation) the model;
-    a scene with a [sweep] table runs as one vmapped batch (see sweep.py)."""
+    a scene with a [sweep] table runs as one vmapped batch (see sweep.py). With `progress`, on a
+    terminal, each compilation is announced on stderr (`registry.compiled`), a sweep's chunks counted."""
     if model.sweep_axes:
         return run_sweep(model, model.sweep_axes, progress=progress)
     start = time.perf_counter()
-    executable, cached = registry.compiled(model.blocks, model.settings, model.inputs)
+    executable, cached = registry.compiled(model.blocks, model.settings, model.inputs,
+                                           progress=progress and sys.stderr.isatty())
     compile_s = 0.0 if cached else time.perf_counter() - start
     start = time.perf_counter()
     values = jax.block_until_ready(executable(model.inputs))

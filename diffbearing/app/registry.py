@@ -23,6 +23,8 @@ block of another layout is left out with it (`selectable`). Blocks and builders 
 """
 
 import dataclasses
+import sys
+import time
 from collections.abc import Callable, Mapping
 
 import jax
@@ -377,7 +379,7 @@ def programs(blocks) -> list[tuple[Block, ...]]:
 _COMPILED: dict = {}
 
 
-def compiled(blocks, settings: dict, inputs: dict):
+def compiled(blocks, settings: dict, inputs: dict, progress: bool = False):
     """(a callable inputs → {output key: array} of `blocks`, compiled ahead of time for `inputs`;
     whether it was cached).
 
@@ -388,6 +390,8 @@ def compiled(blocks, settings: dict, inputs: dict):
     shapes and dtypes of the inputs: a second run of the same model with other numbers reuses them.
     Between processes they are kept on disk (stored_models.py) in the compilation cache
     (`use_compilation_cache`: switched on here unless JAX has a cache folder or DIFFBEARING_CACHE=off).
+    With `progress`, each program's compilation is announced on stderr with the blocks it holds and
+    then its wall time (a scene's first run compiles for seconds to minutes; later ones load it).
     """
     use_compilation_cache()
     leaves, treedef = jax.tree.flatten(inputs)
@@ -396,7 +400,12 @@ def compiled(blocks, settings: dict, inputs: dict):
     if key in _COMPILED:
         return _COMPILED[key], True
     executables, earlier = [], {}
-    for group in programs(blocks):
+    groups = programs(blocks)
+    for number, group in enumerate(groups, 1):
+        if progress:
+            print(f"diffbearing: compiling program {number} of {len(groups)} ({', '.join(b.name for b in group)}; "
+                  "later runs load it from the compilation cache) ...", end="", file=sys.stderr, flush=True)
+            start = time.perf_counter()
         apart = group[0].own_program
         if apart:
             release_memory()  # the earlier programs' leftovers
@@ -407,6 +416,8 @@ def compiled(blocks, settings: dict, inputs: dict):
             release_memory()  # the compiler's, before the run maps its buffers beside them
         executables.append(executable)
         earlier = earlier | produced
+        if progress:
+            print(f" {time.perf_counter() - start:.1f} s", file=sys.stderr, flush=True)
 
     def run(values: dict) -> dict:
         results: dict = {}

@@ -82,6 +82,7 @@ def _operating(v, built) -> dict:
         inner_speed=v.get("operating.inner_speed", 0.0), outer_speed=v.get("operating.outer_speed", 0.0),
         force=v.get("operating.force", [0.0, 0.0, 0.0]), moment=v.get("operating.moment", [0.0, 0.0]),
         axial_displacement=v.get("operating.axial_displacement"), misalignment=v.get("operating.misalignment"),
+        radial_displacement=v.get("operating.radial_displacement"),
     )}
 
 
@@ -368,8 +369,9 @@ EQUILIBRIUM = Block(
     uses=("centrifugal", "gyroscopic"),
     outputs=(
         Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]", in_report=False),
-        Output("force", "N, N*m", "", "load the balls carry [Fx, Fy, Fz, Mx, My] (Fz follows under axial_displacement, "
-                                      "Mx, My under misalignment)", in_report=False),
+        Output("force", "N, N*m", "", "load the balls carry [Fx, Fy, Fz, Mx, My] (Fx, Fy follow under "
+                                      "radial_displacement, Fz under axial_displacement, Mx, My under misalignment)",
+               in_report=False),
         Output("prescribed", "", "", "1 where [δx, δy, δz, θx, θy] was prescribed (its load an output), 0 where free",
                in_report=False),
         Output("free_tilt", "rad", "mrad", "inner-ring tilt √(θx² + θy²) with the tilts free and no moment applied (else 0)",
@@ -470,7 +472,10 @@ def _header(result) -> list[str]:
         f"F = [{', '.join(f'{f:.3f}' for f in force)}] kN; " + (
             f"M = [{', '.join(f'{m:.1f}' for m in moment)}] N·m" if operating.misalignment is None else
             f"misalignment imposed [θx, θy] = [{', '.join(f'{t * 1e3:.4g}' for t in np.asarray(operating.misalignment))}] "
-            "mrad"),
+            "mrad") + (
+            "" if operating.radial_displacement is None else
+            f"; radial displacement imposed [δx, δy] = "
+            f"[{', '.join(f'{d * 1e6:.4g}' for d in np.asarray(operating.radial_displacement))}] µm (Fx, Fy are outputs)"),
     ]
 
 
@@ -484,6 +489,9 @@ def _report(result) -> list[str]:
              f"θx = {d[3] * 1e3:.4f} mrad, θy = {d[4] * 1e3:.4f} mrad"]
     if result.model.inputs["operating"].axial_displacement is not None:
         lines.append(f"  axial preload force at the prescribed δz: Fz = {float(values['force'][2]) / 1e3:.4f} kN")
+    if result.model.inputs["operating"].radial_displacement is not None:
+        lines.append(f"  radial force at the prescribed δx, δy: Fx = {float(values['force'][0]) / 1e3:.4f} kN, "
+                     f"Fy = {float(values['force'][1]) / 1e3:.4f} kN")
     if result.model.inputs["operating"].misalignment is not None:
         lines.append(f"  moments at the imposed misalignment: Mx = {float(values['force'][3]):.4g} N·m, "
                      f"My = {float(values['force'][4]):.4g} N·m")
@@ -541,6 +549,9 @@ ADAPTER = register(Adapter(
         "operating.misalignment": Key("quantities", "angle", length=2,
                                       doc="imposed inner-ring tilt [θx, θy] (ball and roller bearings): the ring held "
                                           "by its shaft; the moments are then outputs (give no operating.moment)"),
+        "operating.radial_displacement": Key("quantities", "length", length=2,
+                                             doc="imposed radial displacement [δx, δy] of the inner ring (ball and roller "
+                                                 "bearings): Fx, Fy must be 0; the radial force is then an output"),
         "effects.centrifugal": Key("boolean"),
         "effects.gyroscopic": Key("boolean"),
         "effects.stiffness": Key("boolean"),

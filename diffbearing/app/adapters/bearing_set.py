@@ -58,6 +58,10 @@ def _layout(v, built) -> dict:
         if v.get(key, 0.0) not in (0.0, None):
             raise ValueError(f"{key}: not with a bearing set (its preload is operating.preload or "
                              "operating.preload_offset; the outer rings stand still in the housing)")
+    for key in ("operating.misalignment", "operating.radial_displacement"):
+        if v.get(key) is not None:
+            raise ValueError(f"{key}: not with a bearing set (the set's inner rings move together under "
+                             "operating.force and operating.moment)")
     preload, offset = v.get("operating.preload"), v.get("operating.preload_offset")
     if preload is not None and offset is not None:
         raise ValueError("operating: give one of preload and preload_offset, not both")

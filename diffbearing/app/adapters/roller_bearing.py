@@ -18,8 +18,8 @@ import numpy as np
 from ...params import check_range
 from ...roller_contact import roller_contact
 from ...roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways,
-                                   roller_contact_loadings, roller_raceways, roller_results, roller_stiffness_matrix,
-                                   solve_roller_equilibrium)
+                                   prescribed_coordinates, roller_contact_loadings, roller_raceways, roller_results,
+                                   roller_stiffness_matrix, solve_roller_equilibrium)
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import (element_table_lines, format_number, state_column, stiffness_lines, swept_display,
                           to_display)
@@ -95,6 +95,10 @@ def _operating(v, built) -> dict:
     if misalignment is not None:
         check_range("operating.misalignment", misalignment, low=-MAX_MISALIGNMENT, high=MAX_MISALIGNMENT, unit=" rad",
                     why="small-angle misalignment, |θ| < 0.05 rad ≈ 2.9°")
+    radial_displacement = v.get("operating.radial_displacement")
+    if radial_displacement is not None and not _traced(force[0]) and (float(force[0]) != 0.0 or float(force[1]) != 0.0):
+        raise ValueError("operating.force: Fx and Fy must be 0 with operating.radial_displacement "
+                         "(the radial force follows from the prescribed displacement)")
     axial = force[2]
     if bearing.kind == "cylindrical_roller" and not _traced(axial) and float(axial) != 0.0:
         raise ValueError(f"operating.force: a cylindrical roller bearing without ribs carries no axial load; "
@@ -103,7 +107,8 @@ def _operating(v, built) -> dict:
         _check_tapered_load(force, v.get("bearing.contact_angle", 0.0))
     return {"operating": RollerOperating(force=force, moment=v.get("operating.moment", [0.0, 0.0]),
                                          inner_speed=v.get("operating.inner_speed", 0.0),
-                                         outer_speed=v.get("operating.outer_speed", 0.0), misalignment=misalignment)}
+                                         outer_speed=v.get("operating.outer_speed", 0.0), misalignment=misalignment,
+                                         radial_displacement=radial_displacement)}
 
 
 def _check_tapered_load(force, cup_angle) -> None:
@@ -438,6 +443,10 @@ def _header(result) -> list[str]:
         tilt = np.asarray(operating.misalignment) * 1e3
         load += (f"; inner-ring misalignment imposed, [θx, θy] = [{', '.join(f'{t:.4g}' for t in tilt)}] mrad "
                  "(the moments are outputs)")
+    if operating.radial_displacement is not None:
+        shift = np.asarray(operating.radial_displacement) * 1e6
+        load += (f"; radial displacement imposed, [δx, δy] = [{', '.join(f'{d:.4g}' for d in shift)}] µm "
+                 "(Fx, Fy are outputs)")
     centrifugal = "on" if model.centrifugal else "off"
     if model.centrifugal and not result.sweep_axes:
         centrifugal += f", F_c = {float(values['rollers.centrifugal_force']):.4g} N per roller"
@@ -493,10 +502,19 @@ def _report(result) -> list[str]:
     lines = ["", "Inner-ring displacement (from the concentric, aligned position)",
              f"  δx = {_fixed(d[0] * 1e6, 3)} µm, δy = {_fixed(d[1] * 1e6, 3)} µm, δz = {_fixed(d[2] * 1e6, 3)} µm, "
              f"θx = {_fixed(d[3] * 1e3, 4)} mrad, θy = {_fixed(d[4] * 1e3, 4)} mrad"]
+    if operating.radial_displacement is not None:
+        radial = np.asarray(values["force"])[:2] / 1e3
+        lines.append(f"  radial force at the prescribed δx, δy: Fx = {_fixed(radial[0], 4)} kN, "
+                     f"Fy = {_fixed(radial[1], 4)} kN")
     if operating.misalignment is not None:
         moment = np.asarray(values["force"])[3:]
         lines.append(f"  moments at the imposed misalignment: Mx = {_fixed(moment[0], 3)} N·m, "
                      f"My = {_fixed(moment[1], 3)} N·m")
+    names = np.array(["δx", "δy", "δz", "θx", "θy"])
+    held = np.asarray(prescribed_coordinates(result.model.inputs["bearing"], operating)) > 0
+    modelled = np.arange(5) != 2 if result.model.inputs["bearing"].kind == "cylindrical_roller" else np.ones(5, bool)
+    lines.append(f"  free (from the load): {', '.join(names[~held & modelled]) or 'none'}; prescribed (load an output): "
+                 f"{', '.join(names[held & modelled]) or 'none'}" + ("" if modelled[2] else "; δz: no ribs, no axial load"))
     if "stiffness" in values:
         lines += stiffness_lines(values["stiffness"], "rollers")
     rib = "Qrib on the cone's rib, " if "rollers.rib.load" in values else ""
@@ -544,6 +562,9 @@ ADAPTER = register(Adapter(
         "operating.misalignment": Key("quantities", "angle", length=2,
                                       doc="imposed inner-ring tilt [θx, θy] (ball and roller bearings): the ring held "
                                           "by its shaft; the moments are then outputs (give no operating.moment)"),
+        "operating.radial_displacement": Key("quantities", "length", length=2,
+                                             doc="imposed radial displacement [δx, δy] of the inner ring (ball and roller "
+                                                 "bearings): Fx, Fy must be 0; the radial force is then an output"),
         "operating.inner_speed": quantity("angular_speed"),
         "operating.outer_speed": quantity("angular_speed"),
         "effects.centrifugal": Key("boolean"),
