@@ -143,3 +143,48 @@ def test_a_point_contact_film_at_standstill_is_refused():
     """No rolling, no film: refused naming the speed (it compiled 97 s, then printed h < 0)."""
     message = refused("deep_groove_6411", *POINT_FILM)
     assert message.startswith("operating.inner_speed: effects.film = \"point\" needs rolling"), message
+
+
+def test_shoulder_diameters_check_each_contact_ellipse(tmp_path, capsys):
+    """With both shoulder diameters (item 5 of issue 46), each ball's share of its contact load past
+    the shoulder edge is `groove_chamfer.truncated_load_share` of the run's own contact angle and
+    semi-major axis, with the shoulder depths from the diameters and the groove bottoms
+    d_m ∓ (D_w + G_r/2) (1e-12); shallow shoulders warn with the share; shoulders below the contact
+    centres exit 3; one diameter alone, or one outside groove bottom…curvature centre, exits 2."""
+    import json
+
+    import numpy as np
+
+    from diffbearing import groove_chamfer
+    from diffbearing.app import cli
+
+    def run(inner, outer, *more):
+        code = cli.main(["run", "gearbox_6411_ratings", "--set", f"bearing.inner_shoulder_diameter={inner}",
+                         "--set", f"bearing.outer_shoulder_diameter={outer}", *more])
+        return (code, *capsys.readouterr())
+
+    path = tmp_path / "out.json"
+    code, out, err = run("72.5 mm", "122.5 mm", "--json", str(path))
+    assert code == 0, err
+    assert "passes the inner ring's shoulder edge: 4.1" in out  # 4.15 % (ball 0)
+    document = json.loads(path.read_text())
+    geometry, balls = document["geometry"], document["balls"]
+    bearing = build_model(load_scene("gearbox_6411_ratings")).inputs["bearing"]
+    span = float(bearing.ball_diameter) + geometry["radial_clearance"] / 2
+    pitch = float(bearing.pitch_diameter)
+    depths = {"inner": (72.5e-3 - (pitch - span)) / 2, "outer": ((pitch + span) - 122.5e-3) / 2}
+    for side, ratio in (("inner", bearing.inner_groove_ratio), ("outer", bearing.outer_groove_ratio)):
+        expected = groove_chamfer.truncated_load_share(np.abs(balls[side]["contact_angle"]),
+                                                       np.asarray(balls[side]["semi_major_axis"]),
+                                                       float(ratio * bearing.ball_diameter), depths[side])
+        np.testing.assert_allclose(balls[side]["shoulder_share"], expected, rtol=1e-12, atol=1e-15)
+    assert max(balls["inner"]["shoulder_share"]) > 0.04
+
+    code, out, err = run("70.6 mm", "124.4 mm")
+    assert code == 3 and len(err.strip().splitlines()) == 1 and "past its shoulder edge" in err, err
+    code, out, err = run("78 mm", "117 mm")
+    assert code == 0 and "shoulder edge" not in out, err
+    code = cli.main(["run", "gearbox_6411_ratings", "--set", "bearing.inner_shoulder_diameter=78 mm"])
+    assert code == 2 and "bearing.outer_shoulder_diameter: give both shoulder diameters" in capsys.readouterr().err
+    code, out, err = run("60 mm", "117 mm")
+    assert code == 2 and "bearing.inner_shoulder_diameter must be between 70.5 mm and 98.3 mm" in err, err

@@ -1,6 +1,7 @@
 """The 6411E chamfer paper's chamfer: its numbers are consistent with the model's contact angle and
 ellipse."""
 
+import jax
 import numpy as np
 
 from diffbearing import groove_chamfer
@@ -29,3 +30,35 @@ def test_limit_point_geometry():
     limit = np.array([r * np.sin(theta), groove_chamfer.limit_point_height(alpha, a, r)])
     np.testing.assert_allclose(np.linalg.norm(limit - contact), 2 * r * np.sin(a / (2 * r)), rtol=1e-12)
     np.testing.assert_allclose(groove_chamfer.limit_point_height(alpha, 0.0, r), contact[1], rtol=1e-12)
+
+
+def test_shoulder_edge_is_where_the_groove_reaches_the_shoulder_height():
+    """θ_s puts the groove point r(1 − cos θ_s) at the shoulder depth (exact identity); a shoulder at
+    or above the groove centre's height gives π/2 or more."""
+    r = INNER_GROOVE_RADIUS
+    for depth in (1e-3, 6.5e-3, 13.9e-3):
+        theta = groove_chamfer.shoulder_angle(depth, r)
+        np.testing.assert_allclose(groove_chamfer.limit_point_height(theta, 0.0, r), depth, rtol=1e-12)
+    assert float(groove_chamfer.shoulder_angle(r, r)) == np.pi / 2
+
+
+def test_truncated_share_is_the_hertz_load_beyond_the_edge():
+    """The share against a direct quadrature of the semi-ellipsoidal pressure p₀√(1 − ξ² − η²) over the
+    part of the ellipse past the edge (midpoint rule, 1e-4); 0 below the edge, ½ with the edge
+    through the centre, 1 a whole semi-axis past it, 0 for an unloaded contact, with a finite
+    derivative there."""
+    r, a, depth = INNER_GROOVE_RADIUS, 3e-3, 6.5e-3
+    edge = float(groove_chamfer.shoulder_angle(depth, r))
+    xi = (np.arange(4000) + 0.5) / 2000 - 1.0
+    eta = xi[:, None]
+    pressure = np.sqrt(np.clip(1.0 - xi**2 - eta**2, 0.0, None))
+    for offset in (-0.7, -0.2, 0.3, 0.9):  # ξ₀: the edge's position along the major axis
+        alpha = edge - offset * a / r
+        expected = pressure[:, xi > offset].sum() / pressure.sum()
+        share = groove_chamfer.truncated_load_share(alpha, a, r, depth)
+        np.testing.assert_allclose(share, expected, atol=1e-4)
+    share = [float(groove_chamfer.truncated_load_share(edge - k * a / r, a, r, depth)) for k in (1.5, 0.0, -1.0, -2.0)]
+    np.testing.assert_allclose(share, [0.0, 0.5, 1.0, 1.0], atol=1e-15)
+    assert float(groove_chamfer.truncated_load_share(edge, 0.0, r, depth)) == 0.0
+    slope = jax.grad(lambda semi_axis: groove_chamfer.truncated_load_share(edge + 0.1, semi_axis, r, depth))(0.0)
+    assert np.isfinite(float(slope))

@@ -5,7 +5,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ... import ball_equilibrium, ball_validity, hertz
+from ... import ball_equilibrium, ball_validity, groove_chamfer, hertz
 from ...kinematics import RACE_CONTROLS
 from ...params import (BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance,
                        with_radial_clearance)
@@ -74,6 +74,34 @@ def check_speed_factor(v, pitch_key: str = "bearing.pitch_diameter") -> None:
         if factor > SPEED_FACTOR_LIMIT:
             raise ValueError(f"{key}: n·d_m = {factor:.3g} mm·r/min is far beyond any rolling bearing (limit "
                              f"{SPEED_FACTOR_LIMIT:.0e}; {float(speed) * 30 / np.pi:.4g} r/min on d_m = {pitch * 1e3:.4g} mm)")
+
+
+SHOULDER_KEYS = ("bearing.inner_shoulder_diameter", "bearing.outer_shoulder_diameter")
+
+
+def _shoulders(v, built) -> dict:
+    """The high shoulders' depths (h_i, h_o) above the groove bottoms [m] from both shoulder diameters
+    (`groove_chamfer.shoulder_depths`), or None where the scene gives neither (no shoulder check)."""
+    given = [key for key in SHOULDER_KEYS if key in v]
+    if not given:
+        return {"shoulders": None}
+    if len(given) == 1:
+        missing = next(key for key in SHOULDER_KEYS if key not in given)
+        raise ValueError(f"{missing}: give both shoulder diameters with {given[0]} (the contact ellipses are checked "
+                         "against both rings' shoulders)")
+    bearing = built["bearing"]
+    diameters = [v[key] for key in SHOULDER_KEYS]
+    depths = groove_chamfer.shoulder_depths(bearing, *diameters)
+    if not any(isinstance(x, jax.core.Tracer) for x in (*diameters, *jax.tree.leaves(bearing))):
+        for key, diameter, depth, ratio, sign in zip(SHOULDER_KEYS, diameters, depths, (bearing.inner_groove_ratio,
+                                                     bearing.outer_groove_ratio), (1.0, -1.0)):
+            bottom = float(diameter) - sign * 2.0 * float(depth)
+            centre = bottom + sign * 2.0 * float(ratio * bearing.ball_diameter)
+            if not 0.0 < float(depth) < float(ratio * bearing.ball_diameter):
+                low, high = sorted((bottom, centre))
+                raise ValueError(f"{key} must be between {low * 1e3:.4g} mm and {high * 1e3:.4g} mm (from the groove "
+                                 f"bottom to the groove curvature centre's height), got {float(diameter) * 1e3:.4g} mm")
+    return {"shoulders": jnp.stack(depths)}
 
 
 def _operating(v, built) -> dict:
@@ -191,6 +219,27 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
         out["balls.centrifugal_force"] = balls.centrifugal_force
     if model.gyroscopic:
         out["balls.gyroscopic_moment"] = balls.gyroscopic_moment
+    if inputs.get("shoulders") is not None:
+        out |= shoulder_outputs(bearing, balls, inputs["shoulders"])
+    return out
+
+
+def shoulder_outputs(bearing, balls, depths) -> dict:
+    """Each ball's share of its contact load beyond the shoulder edge (`groove_chamfer.truncated_load_share`)
+    per raceway, and the largest angle [rad] by which a loaded contact's centre lies past its
+    shoulder edge (negative: every contact centre on the groove). An angular-contact bearing's
+    high shoulders face its positive contact angles; a deep-groove bearing has one each side."""
+    out, overrun = {}, []
+    for side, depth, ratio in (("inner", depths[0], bearing.inner_groove_ratio),
+                               ("outer", depths[1], bearing.outer_groove_ratio)):
+        angle = getattr(balls, f"{side}_contact_angle")
+        towards = angle if bearing.kind == "angular_contact_ball" else jnp.abs(angle)
+        radius = ratio * bearing.ball_diameter
+        out[f"balls.{side}.shoulder_share"] = groove_chamfer.truncated_load_share(
+            towards, getattr(balls, f"{side}_semi_major_axis"), radius, depth)
+        past = towards - groove_chamfer.shoulder_angle(depth, radius)
+        overrun.append(jnp.max(jnp.where(getattr(balls, f"{side}_load") > 0.0, past, -0.5 * jnp.pi)))
+    out["validity.shoulder_overrun"] = jax.lax.stop_gradient(jnp.max(jnp.stack(overrun)))
     return out
 
 
@@ -294,6 +343,25 @@ def light_at_speed(values: dict) -> str:
             "below the bearing's minimum and the balls leave the inner raceway (no equilibrium inside the model)")
 
 
+def shoulder_checks(values: dict, subject: str = "equilibrium") -> tuple[list[str], list[str]]:
+    """An error where a loaded contact's centre lies past its shoulder edge; a warning with the
+    largest share of a contact's load beyond the edge where only the ellipse is truncated."""
+    overrun = float(values["validity.shoulder_overrun"])
+    if overrun > 0.0:
+        return [f"{subject} outside the model: a loaded contact lies {np.degrees(overrun):.2f}° past its shoulder edge "
+                "(the ball rides on the shoulder: more axial load than this bearing's shoulders carry, or the "
+                "bearing.inner/outer_shoulder_diameter given)"], []
+    warnings = []
+    for side in ("inner", "outer"):
+        share = np.asarray(values[f"balls.{side}.shoulder_share"])
+        ball = int(np.argmax(share))
+        if share[ball] > 0.0:
+            warnings.append(f"the contact ellipse of ball {ball} passes the {side} ring's shoulder edge: "
+                            f"{share[ball] * 100:.3g} % of its load lies beyond it (the ellipse is truncated; the edge "
+                            "stress is not modelled)")
+    return [], warnings
+
+
 def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
     """Errors: a state outside the ball model (ball_validity) or a solver that did not converge;
     warnings: a peak pressure above the ISO 76 static limit."""
@@ -306,7 +374,11 @@ def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
                                  values["validity.lowest_contact_angle"])
     warnings += free_tilt_warnings(values["free_tilt"])
     steepest = float(values["validity.contact_angle"])
-    if steepest > STEEP_CONTACT:
+    if "validity.shoulder_overrun" in values:
+        shoulder_errors, shoulder_warnings = shoulder_checks(values)
+        errors += shoulder_errors
+        warnings += shoulder_warnings
+    elif steepest > STEEP_CONTACT:
         warnings.append(f"a loaded contact at |α| = {np.degrees(steepest):.1f}°: the groove's edge (shoulder) is not "
                         "modelled — check the contact ellipse against the shoulder height")
     factor = float(values["validity.speed_factor"])
@@ -365,7 +437,7 @@ EQUILIBRIUM = Block(
     bearing_types=BALL_BEARING_KINDS,
     enabled_by=None,
     requires=("raceway_contact",),
-    inputs=("bearing", "operating"),
+    inputs=("bearing", "operating", "shoulders"),
     uses=("centrifugal", "gyroscopic"),
     outputs=(
         Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]", in_report=False),
@@ -387,6 +459,12 @@ EQUILIBRIUM = Block(
         Output("validity.centrifugal_ratio", "", "", "largest ball centrifugal force over the applied load per ball "
                                                      "(0 without the centrifugal effect)", in_report=False),
         Output("validity.speed_factor", "", "", "n·d_m of the relative ring speed [mm·r/min]", in_report=False),
+        Output("validity.shoulder_overrun", "rad", "deg", "largest angle by which a loaded contact's centre lies past "
+               "its shoulder edge (with the shoulder diameters; model limit 0)", in_report=False),
+        Output("balls.inner.shoulder_share", "", "", "share of the inner contact's load beyond the shoulder edge "
+               "(with the shoulder diameters)", in_report=False),
+        Output("balls.outer.shoulder_share", "", "", "share of the outer contact's load beyond the shoulder edge "
+               "(with the shoulder diameters)", in_report=False),
         Output("validity.missing_axial_load", "N", "N", "axial load an angular-contact bearing lacks to run without a "
                                                         "partner: max(0, 1.25 Fr tan α₀ − Fz)", in_report=False),
         Output("balls.azimuth", "rad", "deg", "ball azimuth ψ from +x", column="ψ"),
@@ -541,6 +619,10 @@ ADAPTER = register(Adapter(
         "bearing.radial_clearance": quantity("length", "diametral clearance (ball and roller bearings); negative: "
                                                        "preloaded, down to −1 % of d_m"),
         "bearing.dynamic_load_rating": quantity("force"),
+        "bearing.inner_shoulder_diameter": quantity("length", "the inner ring's (high) shoulder diameter d₁: with "
+                                                              "the outer one, each contact ellipse is checked against "
+                                                              "its shoulder edge"),
+        "bearing.outer_shoulder_diameter": quantity("length", "the outer ring's (high) shoulder diameter D₂"),
         "operating.inner_speed": quantity("angular_speed"),
         "operating.outer_speed": quantity("angular_speed"),
         "operating.force": Key("quantities", "force", length=3, doc="[Fx, Fy, Fz] on the inner ring"),
@@ -565,6 +647,7 @@ ADAPTER = register(Adapter(
     },
     required={kind: BALL_KEYS for kind in BALL_BEARING_KINDS},
     inputs=(InputBuilder(("bearing",), BALL_BEARING_KINDS, _bearing, after=("mounting",)),
+            InputBuilder(("shoulders",), BALL_BEARING_KINDS, _shoulders, after=("bearing",)),
             InputBuilder(("operating",), BALL_BEARING_KINDS, _operating)),
     blocks=(RACEWAY_CONTACT, EQUILIBRIUM, STIFFNESS),
     header=_header,
