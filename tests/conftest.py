@@ -31,6 +31,45 @@ jax.config.update("jax_compilation_cache_dir", os.environ["JAX_COMPILATION_CACHE
 
 from diffbearing.app import registry  # noqa: E402
 
+# Slow cases CI leaves out (`extended`, besides those marked in place), node ids or their start: with
+# an empty compilation cache CI cannot run every slow case within its time (the README's `pytest`
+# takes about 27 min of it on two cores). Each repeats physics a case CI runs checks more cheaply:
+# the other arrangement, speed or load of a shaft or set, a derivative of a film whose values CI
+# checks, the same solve through the CLI. Run them with `pytest -m extended -o addopts= --nbmake
+# -n auto tests notebooks` after a change to the films, shafts, sets or their adapters.
+EXTENDED = (
+    "tests/test_bearing_set_scene.py::test_preload_as_force_and_as_offset_agree",
+    "tests/test_bearing_set_scene.py::test_pair_skf_friction_is_each_bearings_at_its_load",
+    "tests/test_cli.py::test_every_example_runs_by_name[spindle_pair]",
+    "tests/test_cli.py::test_every_example_runs_by_name[flexible_shaft]",
+    "tests/test_film_formulas.py::test_starved_ehl_paper_finite_line_film_through_the_cli",
+    "tests/test_flexible_shaft.py::test_the_rigid_shaft_is_the_limit_of_a_stiffening_one",
+    "tests/test_point_ehl.py::test_flooded_film_within_ten_percent_of_hamrock_dowson[elliptical",
+    "tests/test_point_ehl.py::test_point_film_derivatives_match_central_differences",
+    "tests/test_point_ehl.py::test_very_low_speed_says_whether_it_converged_and_stays_finite",
+    "tests/test_shaft_equilibrium.py::test_one_bearing_on_the_shaft_is_the_bearing_alone",
+    "tests/test_shaft_equilibrium.py::test_preloaded_pair_under_axial_load_is_each_bearing_alone",
+    "tests/test_shaft_equilibrium.py::test_tilt_stiffness_derivative_against_preload_offset",
+    "tests/test_shaft_equilibrium.py::test_position_preload_rises_with_speed",
+    "tests/test_shaft_scene.py::test_element_loads_derivatives_through_the_shaft",
+    "tests/test_skf_friction.py::test_shaft_skf_torque_derivatives_through_the_shaft",
+    "tests/test_starved_film.py::test_finite_line_derivatives_match_central_differences",
+    "tests/test_starved_film.py::test_starved_finite_line_derivatives_match_central_differences",
+    "tests/test_starved_film.py::test_finite_line_jacobian_assembly_equals_forward_mode[starved",
+    "tests/test_starved_film.py::test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivative",
+    "tests/test_starved_finite_line.py::test_the_papers_roller_starved_on_129_squared",
+    "tests/test_starved_finite_line.py::test_starved_film_derivatives_match_central_differences",
+    "tests/test_starved_point_ehl.py::test_starved_film_derivatives_match_central_differences",
+    "tests/test_starved_point_ehl.py::test_a_ball_scene_starved_by_a_thick_layer_is_flooded",
+    "tests/test_sweep.py::test_sweep_of_the_starved_line_film_equals_single_runs",
+)
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if item.get_closest_marker("slow") and item.nodeid.startswith(EXTENDED):
+            item.add_marker(pytest.mark.extended)
+
 
 @pytest.fixture(autouse=True, scope="module")
 def release_compiled_programs():

@@ -1,6 +1,7 @@
 """The one finite-difference helper every derivative test uses, the test scenes' shared bearing, and
 the path of a packaged example scene."""
 
+import functools
 import importlib.resources
 
 import jax
@@ -24,19 +25,26 @@ def assert_jvp_matches_central_difference(function, point, direction, step, rtol
 
     Two compiled programs: the JVP, whose primal values also give the difference, and the whole VJP
     (forward and backward pass in one), not four (a primal, a JVP and the VJP's two passes apart):
-    the compile time of a derivative test is most of its time."""
-    jvp = jax.jit(lambda x, v: jax.jvp(function, (x,), (v,)))
+    the compile time of a derivative test is most of its time. A test that checks several directions
+    of one `function` compiles them once (`_derivative_programs`)."""
+    jvp, vjp = _derivative_programs(function)
     outputs, tangent = jvp(point, direction)
     reference = central_difference_jvp(lambda x: jvp(x, direction)[0], point, direction, step)
     for name, got, want in zip(_names(tangent), jax.tree.leaves(tangent), jax.tree.leaves(reference)):
         np.testing.assert_allclose(got, want, rtol=rtol, atol=atol, err_msg=f"forward mode, output {name}")
     # reverse mode: ⟨w, J v⟩ from the VJP with w = ones must equal Σ of the forward tangent
-    vjp = jax.jit(lambda x, w: jax.vjp(function, x)[1](w))
     (cotangent,) = vjp(point, jax.tree.map(jnp.ones_like, outputs))
     reverse = sum(jnp.vdot(c, v) for c, v in zip(jax.tree.leaves(cotangent), jax.tree.leaves(direction)))
     forward = sum(jnp.sum(t) for t in jax.tree.leaves(tangent))
     magnitude = sum(float(jnp.sum(jnp.abs(t))) for t in jax.tree.leaves(tangent))
     np.testing.assert_allclose(reverse, forward, rtol=1e-10, atol=1e-10 * magnitude + 1e-14)
+
+
+@functools.lru_cache(maxsize=4)  # a few functions' programs held at a time (memory maps: tests/conftest.py)
+def _derivative_programs(function):
+    """The jitted JVP (x, v) → (f(x), J v) and VJP (x, w) → wᵀJ of `function`."""
+    return (jax.jit(lambda x, v: jax.jvp(function, (x,), (v,))),
+            jax.jit(lambda x, w: jax.vjp(function, x)[1](w)))
 
 
 def _names(tree):

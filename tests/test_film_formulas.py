@@ -1,5 +1,6 @@
 """Closed-form EHL film thickness (fidelity "formula") and the ball-bearing film effect."""
 
+import functools
 import json
 from pathlib import Path
 
@@ -172,6 +173,17 @@ def test_line_ehl_derivatives_match_central_differences():
         assert_jvp_matches_central_difference(function, point, direction, step=1e-6, rtol=1e-6)
 
 
+@functools.partial(jax.jit, static_argnames="nodes")
+def _central_film_and_gradient(load, speed, nodes):
+    """((h_c, the film), dh_c/dw) of the starved-EHL paper's line contact at this load and speed
+    (one program per grid, whatever the load and speed)."""
+    def central(w):
+        result = line_film(w, speed=speed, nodes=nodes, **STARVED_EHL_LINE)
+        return result.central, result
+
+    return jax.value_and_grad(central, has_aux=True)(load)
+
+
 @pytest.mark.parametrize("load_factor, speed, nodes, converges", [(10.0, 0.0263, 129, False), (10.0, 0.0263, 257, True),
                                                                    (1.0, 0.001, 129, False), (1.0, 0.001, 257, True)])
 def test_line_ehl_hard_cases_converge_or_say_so(load_factor, speed, nodes, converges):
@@ -180,12 +192,7 @@ def test_line_ehl_hard_cases_converge_or_say_so(load_factor, speed, nodes, conve
     negative film, and the result says it did not converge; 257 nodes give a positive film."""
     load = STARVED_EHL_LOAD_PER_LENGTH * load_factor
     assert float(moes_load_parameter(load, STARVED_EHL["radius"], speed, 0.08, 2.26e11)) > 100
-
-    def central(w):
-        result = line_film(w, speed=speed, nodes=nodes, **STARVED_EHL_LINE)
-        return result.central, result
-
-    (value, result), gradient = jax.jit(jax.value_and_grad(central, has_aux=True))(load)
+    (value, result), gradient = _central_film_and_gradient(load, speed, nodes)
     assert np.all(np.isfinite(np.asarray(result.pressure))) and np.isfinite(float(value))
     assert np.isfinite(float(gradient)) and float(result.residual) < 1e-10
     assert bool(result.converged) == converges == (float(result.minimum) > 0)
