@@ -31,18 +31,20 @@ jax.config.update("jax_compilation_cache_dir", os.environ["JAX_COMPILATION_CACHE
 
 from diffbearing.app import registry  # noqa: E402
 
-# Slow cases CI leaves out (`extended`, besides those marked in place), node ids or their start: with
-# an empty compilation cache CI cannot run every slow case within its time (the README's `pytest`
-# takes about 27 min of it on two cores). Each repeats physics a case CI runs checks more cheaply:
-# the other arrangement, speed or load of a shaft or set, a derivative of a film whose values CI
-# checks, the same solve through the CLI. Run them with `pytest -m extended -o addopts= --nbmake
-# -n auto tests notebooks` after a change to the films, shafts, sets or their adapters.
+# Slow cases CI leaves out (`extended`, besides those marked in place), node ids or their start:
+# with an empty compilation cache CI cannot run every slow case in its time (docs/validation.md,
+# §Tests and notebooks, has the measured times). Each repeats what a case
+# CI runs checks more cheaply: the other arrangement, speed or load of a shaft or set, a derivative
+# or hard case of a film whose values and hard cases CI checks, the same solve through the CLI.
+# Run them with `pytest -m extended -o addopts= --nbmake -n auto tests notebooks` after a change
+# to the films, shafts, sets or their adapters (docs/validation.md).
 EXTENDED = (
     "tests/test_bearing_set_scene.py::test_preload_as_force_and_as_offset_agree",
     "tests/test_bearing_set_scene.py::test_pair_skf_friction_is_each_bearings_at_its_load",
     "tests/test_cli.py::test_every_example_runs_by_name[spindle_pair]",
     "tests/test_cli.py::test_every_example_runs_by_name[flexible_shaft]",
     "tests/test_film_formulas.py::test_starved_ehl_paper_finite_line_film_through_the_cli",
+    "tests/test_finite_line_krylov.py::test_newton_krylov_hard_cases_say_whether_they_converged_and_stay_finite",
     "tests/test_flexible_shaft.py::test_the_rigid_shaft_is_the_limit_of_a_stiffening_one",
     "tests/test_point_ehl.py::test_flooded_film_within_ten_percent_of_hamrock_dowson[elliptical",
     "tests/test_point_ehl.py::test_point_film_derivatives_match_central_differences",
@@ -57,6 +59,7 @@ EXTENDED = (
     "tests/test_starved_film.py::test_starved_finite_line_derivatives_match_central_differences",
     "tests/test_starved_film.py::test_finite_line_jacobian_assembly_equals_forward_mode[starved",
     "tests/test_starved_film.py::test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivative",
+    "tests/test_starved_film.py::test_mass_conserving_meniscus_balance_keeps_mid_length_and_its_derivatives_are_implicit",
     "tests/test_starved_finite_line.py::test_the_papers_roller_starved_on_129_squared",
     "tests/test_starved_finite_line.py::test_starved_film_derivatives_match_central_differences",
     "tests/test_starved_point_ehl.py::test_starved_film_derivatives_match_central_differences",
