@@ -99,8 +99,8 @@ def _shoulders(v, built) -> dict:
             centre = bottom + sign * 2.0 * float(ratio * bearing.ball_diameter)
             if not 0.0 < float(depth) < float(ratio * bearing.ball_diameter):
                 low, high = sorted((bottom, centre))
-                raise ValueError(f"{key} must be between {low * 1e3:.4g} mm and {high * 1e3:.4g} mm (from the groove "
-                                 f"bottom to the groove curvature centre's height), got {float(diameter) * 1e3:.4g} mm")
+                raise ValueError(f"{key} must be between {low * 1e3:.4g} mm and {high * 1e3:.4g} mm (between its "
+                                 f"groove bottom and the groove curvature centre's height), got {float(diameter) * 1e3:.4g} mm")
     return {"shoulders": jnp.stack(depths)}
 
 
@@ -349,8 +349,8 @@ def shoulder_checks(values: dict, subject: str = "equilibrium") -> tuple[list[st
     overrun = float(values["validity.shoulder_overrun"])
     if overrun > 0.0:
         return [f"{subject} outside the model: a loaded contact lies {np.degrees(overrun):.2f}° past its shoulder edge "
-                "(the ball rides on the shoulder: more axial load than this bearing's shoulders carry, or the "
-                "bearing.inner/outer_shoulder_diameter given)"], []
+                "(the ball rides on the shoulder: more axial load than these shoulders carry; check "
+                "bearing.inner_shoulder_diameter and bearing.outer_shoulder_diameter)"], []
     warnings = []
     for side in ("inner", "outer"):
         share = np.asarray(values[f"balls.{side}.shoulder_share"])
