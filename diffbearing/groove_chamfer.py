@@ -56,10 +56,15 @@ def truncated_load_share(contact_angle, semi_major_axis, groove_radius, shoulder
     return jnp.where(loaded, (2.0 - 3.0 * edge + edge**3) / 4.0, 0.0)
 
 
-def shoulder_depths(bearing: BallBearing, inner_shoulder_diameter, outer_shoulder_diameter):
-    """(h_i, h_o) [m]: each ring's (high) shoulder above its groove bottom, from the shoulder
-    diameters d₁ (inner ring) and D₂ (outer ring); the groove bottoms at d_m ∓ (D_w + G_r/2)
-    (d_m their mean, G_r the diametral clearance)."""
+def groove_bottom_diameters(bearing: BallBearing):
+    """(d_i, d_o) [m]: the inner and outer groove-bottom diameters, d_m ∓ (D_w + G_r/2) (d_m their
+    mean, G_r the diametral clearance)."""
     half_span = bearing.ball_diameter + 0.5 * radial_clearance(bearing)
-    inner_bottom, outer_bottom = bearing.pitch_diameter - half_span, bearing.pitch_diameter + half_span
+    return bearing.pitch_diameter - half_span, bearing.pitch_diameter + half_span
+
+
+def shoulder_depths(bearing: BallBearing, inner_shoulder_diameter, outer_shoulder_diameter):
+    """(h_i, h_o) [m]: each ring's (high) shoulder above its groove bottom (`groove_bottom_diameters`),
+    from the shoulder diameters d₁ (inner ring) and D₂ (outer ring)."""
+    inner_bottom, outer_bottom = groove_bottom_diameters(bearing)
     return 0.5 * (inner_shoulder_diameter - inner_bottom), 0.5 * (outer_bottom - outer_shoulder_diameter)

@@ -276,6 +276,14 @@ def ball_bearing(
     )
 
 
+def check_radial_force_free(force, radial_displacement) -> None:
+    """ValueError naming operating.force where a radial displacement is prescribed and [Fx, Fy] is not
+    zero (ball and roller bearings: the radial force is then an output)."""
+    if radial_displacement is not None and _is_concrete(force) and np.any(np.asarray(force)[..., :2] != 0):
+        raise ValueError("operating.force: Fx and Fy must be 0 with operating.radial_displacement "
+                         "(the radial force follows from the prescribed displacement)")
+
+
 class Operating(eqx.Module):
     """Operating point: ring speeds and the load on the inner ring (outer ring fixed in space)."""
 
@@ -315,9 +323,7 @@ class Operating(eqx.Module):
                 np.shape(self.radial_displacement)[-1:] != (2,):
             raise ValueError("operating.radial_displacement must have 2 components [δx, δy], "
                              f"got shape {np.shape(self.radial_displacement)}")
-        if self.radial_displacement is not None and _is_concrete(self.force) and np.any(np.asarray(self.force)[..., :2] != 0):
-            raise ValueError("operating.force: Fx and Fy must be 0 with operating.radial_displacement "
-                             "(the radial force follows from the prescribed displacement)")
+        check_radial_force_free(self.force, self.radial_displacement)
 
 
 CAGE_POCKETS = ("outer_lock", "cylindrical")

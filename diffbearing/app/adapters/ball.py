@@ -91,16 +91,16 @@ def _shoulders(v, built) -> dict:
                          "against both rings' shoulders)")
     bearing = built["bearing"]
     diameters = [v[key] for key in SHOULDER_KEYS]
-    depths = groove_chamfer.shoulder_depths(bearing, *diameters)
     if not any(isinstance(x, jax.core.Tracer) for x in (*diameters, *jax.tree.leaves(bearing))):
-        for key, diameter, depth, ratio, sign in zip(SHOULDER_KEYS, diameters, depths, (bearing.inner_groove_ratio,
-                                                     bearing.outer_groove_ratio), (1.0, -1.0)):
-            bottom = float(diameter) - sign * 2.0 * float(depth)
-            centre = bottom + sign * 2.0 * float(ratio * bearing.ball_diameter)
-            if not 0.0 < float(depth) < float(ratio * bearing.ball_diameter):
-                low, high = sorted((bottom, centre))
+        inner_bottom, outer_bottom = (float(d) for d in groove_chamfer.groove_bottom_diameters(bearing))
+        inner_centre = inner_bottom + 2.0 * float(bearing.inner_groove_ratio * bearing.ball_diameter)
+        outer_centre = outer_bottom - 2.0 * float(bearing.outer_groove_ratio * bearing.ball_diameter)
+        for key, diameter, low, high in zip(SHOULDER_KEYS, diameters, (inner_bottom, outer_centre),
+                                            (inner_centre, outer_bottom)):
+            if not low < float(diameter) < high:
                 raise ValueError(f"{key} must be between {low * 1e3:.4g} mm and {high * 1e3:.4g} mm (between its "
                                  f"groove bottom and the groove curvature centre's height), got {float(diameter) * 1e3:.4g} mm")
+    depths = groove_chamfer.shoulder_depths(bearing, *diameters)
     return {"shoulders": jnp.stack(depths)}
 
 

@@ -15,7 +15,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ...params import check_range
+from ...params import check_radial_force_free, check_range
 from ...roller_contact import roller_contact
 from ...roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways,
                                    prescribed_coordinates, roller_contact_loadings, roller_raceways, roller_results,
@@ -96,9 +96,7 @@ def _operating(v, built) -> dict:
         check_range("operating.misalignment", misalignment, low=-MAX_MISALIGNMENT, high=MAX_MISALIGNMENT, unit=" rad",
                     why="small-angle misalignment, |θ| < 0.05 rad ≈ 2.9°")
     radial_displacement = v.get("operating.radial_displacement")
-    if radial_displacement is not None and not _traced(force[0]) and (float(force[0]) != 0.0 or float(force[1]) != 0.0):
-        raise ValueError("operating.force: Fx and Fy must be 0 with operating.radial_displacement "
-                         "(the radial force follows from the prescribed displacement)")
+    check_radial_force_free(force, radial_displacement)
     axial = force[2]
     if bearing.kind == "cylindrical_roller" and not _traced(axial) and float(axial) != 0.0:
         raise ValueError(f"operating.force: a cylindrical roller bearing without ribs carries no axial load; "
