@@ -62,3 +62,19 @@ def test_truncated_share_is_the_hertz_load_beyond_the_edge():
     assert float(groove_chamfer.truncated_load_share(edge, 0.0, r, depth)) == 0.0
     slope = jax.grad(lambda semi_axis: groove_chamfer.truncated_load_share(edge + 0.1, semi_axis, r, depth))(0.0)
     assert np.isfinite(float(slope))
+
+
+def test_truncated_share_derivatives_match_central_differences():
+    """d(share)/d(contact angle, semi-major axis, shoulder depth) at a truncated contact (ξ₀ ≈ 0.3),
+    forward and reverse, against central differences."""
+    from .helpers import assert_jvp_matches_central_difference
+
+    r, depth = INNER_GROOVE_RADIUS, 6.5e-3
+    alpha = float(groove_chamfer.shoulder_angle(depth, r)) - 0.3 * 3e-3 / r
+
+    def share(x):  # (α [rad], a [mm], h [mm]) → share
+        return groove_chamfer.truncated_load_share(x[0], x[1] * 1e-3, r, x[2] * 1e-3)
+
+    for direction in np.eye(3):
+        assert_jvp_matches_central_difference(share, jax.numpy.array([alpha, 3.0, 6.5]), jax.numpy.asarray(direction),
+                                              step=1e-6, rtol=1e-7)
