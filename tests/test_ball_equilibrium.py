@@ -269,15 +269,24 @@ def test_preload_by_axial_displacement_inverts_preload_by_force(solve):
 
 def test_prescribed_radial_displacement_inverts_radial_force_control(solve):
     """Solve with [Fx, Fy] = [4, 1] kN, then prescribe the δx, δy found: the radial force returned is
-    the applied one and the other components are unchanged."""
+    the applied one and the other components are unchanged; the radial force's derivative with
+    respect to the prescribed displacement (the implicit adjoint) matches a central difference."""
     bearing = deep_groove_6411E(0.0)
     by_force, _, _ = solve(bearing, Operating(3000 * RPM, 0.0, [4e3, 1e3, 6e3], [50.0, 0.0]))
     prescribed = Operating(3000 * RPM, 0.0, [0.0, 0.0, 6e3], [50.0, 0.0],
                            radial_displacement=by_force.displacement[:2])
-    by_displacement = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))(bearing, prescribed)
+    solver = jax.jit(lambda b, o: solve_equilibrium(b, o, SPEED))
+    by_displacement = solver(bearing, prescribed)
     assert bool(by_displacement.converged)
     np.testing.assert_allclose(by_displacement.force, [4e3, 1e3, 6e3, 50.0, 0.0], rtol=1e-8, atol=1e-6)
     np.testing.assert_allclose(by_displacement.displacement, by_force.displacement, rtol=1e-8, atol=1e-14)
+
+    def radial_force(shift_micrometres):
+        operating = Operating(3000 * RPM, 0.0, [0.0, 0.0, 6e3], [50.0, 0.0], radial_displacement=shift_micrometres * 1e-6)
+        return solver(bearing, operating).force[:2] / 1e3
+
+    assert_jvp_matches_central_difference(radial_force, jnp.asarray(by_force.displacement[:2]) * 1e6,
+                                          jnp.array([1.0, -0.5]), 1e-4, rtol=1e-5)
     with pytest.raises(ValueError, match="operating.force: Fx and Fy must be 0 with operating.radial_displacement"):
         Operating(0.0, 0.0, [1.0, 0.0, 6e3], [0.0, 0.0], radial_displacement=[1e-6, 0.0])
 
