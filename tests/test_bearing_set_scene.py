@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from diffbearing import build_model, load_scene, run_model
+from diffbearing import build_model, groove_chamfer, load_scene, run_model
 from diffbearing.app import cli
 from diffbearing.bearing_set import preload_offset
 
@@ -38,21 +38,24 @@ def single(tmp_path, axial, overrides=()):
 def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
     """Issue 26: the DB pair of the packaged example under a pure axial load of 1.2 kN; each
     bearing's displacement, ball loads, static safety, overrolling frequencies, friction torque and
-    a_ISO life L10rm are the single bearing's under its own axial load, to 1e-9 (the set's torque
-    their sum), with the
-    same [fidelity] (Brewe–Hamrock contacts, inner-raceway control); with no load each carries the
-    500 N preload."""
-    # a hot oil and a dirty one, so that a_ISO stays below its cap of 50 (0.67 and 43)
+    a_ISO life L10rm and the contact ellipses' shares beyond low-set shoulders are the single
+    bearing's under its own axial load, to 1e-9 (the set's torque their sum), with the same
+    [fidelity] (Brewe–Hamrock contacts, inner-raceway control); with no load each carries the 500 N
+    preload. With the inner shoulder lower still, bearing 0's contact centres pass its edge: an error
+    (the CLI's exit 3) naming it."""
+    # a hot oil and a dirty one, so that a_ISO stays below its cap of 50 (0.67 and 43); shoulders
+    # (inner 18.2° above the groove bottom) that truncate both bearings' inner contact ellipses
+    shoulders = ["bearing.inner_shoulder_diameter=79.45 mm", "bearing.outer_shoulder_diameter=99.8 mm"]
     ratings = ["effects.safety=true", "effects.frequencies=true", "effects.friction=palmgren", "lubricant.preset=iso_vg_32",
                "fidelity.hertz=brewe_hamrock", "fidelity.race_control=inner", "effects.life=true",
                "lubricant.cleanliness=custom", "lubricant.contamination_factor=0.02", "lubricant.temperature=90 degC"]
-    pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'] + ratings)
+    pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]'] + shoulders + ratings)
     assert bool(pair.values["set.converged"]) and "balls.inner.load" not in pair.values
     axial = [float(pair.values[f"set.bearings.{n}.force"][2]) for n in range(2)]
     torque = 0.0
     assert axial[0] - axial[1] == pytest.approx(1200.0, rel=1e-9)
     for number, load in enumerate(axial):
-        alone = single(tmp_path, load, ratings)
+        alone = single(tmp_path, load, shoulders + ratings)
         np.testing.assert_allclose(pair.values[f"set.bearings.{number}.displacement"], alone.values["displacement"],
                                    rtol=1e-9, atol=1e-9 * abs(float(alone.values["displacement"][2])))
         np.testing.assert_allclose(pair.values[f"set.bearings.{number}.balls.inner.load"],
@@ -63,7 +66,21 @@ def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
             assert float(pair.values[f"set.bearings.{number}.{mine}"]) == pytest.approx(float(alone.values[theirs]),
                                                                                         rel=1e-9), mine
         torque += float(alone.values["friction.torque"])
+        share = np.asarray(pair.values[f"set.bearings.{number}.balls.inner.shoulder_share"])
+        assert share.min() > 0.0
+        np.testing.assert_allclose(share, alone.values["balls.inner.shoulder_share"], rtol=1e-9)
+        assert [line for line in pair.problems[1] if f"bearing {number}: the contact ellipse" in line]
     assert float(pair.values["set.friction.torque"]) == pytest.approx(torque, rel=1e-9)
+    lower = ["bearing.inner_shoulder_diameter=79.3 mm", "bearing.outer_shoulder_diameter=99.8 mm"]
+    riding = run(['operating.force=["0 N", "0 N", "1.2 kN"]'] + lower + ratings)
+    bearing = riding.model.inputs["bearing"]
+    # the edge's angle from the groove bottom, seen from the groove centre: h = r (1 − cos θ_s)
+    depth = (0.0793 - float(groove_chamfer.groove_bottom_diameters(bearing)[0])) / 2.0
+    edge = np.arccos(1.0 - depth / (0.52 * float(bearing.ball_diameter)))
+    past = np.degrees(np.max(riding.values["set.bearings.0.balls.inner.contact_angle"]) - edge)
+    errors = riding.problems[0]
+    assert past > 0.0 and len(errors) == 1 and errors[0].startswith(
+        f"bearing 0 outside the model: a loaded contact lies {past:.2f}° past its shoulder edge"), errors
     unloaded = run(['operating.force=["0 N", "0 N", "0 N"]'])
     np.testing.assert_allclose([float(unloaded.values[f"set.bearings.{n}.force"][2]) for n in range(2)], [500.0, 500.0],
                                rtol=1e-9)

@@ -128,6 +128,23 @@ def test_a_tapered_bearing_just_above_the_axial_limit_converges():
     assert bool(result.values["converged"]), result.problems
 
 
+@pytest.mark.parametrize("speed, warned", [("9000 rpm", False), ("12000 rpm", True)])
+def test_a_tapered_bearing_warns_above_its_own_speed_factor(speed, warned):
+    """A tapered roller bearing's n·d_m warning is the ball bearings' 1e6 over its bearing factor
+    b_f = 2: 5e5 mm·r/min; the packaged one (d_m 50.686 mm) at 9000 r/min (4.56e5) runs without it,
+    at 12 000 r/min (6.08e5) with it, though a ball bearing would not warn there."""
+    from diffbearing import run_model
+
+    result = run_model(build_model(load_scene("tapered_roller_bearing", [f'operating.inner_speed="{speed}"'])),
+                       progress=False)
+    factor = float(speed.split()[0]) * 50.686
+    assert float(result.values["validity.speed_factor"]) == pytest.approx(factor, rel=1e-12)
+    lines = [line for line in result.problems[1] if line.startswith("n·d_m")]
+    assert lines == ([f"n·d_m = {factor:.3g} mm·r/min is above 5e+05, where standard bearings of this type stop (a ball "
+                      "bearing's 1e+06 over its bearing factor 2; the rib, cage and lubrication, not modelled here, set "
+                      "the limit)"] if warned else [])
+
+
 POINT_FILM = ['operating.force=["8 kN", "0 N", "0 N"]', 'effects.film="point"', 'lubricant.preset="iso_vg_68"']
 
 

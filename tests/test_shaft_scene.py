@@ -28,17 +28,19 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     """Issue 26: the 6411E alone on a shaft (at z = 40 mm, loaded there, turned "-z" with the load
     turned too) against the single-bearing scene: its displacement in its own frame, its load, its
     largest ball load, every ball's loads, contact angles and pressures (`bearings.elements.*`), its
-    L10r and a_ISO life L10rm, its static safety, overrolling frequencies and friction torque to
-    1e-9, with the same [fidelity] (Brewe–Hamrock contacts, inner-raceway control); the shaft's
-    lives and friction are that bearing's."""
+    L10r and a_ISO life L10rm, its static safety, overrolling frequencies, friction torque and each
+    ball's share of its contact load beyond low-set shoulders to 1e-9, with the same [fidelity]
+    (Brewe–Hamrock contacts, inner-raceway control); the shaft's lives and friction are that
+    bearing's, and its shoulder warning names the bearing."""
     effects = ('[effects]\nlife = true\nsafety = true\nfrequencies = true\nfriction = "palmgren"\n'
                '[fidelity]\nhertz = "brewe_hamrock"\nrace_control = "inner"\n'
                '[lubricant]\npreset = "iso_vg_68"\ntemperature = "90 degC"\nsupply = "grease"\ncleanliness = "custom"\n'
                'contamination_factor = 0.05\n')
-    shaft = _run(tmp_path, ENTRY + 'position = "40 mm"\norientation = "-z"\n[shaft]\nspeed = "3000 rpm"\n'
+    shoulders = 'inner_shoulder_diameter = "72.5 mm"\nouter_shoulder_diameter = "122.5 mm"\n'
+    shaft = _run(tmp_path, ENTRY + shoulders + 'position = "40 mm"\norientation = "-z"\n[shaft]\nspeed = "3000 rpm"\n'
                  f'[[loads]]\nposition = "40 mm"\nforce = ["{LOAD[0]}", "-{LOAD[1]}", "-{LOAD[2]}"]\n' + effects,
                  "shaft.toml")
-    single = _run(tmp_path, BEARING_6411E + 'dynamic_load_rating = "101 kN"\n[operating]\ninner_speed = "3000 rpm"\n'
+    single = _run(tmp_path, BEARING_6411E + shoulders + 'dynamic_load_rating = "101 kN"\n[operating]\ninner_speed = "3000 rpm"\n'
                   f'force = ["{LOAD[0]}", "{LOAD[1]}", "{LOAD[2]}"]\n' + effects, "single.toml")
     assert bool(shaft.values["shaft.converged"]) and bool(single.values["converged"])
     scale = np.max(np.abs(single.values["displacement"]))
@@ -68,6 +70,13 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     assert float(shaft.values["bearings.a_iso"][0]) == pytest.approx(float(single.values["life.a_iso_reference"]), rel=1e-9)
     assert 0.1 < float(shaft.values["bearings.a_iso"][0]) < 50.0
     assert float(shaft.values["shaft.L10rm"]) == pytest.approx(float(single.values["life.L10rm"]), rel=1e-9)
+    share = single.values["balls.inner.shoulder_share"]
+    assert np.max(share) > 0.0
+    for side in ("inner", "outer"):
+        np.testing.assert_allclose(shaft.values[f"bearings.elements.{side}_shoulder_share"][0],
+                                   single.values[f"balls.{side}.shoulder_share"], rtol=1e-9, atol=1e-12)
+    assert f"bearing 0: the contact ellipse of ball {np.argmax(share)} passes the inner ring's shoulder edge: " \
+           f"{np.max(share) * 100:.3g} %" in " ".join(shaft.problems[1])
     # issue 46: the single bearing's free tilt (2.80 mrad) is warned of; on the shaft it is 0.2 mrad
     # short of the 10′ a rigid bearing permits
     tilt = float(np.hypot(*single.values["displacement"][3:]))
@@ -109,6 +118,10 @@ def test_gearbox_shaft_balances_its_load(capsys, tmp_path):
     ('position = "0 mm"\nfoo = 1\n', "bearings[0]: unknown key 'bearing.foo'"),
     ("", "bearings[0]: missing required key 'position'"),
     ('position = "0 mm"\nroller_length = "10 mm"\n', "bearings[0]: key 'roller_length' is not read"),
+    ('position = "0 mm"\ninner_shoulder_diameter = "72.5 mm"\n',
+     "bearings[0]: outer_shoulder_diameter: give both shoulder diameters with inner_shoulder_diameter"),
+    ('position = "0 mm"\ninner_shoulder_diameter = "60 mm"\nouter_shoulder_diameter = "122.5 mm"\n',
+     "bearings[0]: inner_shoulder_diameter must be between 70.5 mm and 98.3 mm"),
 ])
 def test_bad_shafts_are_refused(capsys, tmp_path, entry, named):
     path = tmp_path / "bad.toml"

@@ -79,17 +79,17 @@ def check_speed_factor(v, pitch_key: str = "bearing.pitch_diameter") -> None:
 SHOULDER_KEYS = ("bearing.inner_shoulder_diameter", "bearing.outer_shoulder_diameter")
 
 
-def _shoulders(v, built) -> dict:
-    """The high shoulders' depths (h_i, h_o) above the groove bottoms [m] from both shoulder diameters
-    (`groove_chamfer.shoulder_depths`), or None where the scene gives neither (no shoulder check)."""
+def scene_shoulders(v, bearing):
+    """The high shoulders' depths [h_i, h_o] above the groove bottoms [m] from both shoulder diameters
+    (`groove_chamfer.shoulder_depths`), or None where the scene gives neither (no shoulder check);
+    ValueError naming the key for one diameter alone or one outside its groove."""
     given = [key for key in SHOULDER_KEYS if key in v]
     if not given:
-        return {"shoulders": None}
+        return None
     if len(given) == 1:
         missing = next(key for key in SHOULDER_KEYS if key not in given)
         raise ValueError(f"{missing}: give both shoulder diameters with {given[0]} (the contact ellipses are checked "
                          "against both rings' shoulders)")
-    bearing = built["bearing"]
     diameters = [v[key] for key in SHOULDER_KEYS]
     if not any(isinstance(x, jax.core.Tracer) for x in (*diameters, *jax.tree.leaves(bearing))):
         inner_bottom, outer_bottom = (float(d) for d in groove_chamfer.groove_bottom_diameters(bearing))
@@ -100,8 +100,11 @@ def _shoulders(v, built) -> dict:
             if not low < float(diameter) < high:
                 raise ValueError(f"{key} must be between {low * 1e3:.4g} mm and {high * 1e3:.4g} mm (between its "
                                  f"groove bottom and the groove curvature centre's height), got {float(diameter) * 1e3:.4g} mm")
-    depths = groove_chamfer.shoulder_depths(bearing, *diameters)
-    return {"shoulders": jnp.stack(depths)}
+    return jnp.stack(groove_chamfer.shoulder_depths(bearing, *diameters))
+
+
+def _shoulders(v, built) -> dict:
+    return {"shoulders": scene_shoulders(v, built["bearing"])}
 
 
 def _operating(v, built) -> dict:
@@ -343,20 +346,22 @@ def light_at_speed(values: dict) -> str:
             "below the bearing's minimum and the balls leave the inner raceway (no equilibrium inside the model)")
 
 
-def shoulder_checks(values: dict, subject: str = "equilibrium") -> tuple[list[str], list[str]]:
+def shoulder_checks(values: dict, subject: str = "equilibrium", prefix: str = "") -> tuple[list[str], list[str]]:
     """An error where a loaded contact's centre lies past its shoulder edge; a warning with the
-    largest share of a contact's load beyond the edge where only the ellipse is truncated."""
-    overrun = float(values["validity.shoulder_overrun"])
+    largest share of a contact's load beyond the edge where only the ellipse is truncated (`values`
+    holds `shoulder_outputs` under `prefix`; `subject` names the bearing in the messages)."""
+    overrun = float(values[prefix + "validity.shoulder_overrun"])
     if overrun > 0.0:
         return [f"{subject} outside the model: a loaded contact lies {np.degrees(overrun):.2f}° past its shoulder edge "
                 "(the ball rides on the shoulder: more axial load than these shoulders carry; check "
                 "bearing.inner_shoulder_diameter and bearing.outer_shoulder_diameter)"], []
     warnings = []
+    where = "" if subject == "equilibrium" else f"{subject}: "
     for side in ("inner", "outer"):
-        share = np.asarray(values[f"balls.{side}.shoulder_share"])
+        share = np.asarray(values[f"{prefix}balls.{side}.shoulder_share"])
         ball = int(np.argmax(share))
         if share[ball] > 0.0:
-            warnings.append(f"the contact ellipse of ball {ball} passes the {side} ring's shoulder edge: "
+            warnings.append(f"{where}the contact ellipse of ball {ball} passes the {side} ring's shoulder edge: "
                             f"{share[ball] * 100:.3g} % of its load lies beyond it (the ellipse is truncated; the edge "
                             "stress is not modelled)")
     return [], warnings

@@ -19,7 +19,8 @@ from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_st
 from ..formatting import format_number, stiffness_lines, swept_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .ball import ADAPTER as BALL_ADAPTER
-from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, low_shoulder_angle, validity_errors
+from .ball import (ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, low_shoulder_angle, shoulder_checks,
+                   shoulder_outputs, validity_errors)
 from .materials import material
 
 SET = ("bearing.arrangement",)  # the set's layout
@@ -110,6 +111,8 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
         angle.append(ball_validity.largest_contact_angle(balls.inner_contact_angle, balls.outer_contact_angle,
                                                        balls.inner_load, balls.outer_load))
         lowest.append(low_shoulder_angle(bearing, balls))
+        if inputs.get("shoulders") is not None:
+            out |= {prefix + key: value for key, value in shoulder_outputs(bearing, balls, inputs["shoulders"]).items()}
     out["set.validity.approach_ratio"] = jax.lax.stop_gradient(jnp.max(jnp.stack(approach)))
     out["set.validity.lowest_contact_angle"] = jnp.min(jnp.stack(lowest))
     out["set.validity.contact_angle"] = jax.lax.stop_gradient(jnp.max(jnp.stack(angle)))
@@ -119,8 +122,9 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
 
 
 def _checks(values: dict) -> tuple[list[str], list[str]]:
-    """Errors: a state outside the ball model or a shaft solve that did not converge; warnings: a
-    peak pressure above the ISO 76 limit, a bearing of a preloaded pair that has lost its load."""
+    """Errors: a state outside the ball model (a loaded contact past its shoulder edge among them) or a
+    shaft solve that did not converge; warnings: a peak pressure above the ISO 76 limit, a contact
+    ellipse truncated by a shoulder, a bearing of a preloaded pair that has lost its load."""
     warnings = []
     errors = validity_errors(values["set.validity.approach_ratio"], values["set.validity.contact_angle"], "set",
                              values["set.validity.lowest_contact_angle"])
@@ -128,6 +132,11 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
         errors.append(f"shaft equilibrium of the set did not converge: largest scaled residual "
                       f"{float(values['set.residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})")
     for number in range(SET_SIZE):
+        prefix = f"set.bearings.{number}."
+        if prefix + "validity.shoulder_overrun" in values:
+            shoulder_errors, shoulder_warnings = shoulder_checks(values, f"bearing {number}", prefix)
+            errors += shoulder_errors
+            warnings += shoulder_warnings
         for side in SIDES:
             pressure = np.asarray(values[f"set.bearings.{number}.balls.{side}.max_pressure"])
             if pressure.max() > ISO76_BALL_PRESSURE_LIMIT:
@@ -154,6 +163,11 @@ def _bearing_outputs(number: int):
           for field, unit, display, name in (("load", "N", "kN", "contact load Q"),
                                              ("contact_angle", "rad", "deg", "contact angle α"),
                                              ("max_pressure", "Pa", "GPa", "peak Hertz pressure p0"))),
+        Output(prefix + "validity.shoulder_overrun", "rad", "deg", f"bearing {number}: largest angle by which a loaded "
+               "contact's centre lies past its shoulder edge (with the shoulder diameters; model limit 0)",
+               in_report=False),
+        *(Output(f"{prefix}balls.{side}.shoulder_share", "", "", f"bearing {number}: share of the {side} contact's "
+                 "load beyond the shoulder edge (with the shoulder diameters)", in_report=False) for side in SIDES),
     )
 
 
@@ -199,7 +213,7 @@ SET_BLOCK = Block(
     bearing_types=BALL_BEARING_KINDS,  # a deep-groove set is refused by `_layout` with its reason
     enabled_by=None,
     requires=("raceway_contact",),
-    inputs=("bearing", "operating", "bearing_set"),
+    inputs=("bearing", "operating", "bearing_set", "shoulders"),
     uses=("centrifugal", "gyroscopic", "stiffness"),
     outputs=(
         Output("set.preload_force", "N", "kN", "preload: each bearing's axial load, unloaded at standstill"),

@@ -24,7 +24,7 @@ from ...roller_geometry import ROLLER_KINDS
 from ..formatting import (element_table_lines, format_number, state_column, stiffness_lines, swept_display,
                           to_display)
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, convergence_checks, quantity, register
-from .ball import check_speed_factor, stiffness_against_sweep
+from .ball import SPEED_FACTOR_WARNING, check_speed_factor, speed_factor, stiffness_against_sweep
 from .mounting import operating_clearance
 from .roller import contact_settings, profile_line
 
@@ -32,6 +32,12 @@ WHOLE_BEARING = ("operating.force",)  # the scene key of this layout (registry: 
 INFLUENCE_ROLLERS = ("most_loaded", "all")
 # ISO 76:2006, 7.1: contact stress limit at the basic static load rating of roller bearings.
 ISO76_ROLLER_PRESSURE_LIMIT = 4.0e9  # Pa
+# n·d_m [mm·r/min]: the ball bearings' warning (ball.SPEED_FACTOR_WARNING, 1e6) over each type's
+# bearing factor b_f, the factor by which the catalogues scale a ball bearing's speed factor A = n·d_m
+# to a roller bearing's (SKF Rolling bearings catalogue, "Relubrication intervals", bearing factors
+# b_f: 1.5 a cylindrical roller bearing as non-locating bearing, 2 a tapered roller bearing — the
+# rollers' ends sliding on a rib). Above it standard bearings of the type stop.
+BEARING_FACTORS = {"cylindrical_roller": 1.5, "tapered_roller": 2.0}
 MAX_MISALIGNMENT = 0.05  # rad: the small-angle bound of a roller's tilt against its raceway (roller_geometry)
 
 EQUILIBRIUM_BLOCK, STIFFNESS_BLOCK, INFLUENCE_BLOCK = ("roller_bearing_equilibrium", "roller_bearing_stiffness",
@@ -145,7 +151,10 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     out = {"displacement": solution.displacement, "force": solution.force, "converged": solution.converged,
            "residual": solution.residual, "rollers.azimuth": rollers.azimuth, "rollers.tilt": rollers.tilt,
            "rollers.shift": rollers.shift, "rollers.lamina_position": rollers.lamina_y,
-           "validity.approach_ratio": approach_ratio(bearing, rollers)}
+           "validity.approach_ratio": approach_ratio(bearing, rollers),
+           "validity.speed_factor": jax.lax.stop_gradient(speed_factor(operating.inner_speed - operating.outer_speed,
+                                                                       raceways.pitch_diameter)),
+           "validity.bearing_factor": jnp.asarray(BEARING_FACTORS[bearing.kind])}
     for side in ("inner", "outer"):
         out |= {f"rollers.{side}.load": getattr(rollers, f"{side}_load"),
                 f"rollers.{side}.lamina_load": getattr(rollers, f"{side}_lamina_load"),
@@ -158,8 +167,15 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
 
 
 def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
-    """Error: a solver that did not converge; warnings: a peak pressure above the ISO 76 static limit."""
+    """Errors: a solver that did not converge, a lamina approach beyond the model; warnings: a peak
+    pressure above the ISO 76 static limit, a speed above the type's n·d_m (`BEARING_FACTORS`)."""
     errors, warnings = [], []
+    factor, limit = float(values["validity.speed_factor"]), SPEED_FACTOR_WARNING / float(values["validity.bearing_factor"])
+    if factor > limit:
+        warnings.append(f"n·d_m = {factor:.3g} mm·r/min is above {limit:.3g}, where standard bearings of this type stop "
+                        f"(a ball bearing's {SPEED_FACTOR_WARNING:.0e} over its bearing factor "
+                        f"{float(values['validity.bearing_factor']):g}; the rib, cage and lubrication, not modelled "
+                        "here, set the limit)")
     if not bool(values["converged"]):
         errors.append(f"roller bearing equilibrium solver did not converge: largest scaled residual "
                       f"{float(values['residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})")
@@ -269,6 +285,9 @@ EQUILIBRIUM = Block(
         Output("residual", "", "", "largest scaled residual of ring and roller equations", in_report=False),
         Output("validity.approach_ratio", "", "", "largest lamina approach / mean roller diameter (model limit "
                                                   f"{MAX_APPROACH_FRACTION:g})", in_report=False),
+        Output("validity.speed_factor", "", "", "n·d_m of the relative ring speed [mm·r/min]", in_report=False),
+        Output("validity.bearing_factor", "", "", "the type's bearing factor b_f: its n·d_m warning is 1e6 / b_f",
+               in_report=False),
         Output("rollers.azimuth", "rad", "deg", "roller azimuth ψ from +x", column="ψ"),
         *_side_outputs("inner"),
         *_side_outputs("outer"),

@@ -28,7 +28,8 @@ from ..formatting import format_number, stiffness_lines
 from ..registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
 from ..units import to_si
 from .ball import ADAPTER as BALL_ADAPTER
-from .ball import ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, low_shoulder_angle, validity_errors
+from .ball import (ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, low_shoulder_angle, scene_shoulders,
+                   shoulder_checks, shoulder_outputs, validity_errors)
 from .life import ball_bearing_life, roller_bearing_life
 from .materials import material
 from .roller import scene_roller_bearing
@@ -104,8 +105,9 @@ class ShaftLayout(eqx.Module):
     """The scene's shaft: its bearings (a BallBearing, or a (RollerBearing, RollerRaceways) pair,
     each), their positions and offsets [m] and orientations (±1), the loads, the shaft speed
     [rad/s], the reference point of the displacement and stiffness [m], each bearing's bore and
-    outer diameter [m] (None where its entry gives none; read by the ratings that need them), and
-    for a flexible shaft its sections and mesh (None: rigid)."""
+    outer diameter [m] (None where its entry gives none; read by the ratings that need them), each
+    ball bearing's shoulder depths [h_i, h_o] [m] (None where its entry gives no shoulder diameters,
+    and for a roller bearing), and for a flexible shaft its sections and mesh (None: rigid)."""
 
     bearings: tuple
     positions: jax.Array = eqx.field(converter=_as_float)
@@ -115,6 +117,7 @@ class ShaftLayout(eqx.Module):
     stiffness_at: jax.Array = eqx.field(converter=_as_float)
     orientations: tuple = eqx.field(static=True)
     envelopes: tuple = ()
+    shoulders: tuple = ()
     sections: ShaftSections | None = None
     mesh: BeamMesh | None = eqx.field(static=True, default=None)
 
@@ -148,12 +151,17 @@ def _check_spacing(entries) -> None:
 
 def _layout(v, built) -> dict:
     shared = {key: v[key] for key in v if key.startswith("material.")}  # (items() would mark every key read)
-    bearings, envelopes = [], []
+    bearings, envelopes, shoulders = [], [], []
     for index, entry in enumerate(v["bearings"]):
         reads = Reads({**shared, **entry})
         envelopes.append((reads.get("bearing.bore"), reads.get("bearing.outer_diameter")))
+        shoulders.append(None)
         if entry["bearing.type"] in BALL_BEARING_KINDS:
             bearings.append(catalogue_bearing(reads, material(reads)))
+            try:
+                shoulders[-1] = scene_shoulders(reads, bearings[-1])
+            except ValueError as error:
+                raise ValueError(f"bearings[{index}]: {str(error).replace('bearing.', '')}") from None
         else:
             roller = scene_roller_bearing(reads, {})["bearing"]
             bearings.append((roller, scene_raceways(reads, {"bearing": roller, "mounting": None})["raceways"]))
@@ -170,7 +178,7 @@ def _layout(v, built) -> dict:
         ShaftLoads(np.array([load["position"] for load in loads]), np.array([load["force"] for load in loads]),
                    np.array([load["moment"] for load in loads])),
         v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
-        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), sections, mesh)}
+        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), tuple(shoulders), sections, mesh)}
 
 
 def _supports(layout: ShaftLayout, settings: dict):
@@ -226,19 +234,37 @@ ELEMENT_FIELDS = ("azimuth", "inner_load", "outer_load", "inner_max_pressure", "
 BALL_ELEMENT_FIELDS = ("inner_contact_angle", "outer_contact_angle")
 
 
+def _padded(own, count: int):
+    """A bearing's per-element values padded with NaN to `count` (NaN throughout for None)."""
+    if own is None:
+        return jnp.full(count, jnp.nan)
+    return jnp.pad(own, (0, count - own.shape[0]), constant_values=jnp.nan)
+
+
 def _elements(per_bearing) -> dict:
     """`bearings.elements.*`: each bearing's per-element results (bearings × the most elements), NaN
     beyond a bearing's own element count and for the balls' contact angles of a roller bearing."""
     count = max(elements.azimuth.shape[0] for elements in per_bearing)
-
-    def padded(elements, field):
-        own = getattr(elements, field, None)
-        if own is None:
-            return jnp.full(count, jnp.nan)
-        return jnp.pad(own, (0, count - own.shape[0]), constant_values=jnp.nan)
-
-    return {f"bearings.elements.{field}": jnp.stack([padded(elements, field) for elements in per_bearing])
+    return {f"bearings.elements.{field}": jnp.stack([_padded(getattr(elements, field, None), count)
+                                                     for elements in per_bearing])
             for field in ELEMENT_FIELDS + BALL_ELEMENT_FIELDS}
+
+
+def _shoulders(layout: ShaftLayout, shaft: Shaft, per_bearing) -> dict:
+    """Where some ball bearing's entry gives its shoulder diameters: each bearing's largest angle
+    past a shoulder edge (`bearings.shoulder_overrun`, −π/2 for one without) and each element's
+    share of its load beyond the edge (`bearings.elements.*_shoulder_share`, NaN without)."""
+    if all(depths is None for depths in layout.shoulders):
+        return {}
+    count = max(elements.azimuth.shape[0] for elements in per_bearing)
+    overrun, shares = [], {"inner": [], "outer": []}
+    for support, elements, depths in zip(shaft.supports, per_bearing, layout.shoulders):
+        found = {} if depths is None else shoulder_outputs(support.bearing, elements, depths)
+        overrun.append(found.get("validity.shoulder_overrun", jnp.asarray(-0.5 * jnp.pi)))
+        for side in shares:
+            shares[side].append(_padded(found.get(f"balls.{side}.shoulder_share"), count))
+    return {"bearings.shoulder_overrun": jnp.stack(overrun)} | {
+        f"bearings.elements.{side}_shoulder_share": jnp.stack(share) for side, share in shares.items()}
 
 
 def _solve(layout: ShaftLayout, shaft: Shaft, stiffness: bool) -> dict:
@@ -284,7 +310,7 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
                                             for elements in per_bearing]),
         "bearings.validity": jnp.stack([_validity(support, elements)
                                         for support, elements in zip(shaft.supports, per_bearing)]),
-    } | _elements(per_bearing)
+    } | _elements(per_bearing) | _shoulders(layout, shaft, per_bearing)
     if settings["effects"].get("life", False) is True:
         lives = [_life(support, elements) for support, elements in zip(shaft.supports, per_bearing)]
         out["bearings.L10r"] = jnp.stack(lives)
@@ -323,6 +349,13 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
                 for number, pressure in enumerate(np.asarray(values["bearings.max_pressure"]))
                 if pressure > ISO76_BALL_PRESSURE_LIMIT]
     warnings += misalignment_warnings(values["bearings.displacement"])
+    for number, overrun in enumerate(np.asarray(values.get("bearings.shoulder_overrun", []))):
+        shares = {f"balls.{side}.shoulder_share": np.nan_to_num(values[f"bearings.elements.{side}_shoulder_share"][number])
+                  for side in ("inner", "outer")}
+        shoulder_errors, shoulder_warnings = shoulder_checks({"validity.shoulder_overrun": overrun, **shares},
+                                                             f"bearing {number}")
+        errors += shoulder_errors
+        warnings += shoulder_warnings
     return errors, warnings
 
 
@@ -397,6 +430,12 @@ BLOCK = Block(
                    f"{side} raceway", in_report=False),
             Output(f"bearings.elements.{side}_contact_angle", "rad", "deg", f"each ball bearing's {side} contact "
                    "angles (NaN for a roller bearing)", in_report=False))),
+        Output("bearings.shoulder_overrun", "rad", "deg", "each bearing's largest angle by which a loaded contact's "
+               "centre lies past its shoulder edge (ball bearings whose entry gives the shoulder diameters; −90° "
+               "without; model limit 0)", in_report=False),
+        *(Output(f"bearings.elements.{side}_shoulder_share", "", "", f"each ball's share of its {side} contact load "
+                 "beyond the shoulder edge (NaN for a bearing without shoulder diameters)", in_report=False)
+          for side in ("inner", "outer")),
         Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
                in_report=False),
         *(Output(f"bearings.frequencies.{field}", "Hz", "Hz", f"each bearing's {text} at its solved contact angles",
