@@ -81,7 +81,7 @@ import jax.numpy as jnp
 from . import ball_validity, hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
 from .params import BallBearing, Operating, groove_curvature_centre_distance
-from .newton import implicit_root, least_squares_tangent_solve, minimise_convex, newton
+from .newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from .raceway_contact import (ContactConstantTable, ball_raceway_modulus, contact_constant_table, contact_constants,
                               inner_curvature, outer_curvature, table_constants)
 
@@ -404,7 +404,7 @@ def _without_gradient(tree):
     return jax.tree.map(lambda x: jax.lax.stop_gradient(x) if eqx.is_inexact_array(x) else x, tree)
 
 
-def _limited_ball_step(bearing: BallBearing, step):
+def limited_ball_step(bearing: BallBearing, step):
     """Each ball's Newton step (Z, 2) [m], shortened to at most a tenth of the ball radius: Hertz's
     δ^{3/2} can throw a far Newton step."""
     limit = 0.05 * bearing.ball_diameter
@@ -431,7 +431,7 @@ def _ball_newton(residual, start, args):
     """Per-ball Newton for `ball_positions` (its docstring)."""
     bearing = args[1]
     return newton(residual, start, args, max_steps=BALL_NEWTON_MAX_STEPS, loop="while", linear_step=_ball_step,
-                  limit=lambda step: _limited_ball_step(bearing, step), line_search=False,
+                  limit=lambda step: limited_ball_step(bearing, step), line_search=False,
                   step_tolerance=(BALL_POSITION_TOLERANCE * bearing.ball_diameter, 0.0))[0]
 
 
@@ -599,70 +599,88 @@ def _static_ring_residual(y, args, constants):
     return _scaled_ring_residual(_ring_force_of_state(bearing, state, model), y, args)
 
 
-def _speed_residual(y, positions, args, constants, free: _FreeBalls):
-    """Residuals of the ring and ball unknowns together, with the Hertz constants held at `constants`.
-
-    Returns each ball's scaled share of the ring residual (Z, 5) (zero for a prescribed component),
-    the scaled ring residual (5) and the ball residuals (Z, 2) [N] (free balls: their placeholder).
-    """
-    bearing, operating, model, _, unknown, weight, load_scale = args
-    centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+def _ring_and_ball_residuals(displacement, positions, bearing, operating, model, constants, free: _FreeBalls):
+    """Each ball's share of the ring force (Z, 5) [N, N·m] and the ball residuals (Z, 2) [N] (free
+    balls: their placeholder) at ring displacement Δ and ball centres X, with the Hertz constants
+    held at `constants`."""
+    centres = inner_groove_centres(bearing, displacement)
     state = ball_state(bearing, operating, centres, positions, model, constants)
     contributions = _ring_force_contributions(bearing, state, model)
-    ring = _scaled_ring_residual(jnp.sum(contributions, axis=0), y, args)
-    balls = _with_free_balls(sum(contact_forces(bearing, state, model).values()), positions, free)
-    return contributions * (_controls(operating)[0] * weight / load_scale), ring, balls
+    return contributions, _with_free_balls(sum(contact_forces(bearing, state, model).values()), positions, free)
 
 
-def _ring_step(jacobian, residual):
-    """Newton step J⁻¹ r (LU), J regularised by 1e-12 (max |J_kk| + 1) I (Levenberg–Marquardt form):
-    at a singular J (zero load, every inner contact open) the step stays finite and, with a zero
-    residual, zero."""
-    guard = 1e-12 * (jnp.max(jnp.abs(jnp.diag(jacobian))) + 1.0)
-    return jnp.linalg.solve(jacobian + guard * jnp.eye(jacobian.shape[0]), residual)
+class CondensedBalls(eqx.Module):
+    """The ring force of a bearing's balls at a ring displacement Δ and ball centres X, with the balls'
+    equations g(Δ, X) = 0 eliminated to first order (`condensed_balls`): the ring force F (5) [N,
+    N·m]; the condensed force F − J_FX J_XX⁻¹ g and stiffness J_FΔ − J_FX J_XX⁻¹ J_XΔ (5, 5), the
+    Schur complement of the balls' 2×2 blocks; and the ball step's parts, J_XX⁻¹ g (Z, 2) [m] and
+    J_XX⁻¹ J_XΔ (Z, 2, 5): with a ring step dΔ the balls' Newton step is −(J_XX⁻¹ g + J_XX⁻¹ J_XΔ dΔ)."""
+
+    force: jax.Array
+    condensed_force: jax.Array
+    condensed_stiffness: jax.Array
+    ball_correction: jax.Array
+    ball_coupling: jax.Array
+
+
+def condensed_balls(displacement, positions, bearing: BallBearing, operating: Operating, model: BallModel,
+                    table=None) -> CondensedBalls:
+    """The bearing's balls at ring displacement Δ [m, rad] and ball centres X (Z, 2) [m] condensed
+    onto the ring (`CondensedBalls`), for a Newton step of ring (or shaft) and ball unknowns together.
+
+    The Hertz constants are evaluated once at the current contact angles and held in the
+    Jacobian, which leaves out their weak angle dependence; the residuals are exact. The Jacobian
+    is block-arrow: 5 JVP tangents give the ring columns, and 2 tangents with the same unit on
+    every ball give all 2×2 ball blocks and the 5×2 couplings of each ball (ball j's residual and
+    its share of the ring force depend on X_j alone). The condensation is the block elimination
+    through the 5×5 Schur complement S = J_ΔΔ − Σ_j J_ΔXj J_XjXj⁻¹ J_XjΔ (Golub & Van Loan, Matrix
+    Computations, §3.2).
+    """
+    count = bearing.ball_count
+    tangents = (jnp.concatenate([jnp.eye(5), jnp.zeros((2, 5))]),
+                jnp.concatenate([jnp.zeros((5, count, 2)), jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2))]))
+    centres = inner_groove_centres(bearing, displacement)
+    constants = hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
+    free = _free_ball_equations(bearing, operating, centres, model, table)
+    (contributions, balls), linear = jax.linearize(
+        lambda d, x: _ring_and_ball_residuals(d, x, bearing, operating, model, constants, free), displacement, positions)
+    d_shares, d_balls = jax.vmap(linear)(*tangents)
+    ring_ring = jnp.sum(d_shares[:5], axis=1).T  # (5, 5)
+    balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
+    ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
+    balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
+    solved = _solve_ball_blocks(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1), free.scale)
+    force = jnp.sum(contributions, axis=0)
+    return CondensedBalls(force, force - jnp.einsum("jab,jb->a", ring_balls, solved[..., 0]),
+                          ring_ring - jnp.einsum("jab,jbc->ac", ring_balls, solved[..., 1:]), solved[..., 0],
+                          solved[..., 1:])
 
 
 def _static_step(y, args):
-    """Ring Newton step at the static split, −J⁻¹r (`_ring_step`), with J by `jax.jacfwd` (5
+    """Ring Newton step at the static split, −J⁻¹r (`newton.guarded_solve`), with J by `jax.jacfwd` (5
     tangents) and the Hertz constants evaluated once at the current contact angles and held in
     it, which leaves out their weak angle dependence; the residual itself is exact."""
     bearing, operating, model, table, unknown, _, _ = args
     centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
     constants = _static_constants(bearing, centres, model, table)
     jacobian, residual = jax.jacfwd(lambda v: (r := _static_ring_residual(v, args, constants), r), has_aux=True)(y)
-    return -_ring_step(jacobian, residual)
+    return -guarded_solve(jacobian, residual)
 
 
 def _speed_step(unknowns, args):
     """Newton step (−dy, −dX) of the ring and ball unknowns together (5 + 2Z), (y, ball centres
-    (Z, 2) [m]).
-
-    The Hertz constants are evaluated once at the current contact angles and held in the
-    Jacobian, which leaves out their weak angle dependence; the residuals are exact. The Jacobian
-    is block-arrow: 5 JVP tangents give the ring columns, and 2 tangents with the same unit on
-    every ball give all 2×2 ball blocks and the 5×2 couplings of each ball (ball j's residual and
-    its share of the ring residual depend on X_j alone). The step follows by block elimination
-    through the 5×5 Schur complement S = J_yy − Σ_j J_yXj J_XjXj⁻¹ J_Xjy (Golub & Van Loan, Matrix
-    Computations, §3.2).
-    """
+    (Z, 2) [m]): the balls condensed onto the ring (`condensed_balls`), the ring step from the
+    condensed residual (a prescribed component's equation is its unknown, = 0), then the balls'."""
     y, positions = unknowns
-    bearing, operating, model, table, unknown, _, _ = args
-    count = bearing.ball_count
-    tangents = (jnp.concatenate([jnp.eye(5), jnp.zeros((2, 5))]),
-                jnp.concatenate([jnp.zeros((5, count, 2)), jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2))]))
-    centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
-    constants = hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
-    free = _free_ball_equations(bearing, operating, centres, model, table)
-    (_, ring, balls), linear = jax.linearize(lambda v, x: _speed_residual(v, x, args, constants, free), y, positions)
-    d_shares, d_ring, d_balls = jax.vmap(linear)(*tangents)
-    ring_ring = d_ring[:5].T  # (5, 5)
-    balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
-    ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
-    balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
-    solved = _solve_ball_blocks(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1), free.scale)
-    schur = ring_ring - jnp.einsum("jab,jbc->ac", ring_balls, solved[..., 1:])
-    dy = _ring_step(schur, ring - jnp.einsum("jab,jb->a", ring_balls, solved[..., 0]))
-    return -dy, -(solved[..., 0] - solved[..., 1:] @ dy)
+    bearing, operating, model, table, unknown, weight, load_scale = args
+    free, _ = _controls(operating)
+    condensed = condensed_balls(_displacement(y, unknown, operating), positions, bearing, operating, model, table)
+    ring = _scaled_ring_residual(condensed.condensed_force, y, args)
+    rows = (free * weight / load_scale)[:, None]
+    schur = rows * condensed.condensed_stiffness * (unknown * free)[None, :] + jnp.diag(1.0 - free)
+    dy = guarded_solve(schur, ring)
+    # the ring moves by −dy; the balls by −J_XX⁻¹ g − J_XX⁻¹ J_XΔ dΔ with dΔ = −(its scale) dy
+    return -dy, -(condensed.ball_correction - condensed.ball_coupling @ (unknown * free * dy))
 
 
 def _at_speed_fraction(operating: Operating, fraction):
@@ -699,7 +717,7 @@ def _ring_solve(residual, start, args):
     def stage(unknowns, fraction):
         staged = (bearing, _at_speed_fraction(operating, fraction), model, table, unknown, weight, load_scale)
         solved, steps = newton(None, unknowns, staged, linear_step=_speed_step,
-                               limit=lambda step: (step[0], _limited_ball_step(bearing, step[1])),
+                               limit=lambda step: (step[0], limited_ball_step(bearing, step[1])),
                                step_tolerance=((RING_STEP_TOLERANCE, BALL_POSITION_TOLERANCE * bearing.ball_diameter),
                                                (RING_STEP_TOLERANCE, 0.0)), **options)
         # a stage that ran out of steps or off to non-finite values keeps the last stage's solution:
@@ -765,10 +783,7 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     ring_residual = jnp.max(jnp.abs(_scaled_ring_residual(force, y, args)))
     residual = ring_residual
     if model.speed_effects:
-        ball = sum(contact_forces(bearing, state, model).values())  # ΣF of each ball at the solved state
-        free = _free_balls(bearing, operating, centres)
-        size = state["inner_load"] + state["outer_load"] + state["centrifugal_force"] + load_scale * 1e-6
-        residual = jnp.maximum(residual, jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size)))
+        residual = jnp.maximum(residual, relative_ball_residual(bearing, operating, centres, state, model, load_scale))
     residual = jax.lax.stop_gradient(residual)
     approach_ratio = jax.lax.stop_gradient(ball_validity.largest_approach_ratio(
         state["inner_approach"], state["outer_approach"], bearing.ball_diameter))
@@ -778,6 +793,16 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     return Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
                        steps.astype(static_steps.dtype),
                        jax.lax.stop_gradient(positions) if model.speed_effects else None)
+
+
+def relative_ball_residual(bearing: BallBearing, operating: Operating, centres, state: dict, model: BallModel, load_scale):
+    """The largest |ΣF| of a ball [N] at a solved state (`ball_state` at the groove centres
+    `centres`) over the forces on it (its contact loads and centrifugal force, plus 1e-6 of the
+    bearing's load scale [N]); 0 for a free ball, which carries nothing."""
+    ball = sum(contact_forces(bearing, state, model).values())
+    size = state["inner_load"] + state["outer_load"] + state["centrifugal_force"] + load_scale * 1e-6
+    free = _free_balls(bearing, operating, centres)
+    return jnp.max(jnp.where(free, 0.0, jnp.max(jnp.abs(ball), axis=-1) / size))
 
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel(),

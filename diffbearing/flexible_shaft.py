@@ -192,7 +192,8 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
     return FlexibleShaftEquilibrium(
         displacement=nodes[reference_node], bearing_displacements=locals_, bearing_forces=forces,
         converged=residual < RESIDUAL_TOLERANCE, residual=residual, static_steps=static_steps,
-        steps=steps.astype(static_steps.dtype), nodes=node_positions(flexible.mesh, flexible.sections, points(flexible)),
+        steps=steps.astype(static_steps.dtype), ball_centres=(None,) * len(shaft.supports),
+        nodes=node_positions(flexible.mesh, flexible.sections, points(flexible)),
         node_displacements=nodes)
 
 

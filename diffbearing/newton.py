@@ -166,6 +166,14 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
     return _iterate(damped_step, busy, (y0, residual, start, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
 
 
+def guarded_solve(matrix, rhs):
+    """x = J⁻¹ r (LU), J regularised by 1e-12 (max |J_kk| + 1) I (Levenberg–Marquardt form): at a
+    singular J (zero load, every contact open, a direction nothing resists) the step stays finite
+    and, with a zero right-hand side, zero."""
+    guard = 1e-12 * (jnp.max(jnp.abs(jnp.diag(matrix))) + 1.0)
+    return jnp.linalg.solve(matrix + guard * jnp.eye(matrix.shape[0]), rhs)
+
+
 def refined_solve(matrix, rhs):
     """x with matrix·x = rhs (float64): LU in float32, `REFINEMENTS` float64 corrections
     x ← x + LU⁻¹(rhs − matrix·x), and the float64 LU where that leaves ‖rhs − matrix·x‖ above

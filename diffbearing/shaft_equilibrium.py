@@ -41,7 +41,7 @@ import numpy as np
 
 from . import ball_equilibrium, roller_equilibrium
 from .ball_equilibrium import BallModel
-from .newton import implicit_root, least_squares_tangent_solve, minimise_convex, newton
+from .newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from .numerics import require_float64, safe_norm
 from .params import BallBearing, Operating, _as_float, _is_concrete, check_range, groove_curvature_centre_distance
 from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways
@@ -165,18 +165,20 @@ def _operating(support, speed):
     return RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed)
 
 
-def support_force(local_displacement, support, speed, table=None):
-    """[Fx, Fy, Fz, Mx, My] [N, N·m] that holds the bearing's inner ring at Δ_k, in its own frame."""
+def support_force(local_displacement, support, speed, table=None, ball_centres=None):
+    """[Fx, Fy, Fz, Mx, My] [N, N·m] that holds the bearing's inner ring at Δ_k, in its own frame.
+    `ball_centres`: a ball bearing's balls as a solve found them at Δ_k (else solved here)."""
     operating = _operating(support, speed)
     if isinstance(support, BallSupport):
-        return ball_equilibrium.ring_force(local_displacement, support.bearing, operating, support.model, table)
+        return ball_equilibrium.ring_force(local_displacement, support.bearing, operating, support.model, table,
+                                           ball_centres)
     return roller_equilibrium.ring_force(local_displacement, support.bearing, support.raceways, operating,
                                          support.model)
 
 
-def reaction(shaft_displacement, support, speed, table=None):
+def reaction(shaft_displacement, support, speed, table=None, ball_centres=None):
     """G(z_k)ᵀ P_k F_k: the load the bearing takes from the shaft, moved to z = 0 [N, N·m]."""
-    local = support_force(support_displacement(shaft_displacement, support), support, speed, table)
+    local = support_force(support_displacement(shaft_displacement, support), support, speed, table, ball_centres)
     return transfer(support.position).T @ (turned(support) * local)
 
 
@@ -186,12 +188,14 @@ def constant_tables(shaft: Shaft):
                  for s in shaft.supports)
 
 
-def shaft_force(shaft_displacement, shaft: Shaft, tables=None):
+def shaft_force(shaft_displacement, shaft: Shaft, tables=None, ball_centres=None):
     """Σ_k of the bearings' loads on the shaft at displacement u, about z = 0 [N, N·m]; in
-    equilibrium it equals the applied load, and its Jacobian is the system stiffness."""
+    equilibrium it equals the applied load, and its Jacobian is the system stiffness.
+    `ball_centres`: per bearing, its solved balls at this u (`ShaftEquilibrium.ball_centres`) or None."""
     tables = constant_tables(shaft) if tables is None else tables
-    return sum(reaction(shaft_displacement, support, shaft.speed, table)
-               for support, table in zip(shaft.supports, tables))
+    centres = (None,) * len(shaft.supports) if not ball_centres else ball_centres
+    return sum(reaction(shaft_displacement, support, shaft.speed, table, balls)
+               for support, table, balls in zip(shaft.supports, tables, centres))
 
 
 def applied_load(shaft: Shaft):
@@ -261,11 +265,111 @@ def damped_newton(residual, start, args):
     return y, steps.astype(y.dtype)
 
 
+def _balls_solved_jointly(support) -> bool:
+    """Whether the joint solve carries this bearing's balls as unknowns (a ball bearing with speed
+    effects, whose balls leave the static split)."""
+    return isinstance(support, BallSupport) and support.model.speed_effects
+
+
+def _at_speed_fraction(shaft: Shaft, fraction) -> Shaft:
+    return eqx.tree_at(lambda s: s.speed, shaft, fraction * shaft.speed)
+
+
+def _joint_step(unknowns, args):
+    """Newton step (−dy, −dX_k) of the shaft and the balls of every bearing with speed effects
+    together, (y, per bearing its ball centres (Z, 2) [m] or None).
+
+    Each such bearing's balls are condensed onto its ring (`ball_equilibrium.condensed_balls`: its
+    force and stiffness with the balls' equations eliminated to first order); any other bearing
+    gives its ring force and stiffness (`jax.jacfwd`). The shaft's Jacobian is then
+    Σ_k G_kᵀ P_k S_k P_k G_k (Δ_k = P_k G_k u + const), and the balls follow the shaft's step.
+    """
+    y, positions = unknowns
+    shaft, unknown, weight, load_scale, tables = args
+    u = unknown * y
+    force, stiffness, moves, condensed = -applied_load(shaft), jnp.zeros((5, 5)), [], []
+    for support, balls, table in zip(shaft.supports, positions, tables):
+        local = support_displacement(u, support)
+        move = turned(support)[:, None] * transfer(support.position)  # dΔ_k/du = P_k G_k
+        if balls is None:
+            own = support_force(local, support, shaft.speed, table)
+            own_stiffness = jax.jacfwd(support_force)(local, support, shaft.speed, table)
+            condensed.append(None)
+        else:
+            found = ball_equilibrium.condensed_balls(local, balls, support.bearing, _operating(support, shaft.speed),
+                                                     support.model, table)
+            own, own_stiffness = found.condensed_force, found.condensed_stiffness
+            condensed.append(found)
+        force = force + move.T @ own
+        stiffness = stiffness + move.T @ own_stiffness @ move
+        moves.append(move)
+    dy = guarded_solve((weight / load_scale)[:, None] * stiffness * unknown[None, :], force * weight / load_scale)
+    # the shaft moves by −unknown·dy; each bearing's balls by −J_XX⁻¹ g − J_XX⁻¹ J_XΔ dΔ_k
+    ball_steps = tuple(None if found is None else
+                       -(found.ball_correction - found.ball_coupling @ (move @ (unknown * dy)))
+                       for found, move in zip(condensed, moves))
+    return -dy, ball_steps
+
+
+def _joint_solve(start, args):
+    """(y, per bearing its ball centres or None, steps) of the shaft and the balls together
+    (`_joint_step`), from the static solution `start`, continued in speed as one bearing's ring
+    solve is (`ball_equilibrium._ring_solve`): the speed rises in `ball_equilibrium.SPEED_STAGES`,
+    each stage's Newton from the last one's solution, the balls first solved at the start's shaft
+    position at the first stage's speed (`ball_equilibrium.ball_positions`), a stage that fails
+    keeping the last solution. Solving the balls inside each shaft step instead (a ring force of
+    the shaft's displacement alone) makes that force jump where a ball, released by its inner
+    ring, falls to the bottom of its outer groove, and the shaft's Newton stalls (measured: a
+    preloaded pair at 2.3e4 r/min under random loads, residual 0.13). Without line search; each
+    ball's step limited to a tenth of its radius (`ball_equilibrium.limited_ball_step`); each
+    stage stops when every shaft step component is below `ball_equilibrium.RING_STEP_TOLERANCE`
+    (1 + |y|) and every ball step below `ball_equilibrium.BALL_POSITION_TOLERANCE` D_w."""
+    shaft, unknown, weight, load_scale, tables = args
+    fractions = jnp.asarray(ball_equilibrium.SPEED_STAGES)
+    first = _at_speed_fraction(shaft, fractions[0])
+    positions = tuple(ball_equilibrium.ball_positions(support_displacement(unknown * start, support), support.bearing,
+                                                      _operating(support, first.speed), support.model, table)
+                      if _balls_solved_jointly(support) else None
+                      for support, table in zip(shaft.supports, tables))
+    supports, ring = shaft.supports, ball_equilibrium.RING_STEP_TOLERANCE
+
+    def per_bearing(value):
+        return tuple(value(support) if _balls_solved_jointly(support) else None for support in supports)
+
+    tolerance = ((ring, per_bearing(lambda s: ball_equilibrium.BALL_POSITION_TOLERANCE * s.bearing.ball_diameter)),
+                 (ring, per_bearing(lambda s: 0.0)))
+
+    def limit(step):
+        return step[0], tuple(None if balls is None else ball_equilibrium.limited_ball_step(support.bearing, balls)
+                              for support, balls in zip(supports, step[1]))
+
+    def stage(unknowns, fraction):
+        staged = (_at_speed_fraction(shaft, fraction), unknown, weight, load_scale, tables)
+        solved, steps = newton(None, unknowns, staged, linear_step=_joint_step, limit=limit, step_tolerance=tolerance,
+                               max_steps=ball_equilibrium.RING_MAX_STEPS, loop="while", line_search=False)
+        reached = ((steps < ball_equilibrium.RING_MAX_STEPS)
+                   & jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in jax.tree.leaves(solved)])))
+        return jax.tree.map(lambda new, old: jnp.where(reached, new, old), solved, unknowns), steps
+
+    (y, positions), steps = jax.lax.scan(stage, (start, positions), fractions)
+    return y, positions, jnp.sum(steps).astype(y.dtype)
+
+
+def _residual_at_balls(y, args):
+    """`_residual` with each jointly solved bearing's balls at their solved centres (the last of
+    `args`), their implicit derivative kept: the residual whose root the joint solve found."""
+    shaft, unknown, weight, load_scale, tables, centres = args
+    return (shaft_force(unknown * y, shaft, tables, centres) - applied_load(shaft)) * weight / load_scale
+
+
 class ShaftEquilibrium(eqx.Module):
     """The shaft in equilibrium: its displacement u at z = 0 [m, rad]; per bearing (tuples in the
     order of `Shaft.supports`) the inner-ring displacement in its own frame [m, rad] and the load
     it carries, [Fx, Fy, Fz, Mx, My] in its own frame [N, N·m]; whether it converged (scaled
-    residual below `RESIDUAL_TOLERANCE`), the residual [-] and the Newton steps."""
+    residual below `RESIDUAL_TOLERANCE`), the residual [-] and the Newton steps; per bearing its
+    balls' centres (Z, 2) [m] where the solve carried them (ball bearings with speed effects; else
+    None): hand them to `shaft_stiffness` and `ball_equilibrium.ball_results`, which then solve no
+    balls of their own."""
 
     displacement: jax.Array
     bearing_displacements: tuple
@@ -274,6 +378,7 @@ class ShaftEquilibrium(eqx.Module):
     residual: jax.Array
     static_steps: jax.Array
     steps: jax.Array
+    ball_centres: tuple
 
 
 def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
@@ -288,20 +393,37 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     start, static_steps = minimise_convex(_static_energy, jnp.zeros(5), (shaft, unknown, weight, load_scale, None),
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (shaft, unknown, weight, load_scale, tables)
-    y, steps = implicit_root(_residual, jax.lax.stop_gradient(start), args, damped_newton, least_squares_tangent_solve,
-                             has_aux=True)
+    start = jax.lax.stop_gradient(start)
+    if not any(_balls_solved_jointly(support) for support in shaft.supports):
+        y, steps = implicit_root(_residual, start, args, damped_newton, least_squares_tangent_solve, has_aux=True)
+        centres = (None,) * len(shaft.supports)
+        residual = jnp.max(jnp.abs(_residual(y, args)))
+    else:  # the shaft and the balls together (`_joint_solve`); the root's derivative at the solved balls
+        solved, centres, steps = jax.lax.stop_gradient(_joint_solve(start, args))
+        args = (*args, centres)
+        y = implicit_root(_residual_at_balls, solved, args, lambda residual, guess, args: guess,
+                          least_squares_tangent_solve)
+        residual = jnp.max(jnp.abs(_residual_at_balls(y, args)))
     u = unknown * y
     locals_ = tuple(support_displacement(u, support) for support in shaft.supports)
-    forces = tuple(support_force(local, support, shaft.speed, table)
-                   for local, support, table in zip(locals_, shaft.supports, tables))
-    residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
+    forces = tuple(support_force(local, support, shaft.speed, table, balls)
+                   for local, support, table, balls in zip(locals_, shaft.supports, tables, centres))
+    for local, support, table, balls in zip(locals_, shaft.supports, tables, centres):
+        if balls is not None:  # each ball's own balance, as one bearing's solve checks it
+            operating = _operating(support, shaft.speed)
+            grooves = ball_equilibrium.inner_groove_centres(support.bearing, local)
+            state = ball_equilibrium.ball_state(support.bearing, operating, grooves, balls, support.model, table=table)
+            residual = jnp.maximum(residual, ball_equilibrium.relative_ball_residual(
+                support.bearing, operating, grooves, state, support.model, load_scale))
+    residual = jax.lax.stop_gradient(residual)
     return ShaftEquilibrium(u, locals_, forces, residual < RESIDUAL_TOLERANCE, residual, static_steps,
-                            steps.astype(static_steps.dtype))
+                            steps.astype(static_steps.dtype), centres)
 
 
-def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0):
+def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, ball_centres=None):
     """5×5 system stiffness [N/m, N/rad; N·m/m, N·m/rad] at the shaft point z = `at` [m]: the
-    Jacobian of the bearings' loads with respect to that point's displacement (exact, jacfwd)."""
-    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, constant_tables(shaft))
+    Jacobian of the bearings' loads with respect to that point's displacement (exact, jacfwd).
+    `ball_centres`: the solve's balls (`ShaftEquilibrium.ball_centres`; else solved here)."""
+    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, constant_tables(shaft), ball_centres)
     back = transfer(-jnp.asarray(at, dtype=float))
     return back.T @ stiffness @ back

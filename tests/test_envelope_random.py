@@ -11,7 +11,11 @@ for angular-contact bearings with the axial load to run without a partner, ≥ 9
 every other case converges or reports the reason the application layer gives (a state outside
 the model, `ball_validity`; a centrifugal force above the load per ball, `light_at_speed`; an
 axial load short of 1.25 F_r tan α₀, `without_partner`). The fast profile runs in the default suite, the large one
-(2000 ball and 400 cylindrical roller bearings) in the slow suite.
+(2000 ball and 400 cylindrical roller bearings) in the extended suite. Matched pairs of
+angular-contact bearings (back-to-back, face-to-face preloaded, tandem) under random radial,
+axial and tilting loads at speed: 24 back-to-back pairs in the slow suite, 1200 pairs of every
+arrangement in the extended one. Every draw keeps its rolling elements on the pitch circle with
+room for a cage bar (`fitting`).
 
 Invalid scene values (hypothesis): any quantity key of the packaged examples given a wrong unit,
 NaN, or infinity is refused with a ValueError (exit 2) naming that key.
@@ -29,6 +33,7 @@ import numpy as np
 import pytest
 
 from diffbearing import ball_equilibrium, ball_validity, build_model, life, load_scene
+from diffbearing.bearing_set import bearing_set, preload_offset
 from diffbearing.app.adapters.ball import centrifugal_ratio, low_shoulder_angle, missing_axial_load
 from diffbearing.app.registry import all_keys
 from diffbearing.app.scene import read_document
@@ -40,6 +45,7 @@ from diffbearing.roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLE
 from diffbearing.roller_geometry import roller_bearing
 from diffbearing.roller_life import roller_dynamic_load_rating, roller_equivalent_dynamic_load
 from diffbearing.roller_profile import roller_profile
+from diffbearing.shaft_equilibrium import Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 
 SEED = int(os.environ.get("DIFFBEARING_SEED", "20261127"))
 SPEED_MODEL = ball_equilibrium.BallModel(centrifugal=True, gyroscopic=True)
@@ -52,10 +58,16 @@ SPEED_FACTOR = (0.0, 1.0e6)  # n d_m [mm r/min]
 LOAD_LEVEL = (-2.2, -0.3)  # log10 of |F| / (50 D_w^1.8 12^(2/3)) [N, mm]: a rough C; ~80 % above the minimum load
 
 
-def draw(rng, size: int, kind: str):
-    """(size, 8) random cases: D_w, γ, f_i, f_o, α₀, ω_i, F_r, F_a (SI)."""
+def fitting(bounds, count: int):
+    """(low, high) of D/d_m, `bounds` capped where `count` elements no longer fit on the pitch circle
+    with a cage bar between them: D < 0.95 d_m sin(π/Z) (the envelope's D < d_m sin(π/Z), refused beyond)."""
+    return bounds[0], min(bounds[1], 0.95 * math.sin(math.pi / count))
+
+
+def draw(rng, size: int, kind: str, count: int):
+    """(size, 8) random cases of `count` balls: D_w, γ, f_i, f_o, α₀, ω_i, F_r, F_a (SI)."""
     diameter = rng.uniform(*BALL_DIAMETER, size)
-    ratio = rng.uniform(*DIAMETER_RATIO, size)
+    ratio = rng.uniform(*fitting(DIAMETER_RATIO, count), size)
     pitch = diameter / ratio
     speed = rng.uniform(*SPEED_FACTOR, size) / (pitch * 1e3) * math.pi / 30.0
     rating = 50.0 * (diameter * 1e3) ** 1.8 * 12.0 ** (2.0 / 3.0)
@@ -139,7 +151,7 @@ def run_random(groups, size: int, rng, draw_cases, solver, classify_cases, eleme
     checked (`check_totals`) and returned."""
     totals = {}
     for kind, count in groups:
-        cases = draw_cases(rng, size, kind)
+        cases = draw_cases(rng, size, kind, count)
         out = jax.tree.map(np.asarray, solver(count, kind)(jnp.asarray(cases)))
         assert out["finite"].all(), (f"seed {SEED}: non-finite outputs for {kind}, {count} {elements}: "
                                      f"{cases[~out['finite']][:3].tolist()}")
@@ -179,10 +191,11 @@ ROLLER_SPEED_FACTOR = (0.0, 6.0e5)  # n d_m [mm r/min]
 ROLLER_LOAD_LEVEL = (-1.8, -0.2)  # log10 of |F| / (100 (D l)^(7/9) 12^(3/4)) [N, mm]: about half above the minimum load
 
 
-def draw_rollers(rng, size: int, kind: str):
-    """(size, 6) random cylindrical roller bearings: D, γ, l/D, diametral clearance, ω_i, F_r (SI)."""
+def draw_rollers(rng, size: int, kind: str, count: int):
+    """(size, 6) random cylindrical roller bearings of `count` rollers: D, γ, l/D, diametral
+    clearance, ω_i, F_r (SI)."""
     diameter = rng.uniform(*ROLLER_DIAMETER, size)
-    ratio = rng.uniform(*ROLLER_RATIO, size)
+    ratio = rng.uniform(*fitting(ROLLER_RATIO, count), size)
     length = rng.uniform(*ROLLER_LENGTH, size)
     speed = rng.uniform(*ROLLER_SPEED_FACTOR, size) / (diameter / ratio * 1e3) * math.pi / 30.0
     rating = 100.0 * (diameter * 1e3 * diameter * length * 1e3) ** (7.0 / 9.0) * 12.0 ** 0.75
@@ -237,6 +250,82 @@ def test_random_roller_bearings_large_profile():
     """400 cylindrical roller bearings: ≥ 99.9 % of those at or above the minimum load converge, the
     rest converge or report a reason."""
     run_roller_profile([("cylindrical_roller", 12), ("cylindrical_roller", 20)], 200)
+
+
+# --- bearing sets ----------------------------------------------------------------------------
+
+SET_ANGLE = (12.0, 40.0)  # deg: the angular-contact bearings of matched sets
+SET_WIDTH = (1.3, 2.2)  # bearing width / D_w: the catalogues' 70/72 series
+SET_PRELOAD = (-2.5, -1.0)  # log10 of the preload / the rough C (light to heavy spindle preloads)
+
+
+def draw_sets(rng, size: int, arrangement: str, count: int):
+    """(size, 11) random matched pairs: D_w, γ, f_i, f_o, α₀, ω_i, F_r, F_a, M, preload, width (SI;
+    no preload for a tandem pair, whose axial load is then +z, the way both bearings face)."""
+    cases = draw(rng, size, "angular_contact_ball", count)
+    diameter, pitch = cases[:, 0], cases[:, 0] / cases[:, 1]
+    cases[:, 4] = np.radians(rng.uniform(*SET_ANGLE, size))
+    rating = 50.0 * (diameter * 1e3) ** 1.8 * 12.0 ** (2.0 / 3.0)
+    tandem = arrangement == "tandem"
+    axial = cases[:, 7] * (1.0 if tandem else rng.choice([-1.0, 1.0], size))
+    moment = rng.uniform(-0.5, 0.5, size) * cases[:, 6] * pitch
+    preload = 0.0 if tandem else rating * 10.0 ** rng.uniform(*SET_PRELOAD, size)
+    width = diameter * rng.uniform(*SET_WIDTH, size)
+    return np.concatenate([cases[:, :7], np.stack([axial, moment, np.broadcast_to(preload, size), width], axis=1)],
+                          axis=1)
+
+
+def solve_set_case(case, count: int, arrangement: str):
+    """One matched pair through the blocks the set adapter runs (the preload as a force turned into
+    the offset the set holds, the shaft solve, both bearings' balls, the set's stiffness)."""
+    diameter, ratio, inner, outer, angle, speed, radial, axial, moment, preload, width = (case[i] for i in range(11))
+    bearing = ball_bearing(ball_diameter=diameter, pitch_diameter=diameter / ratio, balls=count,
+                           kind="angular_contact_ball", inner_groove_ratio=inner, outer_groove_ratio=outer,
+                           contact_angle=angle)
+    offset = 0.0 if arrangement == "tandem" else preload_offset(bearing, preload, SPEED_MODEL)
+    supports = bearing_set(bearing, arrangement, spacing=width, offset=offset, model=SPEED_MODEL)
+    shaft = Shaft(supports, ShaftLoads(jnp.zeros(1), jnp.stack([radial, 0.0, axial])[None],
+                                       jnp.stack([0.0, moment])[None]), speed)
+    solution = solve_shaft(shaft)
+    operating = Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2))
+    balls = [ball_equilibrium.ball_results(local, bearing, operating, SPEED_MODEL)
+             for local in solution.bearing_displacements]
+    outputs = (solution.displacement, solution.residual, shaft_stiffness(solution.displacement, shaft),
+               *solution.bearing_forces, *jax.tree.leaves(balls))
+    validity = jnp.stack([jnp.stack([
+        ball_validity.largest_approach_ratio(b.inner_approach, b.outer_approach, diameter),
+        ball_validity.largest_contact_angle(b.inner_contact_angle, b.outer_contact_angle, b.inner_load, b.outer_load),
+        low_shoulder_angle(bearing, b)]) for b in balls])
+    # a tandem pair shares its load: each bearing runs without a partner on its half of Fa
+    alone = Operating(speed, 0.0, jnp.stack([radial, 0.0, axial]), jnp.zeros(2))
+    return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
+            "residual": solution.residual, "approach": jnp.max(validity[:, 0]), "angle": jnp.max(validity[:, 1]),
+            "lowest": jnp.min(validity[:, 2]),
+            "light": jnp.asarray(False),
+            "without_partner": (missing_axial_load(bearing, alone) > 0.0) & (arrangement == "tandem"),
+            "below_minimum": jnp.asarray(False)}
+
+
+def run_set_profile(groups, size: int) -> dict:
+    def solver(count, arrangement):
+        return jax.jit(jax.vmap(lambda case: solve_set_case(case, count, arrangement)))
+
+    return run_random(groups, size, np.random.default_rng(SEED + 2), draw_sets, solver, classify, "balls")
+
+
+@pytest.mark.slow
+def test_random_bearing_sets_converge_or_say_why():
+    """Back-to-back pairs, preloaded, under random radial, axial and tilting loads at speed."""
+    run_set_profile([("back_to_back", 16)], 24)
+
+
+@pytest.mark.extended
+@pytest.mark.slow
+def test_random_bearing_sets_large_profile():
+    """Every arrangement: ≥ 99.9 % of the preloaded pairs (and the tandem pairs with the axial load
+    to run without a partner) converge, the rest converge or report a reason."""
+    run_set_profile([(arrangement, count) for arrangement in ("back_to_back", "face_to_face", "tandem")
+                     for count in (12, 20)], 200)
 
 
 # --- invalid values of scene keys ----------------------------------------------------------

@@ -97,9 +97,9 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     out = {"set.displacement": solution.displacement, "set.converged": solution.converged,
            "set.residual": solution.residual, "set.preload_force": preload, "set.preload_offset": offset}
     approach, angle, lowest = [], [], []
-    for number, (support, local, force) in enumerate(zip(supports, solution.bearing_displacements,
-                                                         solution.bearing_forces)):
-        balls = ball_results(local, bearing, operating, model)
+    for number, (support, local, force, centres) in enumerate(zip(supports, solution.bearing_displacements,
+                                                                  solution.bearing_forces, solution.ball_centres)):
+        balls = ball_results(local, bearing, operating, model, centres)
         prefix = f"set.bearings.{number}."
         azimuth = balls.azimuth if support.orientation > 0 else jnp.mod(-balls.azimuth, 2.0 * jnp.pi)
         out |= {prefix + "displacement": local, prefix + "force": force, prefix + "balls.azimuth": azimuth,
@@ -117,7 +117,7 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     out["set.validity.lowest_contact_angle"] = jnp.min(jnp.stack(lowest))
     out["set.validity.contact_angle"] = jax.lax.stop_gradient(jnp.max(jnp.stack(angle)))
     if settings["effects"].get("stiffness", False) is True:
-        out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft)
+        out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft, ball_centres=solution.ball_centres)
     return out
 
 

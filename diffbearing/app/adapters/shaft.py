@@ -189,10 +189,12 @@ def _supports(layout: ShaftLayout, settings: dict):
                                                                    layout.orientations))
 
 
-def _results(support, local, speed):
-    """The bearing's per-element results at its displacement: BallResults or RollerResults."""
+def _results(support, local, speed, ball_centres=None):
+    """The bearing's per-element results at its displacement (a ball bearing's balls at the solve's
+    `ball_centres` where it carried them): BallResults or RollerResults."""
     if isinstance(support, BallSupport):
-        return ball_results(local, support.bearing, Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)), support.model)
+        return ball_results(local, support.bearing, Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)), support.model,
+                            ball_centres)
     return roller_results(local, support.bearing, support.raceways,
                           RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed), support.model)
 
@@ -278,7 +280,8 @@ def _solve(layout: ShaftLayout, shaft: Shaft, stiffness: bool) -> dict:
                "shaft.deflection": jax.vmap(transfer)(nodes) @ solution.displacement,
                "shaft.displacement": transfer(layout.stiffness_at) @ solution.displacement}
         if stiffness:
-            out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at)
+            out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at,
+                                                     solution.ball_centres)
         return out
     flexible = FlexibleShaft(shaft, layout.sections, layout.stiffness_at, layout.mesh)
     solution = solve_flexible_shaft(flexible)
@@ -294,8 +297,8 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     shaft = Shaft(_supports(layout, settings), layout.loads, layout.speed)
     solved = _solve(layout, shaft, settings["effects"].get("stiffness", False) is True)
     solution = solved.pop("solution")
-    per_bearing = [_results(support, local, layout.speed)
-                   for support, local in zip(shaft.supports, solution.bearing_displacements)]
+    per_bearing = [_results(support, local, layout.speed, balls) for support, local, balls
+                   in zip(shaft.supports, solution.bearing_displacements, solution.ball_centres)]
     out = solved | {
         "shaft.converged": solution.converged,
         "shaft.residual": solution.residual,
