@@ -18,8 +18,9 @@ the bearings' nodes,
 
 (K_rr is regular: every node reaches a bearing's node along the beam). That leaves five unknowns
 per bearing node, solved as the rigid shaft's five are: the start is the minimum of the convex
-energy ½ U_bᵀ K_c U_b − F_c·U_b + Σ_k E_k(Δ_k), then damped Newton on the exact residual, and the
-implicit derivative of the root.
+energy ½ U_bᵀ K_c U_b − F_c·U_b + Σ_k E_k(Δ_k), then damped Newton on the exact residual (with
+speed effects on the nodes' and the balls' unknowns together, `shaft_equilibrium.solve_jointly`),
+and the implicit derivative of the root.
 
 The stiffness at node p (the load there against its displacement, every other node free and in
 equilibrium) is the Schur complement onto p of the tangent stiffness
@@ -38,8 +39,8 @@ from .numerics import require_float64
 from .params import _as_float, _is_concrete
 from .shaft_beam import NODE_DOFS, BeamMesh, ShaftSections, beam_mesh, node_positions, stiffness_matrix
 from .shaft_equilibrium import (DISPLACEMENT_SCALE, RESIDUAL_TOLERANCE, STATIC_GRADIENT_TOLERANCE, Shaft,
-                                ShaftEquilibrium, constant_tables, damped_newton, local_displacement, shaft_scales,
-                                support_energy, support_force, turned)
+                                ShaftEquilibrium, Structure, balls_solved_jointly, constant_tables, damped_newton,
+                                local_displacement, shaft_scales, solve_jointly, support_energy, support_force, turned)
 
 
 class FlexibleShaft(eqx.Module):
@@ -181,18 +182,27 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
         _static_energy, jnp.zeros(unknown.shape[0]), (flexible, unknown, weight, load_scale, None, stiffness, force),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (flexible, unknown, weight, load_scale, tables, stiffness, force)
-    y, steps = implicit_root(_residual, jax.lax.stop_gradient(start), args, damped_newton, least_squares_tangent_solve,
-                             has_aux=True)
+    start = jax.lax.stop_gradient(start)
+    if not any(balls_solved_jointly(shaft.supports)):
+        y, steps = implicit_root(_residual, start, args, damped_newton, least_squares_tangent_solve, has_aux=True)
+        centres = (None,) * len(shaft.supports)
+        residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
+    else:  # the bearing nodes and the balls together (`shaft_equilibrium.solve_jointly`)
+        _, slots, _, _ = _structure(flexible)
+        picks = jnp.eye(unknown.shape[0])
+        moves = tuple(turned(support)[:, None] * picks[NODE_DOFS * slot:NODE_DOFS * (slot + 1)]
+                      for slot, support in zip(slots, shaft.supports))
+        y, centres, steps, residual = solve_jointly(start, shaft.supports, shaft.speed, tables,
+                                                    Structure(stiffness, force, moves), unknown, weight, load_scale)
     u_b = unknown * y
     locals_ = _bearing_locals(u_b, flexible)
-    forces = tuple(support_force(local, support, shaft.speed, table)
-                   for local, support, table in zip(locals_, shaft.supports, tables))
+    forces = tuple(support_force(local, support, shaft.speed, table, balls)
+                   for local, support, table, balls in zip(locals_, shaft.supports, tables, centres))
     nodes = recover(u_b)
-    residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
     return FlexibleShaftEquilibrium(
         displacement=nodes[reference_node], bearing_displacements=locals_, bearing_forces=forces,
         converged=residual < RESIDUAL_TOLERANCE, residual=residual, static_steps=static_steps,
-        steps=steps.astype(static_steps.dtype), ball_centres=(None,) * len(shaft.supports),
+        steps=steps.astype(static_steps.dtype), ball_centres=centres,
         nodes=node_positions(flexible.mesh, flexible.sections, points(flexible)),
         node_displacements=nodes)
 
@@ -202,10 +212,10 @@ def flexible_shaft_stiffness(solution: FlexibleShaftEquilibrium, flexible: Flexi
     its node of the tangent stiffness of beam and bearings (module docstring; exact, jacfwd)."""
     bearing_nodes, slots, _, reference_node = _structure(flexible)
     tangent = stiffness_matrix(flexible.mesh, flexible.sections, points(flexible))
-    for slot, local, support, table in zip(slots, solution.bearing_displacements, flexible.shaft.supports,
-                                           constant_tables(flexible.shaft)):
+    for slot, local, support, table, balls in zip(slots, solution.bearing_displacements, flexible.shaft.supports,
+                                                  constant_tables(flexible.shaft), solution.ball_centres):
         sign = turned(support)
-        bearing = jax.jacfwd(support_force)(local, support, flexible.shaft.speed, table)
+        bearing = jax.jacfwd(support_force)(local, support, flexible.shaft.speed, table, balls)
         index = _dofs([bearing_nodes[slot]])
         tangent = tangent.at[np.ix_(index, index)].add(sign[:, None] * bearing * sign[None, :])
     kept = _dofs([reference_node])

@@ -265,77 +265,95 @@ def damped_newton(residual, start, args):
     return y, steps.astype(y.dtype)
 
 
-def _balls_solved_jointly(support) -> bool:
-    """Whether the joint solve carries this bearing's balls as unknowns (a ball bearing with speed
-    effects, whose balls leave the static split)."""
-    return isinstance(support, BallSupport) and support.model.speed_effects
+def balls_solved_jointly(supports) -> tuple[bool, ...]:
+    """Per support, whether `solve_jointly` carries its balls as unknowns: a ball bearing with speed
+    effects, whose balls leave the static split."""
+    return tuple(isinstance(support, BallSupport) and support.model.speed_effects for support in supports)
 
 
-def _at_speed_fraction(shaft: Shaft, fraction) -> Shaft:
-    return eqx.tree_at(lambda s: s.speed, shaft, fraction * shaft.speed)
+class Structure(eqx.Module):
+    """What the bearings are mounted on, linear in its unknowns U (n,) [m, rad]: its stiffness
+    (n, n) and the applied load (n,) [N, N·m] (a rigid shaft's: none and the loads moved to z = 0),
+    and per bearing the map `moves[k]` (5, n) to its inner ring's displacement, Δ_k = M_k U +
+    (e_k + c_k) ẑ (a rigid shaft's P_k G(z_k); a flexible one's P_k times its node's five).
+    In equilibrium K U − F + Σ_k M_kᵀ F_k(Δ_k) = 0."""
+
+    stiffness: jax.Array
+    load: jax.Array
+    moves: tuple
+
+
+def _local(unknowns, support, move):
+    """Δ_k [m, rad] of the structure's displacement U: M_k U + (e_k + c_k) ẑ."""
+    return move @ unknowns + local_displacement(jnp.zeros(5), support)
+
+
+def structure_residual(y, supports, speed, tables, structure: Structure, unknown, weight, load_scale, ball_centres):
+    """(K U − F + Σ_k M_kᵀ F_k(Δ_k)) · w / load scale at U = s·y, each bearing's balls at
+    `ball_centres` where given (their implicit derivative kept), else solved at Δ_k."""
+    u = unknown * y
+    out = structure.stiffness @ u - structure.load
+    for support, table, move, balls in zip(supports, tables, structure.moves, ball_centres):
+        out = out + move.T @ support_force(_local(u, support, move), support, speed, table, balls)
+    return out * weight / load_scale
 
 
 def _joint_step(unknowns, args):
-    """Newton step (−dy, −dX_k) of the shaft and the balls of every bearing with speed effects
+    """Newton step (−dy, −dX_k) of the structure and the balls of every bearing with speed effects
     together, (y, per bearing its ball centres (Z, 2) [m] or None).
 
     Each such bearing's balls are condensed onto its ring (`ball_equilibrium.condensed_balls`: its
     force and stiffness with the balls' equations eliminated to first order); any other bearing
-    gives its ring force and stiffness (`jax.jacfwd`). The shaft's Jacobian is then
-    Σ_k G_kᵀ P_k S_k P_k G_k (Δ_k = P_k G_k u + const), and the balls follow the shaft's step.
+    gives its ring force and stiffness (`jax.jacfwd`). The Jacobian is K + Σ_k M_kᵀ S_k M_k, and
+    the balls follow the structure's step.
     """
     y, positions = unknowns
-    shaft, unknown, weight, load_scale, tables = args
+    supports, speed, tables, structure, unknown, weight, load_scale = args
     u = unknown * y
-    force, stiffness, moves, condensed = -applied_load(shaft), jnp.zeros((5, 5)), [], []
-    for support, balls, table in zip(shaft.supports, positions, tables):
-        local = support_displacement(u, support)
-        move = turned(support)[:, None] * transfer(support.position)  # dΔ_k/du = P_k G_k
+    force, stiffness, condensed = structure.stiffness @ u - structure.load, structure.stiffness, []
+    for support, balls, table, move in zip(supports, positions, tables, structure.moves):
+        local = _local(u, support, move)
         if balls is None:
-            own = support_force(local, support, shaft.speed, table)
-            own_stiffness = jax.jacfwd(support_force)(local, support, shaft.speed, table)
+            own = support_force(local, support, speed, table)
+            own_stiffness = jax.jacfwd(support_force)(local, support, speed, table)
             condensed.append(None)
         else:
-            found = ball_equilibrium.condensed_balls(local, balls, support.bearing, _operating(support, shaft.speed),
+            found = ball_equilibrium.condensed_balls(local, balls, support.bearing, _operating(support, speed),
                                                      support.model, table)
             own, own_stiffness = found.condensed_force, found.condensed_stiffness
             condensed.append(found)
         force = force + move.T @ own
         stiffness = stiffness + move.T @ own_stiffness @ move
-        moves.append(move)
     dy = guarded_solve((weight / load_scale)[:, None] * stiffness * unknown[None, :], force * weight / load_scale)
-    # the shaft moves by −unknown·dy; each bearing's balls by −J_XX⁻¹ g − J_XX⁻¹ J_XΔ dΔ_k
+    # the structure moves by −s·dy; each bearing's balls by −J_XX⁻¹ g − J_XX⁻¹ J_XΔ dΔ_k
     ball_steps = tuple(None if found is None else
                        -(found.ball_correction - found.ball_coupling @ (move @ (unknown * dy)))
-                       for found, move in zip(condensed, moves))
+                       for found, move in zip(condensed, structure.moves))
     return -dy, ball_steps
 
 
 def _joint_solve(start, args):
-    """(y, per bearing its ball centres or None, steps) of the shaft and the balls together
+    """(y, per bearing its ball centres or None, steps) of the structure and the balls together
     (`_joint_step`), from the static solution `start`, continued in speed as one bearing's ring
     solve is (`ball_equilibrium._ring_solve`): the speed rises in `ball_equilibrium.SPEED_STAGES`,
-    each stage's Newton from the last one's solution, the balls first solved at the start's shaft
-    position at the first stage's speed (`ball_equilibrium.ball_positions`), a stage that fails
-    keeping the last solution. Solving the balls inside each shaft step instead (a ring force of
-    the shaft's displacement alone) makes that force jump where a ball, released by its inner
-    ring, falls to the bottom of its outer groove, and the shaft's Newton stalls (measured: a
-    preloaded pair at 2.3e4 r/min under random loads, residual 0.13). Without line search; each
-    ball's step limited to a tenth of its radius (`ball_equilibrium.limited_ball_step`); each
-    stage stops when every shaft step component is below `ball_equilibrium.RING_STEP_TOLERANCE`
-    (1 + |y|) and every ball step below `ball_equilibrium.BALL_POSITION_TOLERANCE` D_w."""
-    shaft, unknown, weight, load_scale, tables = args
+    each stage's Newton from the last one's solution, the balls first solved at the start at the
+    first stage's speed (`ball_equilibrium.ball_positions`), a stage that fails keeping the last
+    solution. Without line search; each ball's step limited to a tenth of its radius
+    (`ball_equilibrium.limited_ball_step`); each stage stops when every structure step component
+    is below `ball_equilibrium.RING_STEP_TOLERANCE` (1 + |y|) and every ball step below
+    `ball_equilibrium.BALL_POSITION_TOLERANCE` D_w."""
+    supports, speed, tables, structure, unknown, weight, load_scale = args
     fractions = jnp.asarray(ball_equilibrium.SPEED_STAGES)
-    first = _at_speed_fraction(shaft, fractions[0])
-    positions = tuple(ball_equilibrium.ball_positions(support_displacement(unknown * start, support), support.bearing,
-                                                      _operating(support, first.speed), support.model, table)
-                      if _balls_solved_jointly(support) else None
-                      for support, table in zip(shaft.supports, tables))
-    supports, ring = shaft.supports, ball_equilibrium.RING_STEP_TOLERANCE
+    jointly = balls_solved_jointly(supports)
+    positions = tuple(ball_equilibrium.ball_positions(_local(unknown * start, support, move), support.bearing,
+                                                      _operating(support, fractions[0] * speed), support.model, table)
+                      if joint else None
+                      for support, table, move, joint in zip(supports, tables, structure.moves, jointly))
 
     def per_bearing(value):
-        return tuple(value(support) if _balls_solved_jointly(support) else None for support in supports)
+        return tuple(value(support) if joint else None for support, joint in zip(supports, jointly))
 
+    ring = ball_equilibrium.RING_STEP_TOLERANCE
     tolerance = ((ring, per_bearing(lambda s: ball_equilibrium.BALL_POSITION_TOLERANCE * s.bearing.ball_diameter)),
                  (ring, per_bearing(lambda s: 0.0)))
 
@@ -344,7 +362,7 @@ def _joint_solve(start, args):
                               for support, balls in zip(supports, step[1]))
 
     def stage(unknowns, fraction):
-        staged = (_at_speed_fraction(shaft, fraction), unknown, weight, load_scale, tables)
+        staged = (supports, fraction * speed, tables, structure, unknown, weight, load_scale)
         solved, steps = newton(None, unknowns, staged, linear_step=_joint_step, limit=limit, step_tolerance=tolerance,
                                max_steps=ball_equilibrium.RING_MAX_STEPS, loop="while", line_search=False)
         reached = ((steps < ball_equilibrium.RING_MAX_STEPS)
@@ -356,10 +374,37 @@ def _joint_solve(start, args):
 
 
 def _residual_at_balls(y, args):
-    """`_residual` with each jointly solved bearing's balls at their solved centres (the last of
-    `args`), their implicit derivative kept: the residual whose root the joint solve found."""
-    shaft, unknown, weight, load_scale, tables, centres = args
-    return (shaft_force(unknown * y, shaft, tables, centres) - applied_load(shaft)) * weight / load_scale
+    supports, speed, tables, structure, unknown, weight, load_scale, centres = args
+    return structure_residual(y, supports, speed, tables, structure, unknown, weight, load_scale, centres)
+
+
+def solve_jointly(start, supports, speed, tables, structure: Structure, unknown, weight, load_scale):
+    """(y, ball centres per bearing (None where not carried), steps, largest residual) of bearings
+    with speed effects on a linear structure: the structure's unknowns and every such bearing's
+    ball centres solved together (`_joint_solve`) from the static solution `start` (scaled,
+    U = s·y), the root's derivative taken at the solved balls (their implicit derivative: no ball
+    Newton traced but the start's). The residual is the largest of the scaled structure residual
+    and each ball's own relative balance (`ball_equilibrium.relative_ball_residual`).
+
+    Solving each bearing's balls inside every step of the structure's Newton instead (a ring force
+    of Δ_k alone, `support_force`) makes that force jump where a ball, released by its inner ring,
+    drops to the bottom of its outer groove, and the Newton stalls there (measured: a preloaded
+    back-to-back pair at 2.3e4 r/min under random loads, residual 0.13; solved together it
+    converges in 24 steps)."""
+    args = (supports, speed, tables, structure, unknown, weight, load_scale)
+    solved, centres, steps = jax.lax.stop_gradient(_joint_solve(start, args))
+    args = (*args, centres)
+    y = implicit_root(_residual_at_balls, solved, args, lambda residual, guess, args: guess,
+                      least_squares_tangent_solve)
+    residual = jnp.max(jnp.abs(_residual_at_balls(y, args)))
+    for support, table, move, balls in zip(supports, tables, structure.moves, centres):
+        if balls is not None:  # each ball's own balance, as one bearing's solve checks it
+            operating = _operating(support, speed)
+            grooves = ball_equilibrium.inner_groove_centres(support.bearing, _local(unknown * y, support, move))
+            state = ball_equilibrium.ball_state(support.bearing, operating, grooves, balls, support.model, table=table)
+            residual = jnp.maximum(residual, ball_equilibrium.relative_ball_residual(
+                support.bearing, operating, grooves, state, support.model, load_scale))
+    return y, centres, steps, jax.lax.stop_gradient(residual)
 
 
 class ShaftEquilibrium(eqx.Module):
@@ -394,28 +439,19 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (shaft, unknown, weight, load_scale, tables)
     start = jax.lax.stop_gradient(start)
-    if not any(_balls_solved_jointly(support) for support in shaft.supports):
+    if not any(balls_solved_jointly(shaft.supports)):
         y, steps = implicit_root(_residual, start, args, damped_newton, least_squares_tangent_solve, has_aux=True)
         centres = (None,) * len(shaft.supports)
-        residual = jnp.max(jnp.abs(_residual(y, args)))
-    else:  # the shaft and the balls together (`_joint_solve`); the root's derivative at the solved balls
-        solved, centres, steps = jax.lax.stop_gradient(_joint_solve(start, args))
-        args = (*args, centres)
-        y = implicit_root(_residual_at_balls, solved, args, lambda residual, guess, args: guess,
-                          least_squares_tangent_solve)
-        residual = jnp.max(jnp.abs(_residual_at_balls(y, args)))
+        residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
+    else:  # the shaft and the balls together
+        structure = Structure(jnp.zeros((5, 5)), applied_load(shaft),
+                              tuple(turned(support)[:, None] * transfer(support.position) for support in shaft.supports))
+        y, centres, steps, residual = solve_jointly(start, shaft.supports, shaft.speed, tables, structure, unknown,
+                                                    weight, load_scale)
     u = unknown * y
     locals_ = tuple(support_displacement(u, support) for support in shaft.supports)
     forces = tuple(support_force(local, support, shaft.speed, table, balls)
                    for local, support, table, balls in zip(locals_, shaft.supports, tables, centres))
-    for local, support, table, balls in zip(locals_, shaft.supports, tables, centres):
-        if balls is not None:  # each ball's own balance, as one bearing's solve checks it
-            operating = _operating(support, shaft.speed)
-            grooves = ball_equilibrium.inner_groove_centres(support.bearing, local)
-            state = ball_equilibrium.ball_state(support.bearing, operating, grooves, balls, support.model, table=table)
-            residual = jnp.maximum(residual, ball_equilibrium.relative_ball_residual(
-                support.bearing, operating, grooves, state, support.model, load_scale))
-    residual = jax.lax.stop_gradient(residual)
     return ShaftEquilibrium(u, locals_, forces, residual < RESIDUAL_TOLERANCE, residual, static_steps,
                             steps.astype(static_steps.dtype), centres)
 
