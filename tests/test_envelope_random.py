@@ -35,6 +35,8 @@ import pytest
 from diffbearing import ball_equilibrium, ball_validity, build_model, life, load_scene
 from diffbearing.bearing_set import bearing_set, preload_offset
 from diffbearing.app.adapters.ball import centrifugal_ratio, low_shoulder_angle, missing_axial_load
+from diffbearing.app.adapters.bearing_set import centrifugal_ratio as set_centrifugal_ratio
+from diffbearing.app.adapters.bearing_set import tandem_missing_axial_load
 from diffbearing.app.registry import all_keys
 from diffbearing.app.scene import read_document
 from diffbearing.minimum_load import BALL_MINIMUM_LOAD_RATIO, ROLLER_MINIMUM_LOAD_RATIO
@@ -277,7 +279,9 @@ def draw_sets(rng, size: int, arrangement: str, count: int):
 
 def solve_set_case(case, count: int, arrangement: str):
     """One matched pair through the blocks the set adapter runs (the preload as a force turned into
-    the offset the set holds, the shaft solve, both bearings' balls, the set's stiffness)."""
+    the offset the set holds, the shaft solve, both bearings' balls, the set's stiffness), with the
+    reasons its checks give (adapters/bearing_set.py `_checks`): a centrifugal force above the load
+    per ball, a tandem pair short of axial load."""
     diameter, ratio, inner, outer, angle, speed, radial, axial, moment, preload, width = (case[i] for i in range(11))
     bearing = ball_bearing(ball_diameter=diameter, pitch_diameter=diameter / ratio, balls=count,
                            kind="angular_contact_ball", inner_groove_ratio=inner, outer_groove_ratio=outer,
@@ -288,22 +292,23 @@ def solve_set_case(case, count: int, arrangement: str):
                                        jnp.stack([0.0, moment])[None]), speed)
     solution = solve_shaft(shaft)
     operating = Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2))
-    balls = [ball_equilibrium.ball_results(local, bearing, operating, SPEED_MODEL)
-             for local in solution.bearing_displacements]
-    outputs = (solution.displacement, solution.residual, shaft_stiffness(solution.displacement, shaft),
+    balls = [ball_equilibrium.ball_results(local, bearing, operating, SPEED_MODEL, centres)
+             for local, centres in zip(solution.bearing_displacements, solution.ball_centres)]
+    outputs = (solution.displacement, solution.residual,
+               shaft_stiffness(solution.displacement, shaft, ball_centres=solution.ball_centres),
                *solution.bearing_forces, *jax.tree.leaves(balls))
     validity = jnp.stack([jnp.stack([
         ball_validity.largest_approach_ratio(b.inner_approach, b.outer_approach, diameter),
         ball_validity.largest_contact_angle(b.inner_contact_angle, b.outer_contact_angle, b.inner_load, b.outer_load),
         low_shoulder_angle(bearing, b)]) for b in balls])
-    # a tandem pair shares its load: each bearing runs without a partner on its half of Fa
-    alone = Operating(speed, 0.0, jnp.stack([radial, 0.0, axial]), jnp.zeros(2))
+    force = jnp.stack([radial, 0.0, axial])
+    standstill_preload = 0.0 if arrangement == "tandem" else preload
+    light = set_centrifugal_ratio(balls, force, standstill_preload) > 1.0
+    short = tandem_missing_axial_load(bearing, force, jnp.stack([0.0, moment]), width, arrangement) > 0.0
     return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
             "residual": solution.residual, "approach": jnp.max(validity[:, 0]), "angle": jnp.max(validity[:, 1]),
-            "lowest": jnp.min(validity[:, 2]),
-            "light": jnp.asarray(False),
-            "without_partner": (missing_axial_load(bearing, alone) > 0.0) & (arrangement == "tandem"),
-            "below_minimum": jnp.asarray(False)}
+            "lowest": jnp.min(validity[:, 2]), "light": light, "without_partner": short,
+            "below_minimum": light & (speed > 0.0)}
 
 
 def run_set_profile(groups, size: int) -> dict:

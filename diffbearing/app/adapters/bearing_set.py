@@ -19,8 +19,8 @@ from ...shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_st
 from ..formatting import format_number, stiffness_lines, swept_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .ball import ADAPTER as BALL_ADAPTER
-from .ball import (ISO76_BALL_PRESSURE_LIMIT, ball_model, catalogue_bearing, low_shoulder_angle, shoulder_checks,
-                   shoulder_outputs, validity_errors)
+from .ball import (ISO76_BALL_PRESSURE_LIMIT, PARTNER_AXIAL_FACTOR, ball_model, catalogue_bearing, light_at_speed,
+                   low_shoulder_angle, shoulder_checks, shoulder_outputs, validity_errors)
 from .materials import material
 
 SET = ("bearing.arrangement",)  # the set's layout
@@ -86,6 +86,28 @@ def _offsets(bearing, layout: SetLayout, model):
     return offset, clamped_offset(matched, bearing, offset), preload
 
 
+def centrifugal_ratio(balls, force, preload) -> jax.Array:
+    """The set's balls' largest centrifugal force over the load per ball, (|F| + 2 P) / 2Z [-] (0
+    without the centrifugal effect): far above 1 the speed lifts the balls off the inner raceways
+    (`balls`: both bearings' `BallResults`; P the preload at standstill [N])."""
+    if balls[0].centrifugal_force is None:
+        return jnp.zeros(())
+    per_ball = (jnp.linalg.norm(force) + 2.0 * preload) / (2 * balls[0].centrifugal_force.shape[-1])
+    largest = jnp.max(jnp.stack([jnp.max(b.centrifugal_force) for b in balls]))
+    return jax.lax.stop_gradient(largest / jnp.maximum(per_ball, 1e-300))
+
+
+def tandem_missing_axial_load(bearing, force, moment, spacing, arrangement: str) -> jax.Array:
+    """max(0, 1.25 (F_r + 2|M|/s) tan α₀ − F_z) [N] of a tandem pair (0 for the others): each of its
+    bearings carries F_z/2 and F_r/2 ± |M|/s radially (s the centre distance), and one of them runs
+    only against a partner below 1.25 tan α₀ times its radial load (`ball.missing_axial_load`)."""
+    if arrangement != "tandem":
+        return jnp.zeros(())
+    radial = jnp.linalg.norm(force[:2]) + 2.0 * jnp.linalg.norm(moment) / spacing
+    return jax.lax.stop_gradient(jnp.maximum(
+        PARTNER_AXIAL_FACTOR * radial * jnp.tan(bearing.free_contact_angle) - force[2], 0.0))
+
+
 def _set(inputs: dict, settings: dict, results: dict) -> dict:
     model = ball_model(settings)
     bearing, operating, layout = inputs["bearing"], inputs["operating"], inputs["bearing_set"]
@@ -96,10 +118,11 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     solution = solve_shaft(shaft)
     out = {"set.displacement": solution.displacement, "set.converged": solution.converged,
            "set.residual": solution.residual, "set.preload_force": preload, "set.preload_offset": offset}
-    approach, angle, lowest = [], [], []
+    approach, angle, lowest, every = [], [], [], []
     for number, (support, local, force, centres) in enumerate(zip(supports, solution.bearing_displacements,
                                                                   solution.bearing_forces, solution.ball_centres)):
         balls = ball_results(local, bearing, operating, model, centres)
+        every.append(balls)
         prefix = f"set.bearings.{number}."
         azimuth = balls.azimuth if support.orientation > 0 else jnp.mod(-balls.azimuth, 2.0 * jnp.pi)
         out |= {prefix + "displacement": local, prefix + "force": force, prefix + "balls.azimuth": azimuth,
@@ -116,6 +139,9 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     out["set.validity.approach_ratio"] = jax.lax.stop_gradient(jnp.max(jnp.stack(approach)))
     out["set.validity.lowest_contact_angle"] = jnp.min(jnp.stack(lowest))
     out["set.validity.contact_angle"] = jax.lax.stop_gradient(jnp.max(jnp.stack(angle)))
+    out["set.validity.centrifugal_ratio"] = centrifugal_ratio(every, operating.force, preload)
+    out["set.validity.missing_axial_load"] = tandem_missing_axial_load(bearing, operating.force, operating.moment,
+                                                                       layout.spacing, layout.arrangement)
     if settings["effects"].get("stiffness", False) is True:
         out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft, ball_centres=solution.ball_centres)
     return out
@@ -129,8 +155,13 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
     errors = validity_errors(values["set.validity.approach_ratio"], values["set.validity.contact_angle"], "set",
                              values["set.validity.lowest_contact_angle"])
     if not errors and not bool(values["set.converged"]):
+        missing = float(values["set.validity.missing_axial_load"])
+        reason = light_at_speed({"validity.centrifugal_ratio": values["set.validity.centrifugal_ratio"]}) or (
+            f": the axial load is {missing:.4g} N short of 1.25 (F_r + 2|M|/s) tan α₀, below which one bearing of a "
+            "tandem pair runs only against a partner — a third bearing or a back_to_back pair"
+            if missing > 0.0 else "")
         errors.append(f"shaft equilibrium of the set did not converge: largest scaled residual "
-                      f"{float(values['set.residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})")
+                      f"{float(values['set.residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})" + reason)
     for number in range(SET_SIZE):
         prefix = f"set.bearings.{number}."
         if prefix + "validity.shoulder_overrun" in values:
@@ -226,6 +257,10 @@ SET_BLOCK = Block(
         Output("set.validity.contact_angle", "rad", "deg", "largest |contact angle| in the set", in_report=False),
         Output("set.validity.lowest_contact_angle", "rad", "deg", "lowest loaded contact angle in the set (model "
                                                                   "limit 0: the low shoulder)", in_report=False),
+        Output("set.validity.centrifugal_ratio", "", "", "largest ball centrifugal force over the load per ball "
+               "(|F| + 2 preload) / 2Z (0 without the centrifugal effect)", in_report=False),
+        Output("set.validity.missing_axial_load", "N", "N", "axial load a tandem pair lacks: max(0, 1.25 (F_r + 2|M|/s) "
+               "tan α₀ − F_z) (0 for the other arrangements)", in_report=False),
         Output("set.stiffness", "N/m, N/rad, N*m/m, N*m/rad", "", "5×5 stiffness of the set at its middle (exact)",
                effect="stiffness", in_report=False),
         *(output for number in range(SET_SIZE) for output in _bearing_outputs(number)),
