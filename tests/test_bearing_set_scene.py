@@ -199,3 +199,34 @@ def test_hybrid_set_says_its_ratings_are_all_steel():
     result = run(["effects.safety=true", "material.ball_preset=silicon_nitride"])
     assert float(result.values["safety.hybrid"]) == 1.0
     assert any("hybrid bearing" in line for line in result.problems[1])
+
+
+@pytest.mark.parametrize("ratio, missing, reason", [
+    (3.0, 0.0, "each ball's centrifugal force is 3× the applied load per ball"),
+    (0.5, 120.0, "the axial load is 120 N short of 1.25 (F_r + 2|M|/s) tan α₀"),
+    (0.5, 0.0, None),
+])
+def test_an_unconverged_set_says_why(ratio, missing, reason):
+    """The set's check names the reason a solve did not converge (its balls lifted by their
+    centrifugal force, a tandem pair short of axial load), or none; and the tandem pair's missing
+    axial load is 1.25 (F_r + 2|M|/s) tan α₀ − F_z: 1.25 (300 + 2·6/0.03) tan 30° − 200 = 305.2 N."""
+    from diffbearing.app.adapters.bearing_set import _checks, tandem_missing_axial_load
+    from diffbearing.params import ball_bearing
+
+    values = {"set.validity.approach_ratio": 1e-3, "set.validity.contact_angle": 0.5,
+              "set.validity.lowest_contact_angle": 0.3, "set.converged": False, "set.residual": 0.1,
+              "set.validity.centrifugal_ratio": ratio, "set.validity.missing_axial_load": missing,
+              "set.preload_force": 0.0}
+    for number in range(2):
+        values |= {f"set.bearings.{number}.balls.{side}.max_pressure": np.full(12, 1e9) for side in ("inner", "outer")}
+        values[f"set.bearings.{number}.balls.inner.load"] = np.full(12, 100.0)
+    errors, _ = _checks(values)
+    assert len(errors) == 1 and errors[0].startswith("shaft equilibrium of the set did not converge: largest scaled "
+                                                     "residual 1.0e-01 (tolerance 1e-09)")
+    assert (reason in errors[0]) if reason else errors[0].endswith("(tolerance 1e-09)")
+    bearing = ball_bearing(ball_diameter=0.01, pitch_diameter=0.06, balls=12, kind="angular_contact_ball",
+                           inner_groove_ratio=0.52, outer_groove_ratio=0.53, contact_angle=np.radians(30.0))
+    short = tandem_missing_axial_load(bearing, np.array([300.0, 0.0, 200.0]), np.array([6.0, 0.0]), 0.03, "tandem")
+    assert float(short) == pytest.approx(1.25 * (300.0 + 400.0) * np.tan(np.radians(30.0)) - 200.0, rel=1e-12)
+    assert float(tandem_missing_axial_load(bearing, np.array([300.0, 0.0, 200.0]), np.array([6.0, 0.0]), 0.03,
+                                           "back_to_back")) == 0.0

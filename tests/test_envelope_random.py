@@ -14,7 +14,8 @@ axial load short of 1.25 F_r tan α₀, `without_partner`). The fast profile run
 (2000 ball and 400 cylindrical roller bearings) in the extended suite. Matched pairs of
 angular-contact bearings (back-to-back, face-to-face preloaded, tandem) under random radial,
 axial and tilting loads at speed: 24 back-to-back pairs in the slow suite, 1200 pairs of every
-arrangement in the extended one. Every draw keeps its rolling elements on the pitch circle with
+arrangement in the extended one; and 400 angular-contact bearings with their tilts free (no
+moment given) in the extended one. Every draw keeps its rolling elements on the pitch circle with
 room for a cage bar (`fitting`).
 
 Invalid scene values (hypothesis): any quantity key of the packaged examples given a wrong unit,
