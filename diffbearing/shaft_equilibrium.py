@@ -26,7 +26,8 @@ Solution, as for one bearing: the start is the minimum of the convex static ener
 Σ_k E_k(Δ_k(u)) − F·u (each E_k with its contact constants at the free contact angle; no
 guess needed), then damped Newton on the exact residual (dense Jacobian through the bearings'
 implicit solves, regularised by 1e-12 of its diagonal so that a direction no bearing resists keeps
-the step finite), and the implicit derivative of the root (least squares: finite where the
+the step finite) — with speed effects on the shaft's and the balls' unknowns together
+(`solve_jointly`) — and the implicit derivative of the root (least squares: finite where the
 stiffness is singular). The system stiffness is `jax.jacfwd` of the shaft force; at another point
 z_p it is G(−z_p)ᵀ K G(−z_p).
 
