@@ -270,6 +270,58 @@ def test_random_roller_bearings_large_profile():
     run_roller_profile([("cylindrical_roller", 12), ("cylindrical_roller", 20)], 200)
 
 
+TAPER = (0.08, 0.2)  # (large − small) / mean roller diameter
+CONE_HALF_ANGLE = (1.5, 3.0)  # deg
+CUP_ANGLE = (10.0, 25.0)  # deg: the medium to steep series
+AXIAL_MARGIN = (1.1, 4.0)  # F_z / (F_r tan α_o): above 1 an equilibrium exists (below, refused)
+
+
+def draw_tapered(rng, size: int, kind: str, count: int):
+    """(size, 10) random tapered roller bearings of `count` rollers: mean D, γ, l/D, diametral
+    clearance (≤ 0: adjusted), ω_i, F_r, taper, cup angle α_o, F_z, cone half angle (SI)."""
+    cases = draw_rollers(rng, size, "cylindrical_roller", count)
+    cases[:, 3] = -rng.uniform(0.0, 2e-4, size) * cases[:, 0] / cases[:, 1]
+    cup = np.radians(rng.uniform(*CUP_ANGLE, size))
+    axial = cases[:, 5] * np.tan(cup) * rng.uniform(*AXIAL_MARGIN, size)
+    half_angle = np.radians(rng.uniform(*CONE_HALF_ANGLE, size))
+    return np.concatenate([cases, np.stack([rng.uniform(*TAPER, size), cup, axial, half_angle], axis=1)], axis=1)
+
+
+def solve_tapered_case(case, count: int, kind: str):
+    """One tapered roller bearing with its tilts held, through the blocks the roller adapter runs."""
+    diameter, ratio, length_ratio, clearance, speed, radial, taper, cup, axial, half_angle = (case[i] for i in range(10))
+    length = diameter * length_ratio
+    profile = roller_profile("circular", length=length, flat_length=0.8 * length, crown_radius=50.0 * diameter)
+    bearing = roller_bearing(kind="tapered_roller", length=length, small_diameter=diameter * (1.0 - 0.5 * taper),
+                             large_diameter=diameter * (1.0 + 0.5 * taper), cone_half_angle=half_angle, profile=profile,
+                             roller_count=count)
+    raceways = roller_raceways(bearing, pitch_diameter=diameter / ratio, diametral_clearance=clearance, cup_angle=cup)
+    force = jnp.stack([radial, 0.0, axial])
+    operating = RollerOperating(force, jnp.zeros(2), inner_speed=speed, misalignment=jnp.zeros(2))
+    solution = solve_roller_equilibrium(bearing, raceways, operating, ROLLER_MODEL)
+    rollers = roller_results(solution.displacement, bearing, raceways, operating, ROLLER_MODEL)
+    stiffness = roller_stiffness_matrix(solution.displacement, bearing, raceways, operating, ROLLER_MODEL)
+    outputs = (solution.displacement, solution.force, solution.residual, stiffness, *jax.tree.leaves(rollers))
+    rating = roller_dynamic_load_rating(count, diameter, length, raceways.cup_angle, raceways.pitch_diameter)
+    equivalent = roller_equivalent_dynamic_load(force, raceways.cup_angle)
+    light = roller_centrifugal_force(bearing, raceways, operating) > jnp.linalg.norm(force) / count
+    return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
+            "residual": solution.residual, "approach": rollers.largest_approach / diameter, "light": light,
+            "below_minimum": ((equivalent < ROLLER_MINIMUM_LOAD_RATIO * rating) | light) & (speed > 0.0)}
+
+
+def run_tapered_profile(groups, size: int) -> dict:
+    def solver(count, kind):
+        return jax.jit(jax.vmap(lambda case: solve_tapered_case(case, count, kind)))
+
+    return run_random(groups, size, np.random.default_rng(SEED + 4), draw_tapered, solver, classify_rollers, "rollers")
+
+
+@pytest.mark.slow
+def test_random_tapered_roller_bearings_converge_or_say_why():
+    run_tapered_profile([("tapered_roller", 16)], 24)
+
+
 # --- bearing sets ----------------------------------------------------------------------------
 
 SET_ANGLE = (12.0, 40.0)  # deg: the angular-contact bearings of matched sets
