@@ -229,7 +229,13 @@ def solve_roller_case(case, count: int, kind: str):
     profile = roller_profile("circular", length=length, flat_length=0.8 * length, crown_radius=50.0 * diameter)
     bearing = roller_bearing(kind=kind, length=length, diameter=diameter, profile=profile, roller_count=count)
     raceways = roller_raceways(bearing, pitch_diameter=diameter / ratio, diametral_clearance=clearance)
-    force = jnp.stack([radial, 0.0, 0.0])
+    return held_roller_case(bearing, raceways, jnp.stack([radial, 0.0, 0.0]), speed)
+
+
+def held_roller_case(bearing, raceways, force, speed):
+    """A roller bearing with its tilts held under `force` [N] at `speed` [rad/s], through the blocks
+    the roller adapter runs: status flags and whether every output is finite."""
+    count, diameter, length = bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter), bearing.length
     operating = RollerOperating(force, jnp.zeros(2), inner_speed=speed, misalignment=jnp.zeros(2))
     solution = solve_roller_equilibrium(bearing, raceways, operating, ROLLER_MODEL)
     rollers = roller_results(solution.displacement, bearing, raceways, operating, ROLLER_MODEL)
@@ -296,18 +302,7 @@ def solve_tapered_case(case, count: int, kind: str):
                              large_diameter=diameter * (1.0 + 0.5 * taper), cone_half_angle=half_angle, profile=profile,
                              roller_count=count)
     raceways = roller_raceways(bearing, pitch_diameter=diameter / ratio, diametral_clearance=clearance, cup_angle=cup)
-    force = jnp.stack([radial, 0.0, axial])
-    operating = RollerOperating(force, jnp.zeros(2), inner_speed=speed, misalignment=jnp.zeros(2))
-    solution = solve_roller_equilibrium(bearing, raceways, operating, ROLLER_MODEL)
-    rollers = roller_results(solution.displacement, bearing, raceways, operating, ROLLER_MODEL)
-    stiffness = roller_stiffness_matrix(solution.displacement, bearing, raceways, operating, ROLLER_MODEL)
-    outputs = (solution.displacement, solution.force, solution.residual, stiffness, *jax.tree.leaves(rollers))
-    rating = roller_dynamic_load_rating(count, diameter, length, raceways.cup_angle, raceways.pitch_diameter)
-    equivalent = roller_equivalent_dynamic_load(force, raceways.cup_angle)
-    light = roller_centrifugal_force(bearing, raceways, operating) > jnp.linalg.norm(force) / count
-    return {"finite": jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in outputs])),
-            "residual": solution.residual, "approach": rollers.largest_approach / diameter, "light": light,
-            "below_minimum": ((equivalent < ROLLER_MINIMUM_LOAD_RATIO * rating) | light) & (speed > 0.0)}
+    return held_roller_case(bearing, raceways, jnp.stack([radial, 0.0, axial]), speed)
 
 
 def run_tapered_profile(groups, size: int) -> dict:
