@@ -35,8 +35,12 @@ was 3× slower on 65 × 65); `newton` with Armijo backtracking and a Levenberg�
 where the piecewise smooth equations stall it, the meniscus moving at most a cell per step, each
 step's LU in float32 refined in float64 (`newton.refined_solve`),
 stopping once ‖F‖₂ ≤ `tolerance` (below it a step lowers round-off only); from the 1-D line
-solution (starved alike) extruded along the flat. Where that Newton fails (the starved-EHL
-paper's roller starved at 0.8 µm: 2471 N on 33 × 48, 1607 N on 65 × 65, where it stalls with
+solution (starved alike) extruded along the flat. Where that Newton fails on a flooded grid of 65
+nodes or more along rolling, Newton again from the solution on the grid of half the nodes (same
+cells along the roller), interpolated along x: the starved-EHL paper's roller with its raceway edge,
+flooded on 65 × 65, stalls from the 1-D start at 1607 and 2471 N (scaled residual 2.4 at
+1607 N, and through the load stages below) and converges from 33 × 65's solution. Where that
+fails too (the paper's roller starved at 0.8 µm: 2471 N on 33 × 48, where it stalls with
 h < 0 at the end constriction; at h_oil = 1.8 µm, 1028 N, 33 × 48), a load continuation: Newton
 again at 65, 80, 90 and 100 % of the load (`LOAD_PATH`), the first stage from the 1-D start at its load, each next
 from the previous solution. Starved, each stage first solves for the pressure and H₀ with the
@@ -73,6 +77,7 @@ HELD_MENISCUS_STEPS = 30  # starved load stages: Newton steps on pressure and H�
 NEWTON_STEPS = 60  # per load stage; the starved-EHL paper's roller at 1607 N starved needs 31–60 (short L–M steps)
 SHORTEST_STEP = 1e-4  # the shortest step length the backtracking tries
 LOAD_PATH = (0.65, 0.8, 0.9, 1.0)  # the load continuation's stages, fractions of the load
+COARSE_START_NODES = 33  # the fewest nodes along rolling of the coarse-grid start's grid: the Newton–Krylov's coarsest
 FINE_START = 0.9  # the fine cells start at this fraction of the flat half-length
 
 
@@ -312,7 +317,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
                      length, flat_length, grid=(33, 48), viscosity_law="roelands",
                      density_law="dowson_higginson", tolerance=1e-10, oil_layer=None,
                      load_path=LOAD_PATH, start: FiniteLineFilm | None = None,
-                     axial_clustering: float | None = None, side_inflow: float = 0.0) -> FiniteLineFilm:
+                     axial_clustering: float | None = None, side_inflow: float = 0.0,
+                     coarse_grid_start: bool = True) -> FiniteLineFilm:
     """Isothermal EHL of a roller of finite length on its raceway (2-D, half domain), fully
     flooded or starved by an inlet oil layer.
 
@@ -326,8 +332,16 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         grid: (nx, ny) nodes along rolling and cells along the half roller (`check_grid`).
         oil_layer: inlet oil supply layer h_oil [m], or None for fully flooded.
         load_path: the load continuation's stages, increasing fractions of the load in (0, 1]
-            ending at 1, taken only where Newton at the load from the 1-D start fails (starved,
-            each stage with the menisci held first).
+            ending at 1, taken only where Newton at the load from the 1-D start and from the
+            coarse grid fails (starved, each stage with the menisci held first).
+        coarse_grid_start: flooded, where Newton at the load from the 1-D start (or `start`)
+            fails, and nx − 1 is even with (nx − 1)/2 + 1 ≥ COARSE_START_NODES, Newton again
+            from this solver's solution on the grid of half the nodes along rolling (the same
+            cells along the roller; its own load path, no coarse start of its own), interpolated
+            along x, before the load continuation. Not starved: there the held menisci of each
+            stage carry the paper's roller at 1028, 1607 and 2471 N on 65 × 65 without it, and
+            it would double the program (29 431 → 58 044 StableHLO lines, compile 33 → 56 s on
+            2 cores; flooded 12 323 → 23 941 lines, 16 → 26 s).
         start: a solution on the same grid (a flooded one has its menisci at the inlet) to start Newton from
             instead of the 1-D line solution: a continuation in any argument, taken in steps
             small enough that each converges (the starved-EHL paper's roller from 2.0 to 1.8 µm,
@@ -472,6 +486,22 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
         start = start * fraction * load_target / (2.0 * spacing * jnp.sum(start * widths))
         return unknowns_from(start, line.central, jnp.where(taper > 0, line.meniscus / half_width, highest_meniscus))
 
+    coarser_nodes = (nx - 1) // 2 + 1
+    coarse_start = coarse_grid_start and not starved and (nx - 1) % 2 == 0 and coarser_nodes >= COARSE_START_NODES
+
+    def from_coarse_grid():
+        """Newton's unknowns from this solver's flooded solution on (coarser_nodes, ny) (the
+        same cells along the roller), P interpolated along x, the central film kept."""
+        coarse = finite_line_film(*fixed((load, radius, speed, viscosity, pressure_viscosity, effective_modulus,
+                                          profile, length, flat_length)),
+                                  grid=(coarser_nodes, ny), viscosity_law=viscosity_law, density_law=density_law,
+                                  tolerance=tolerance, load_path=load_path,
+                                  axial_clustering=axial_clustering, side_inflow=side_inflow, coarse_grid_start=False)
+        scale = fixed(half_width)
+        pressure = jax.vmap(lambda column: jnp.interp(jnp.asarray(x), coarse.x / scale, column), in_axes=1,
+                            out_axes=1)(coarse.pressure / fixed(hertz_pressure))
+        return unknowns_from(pressure, coarse.central, None)
+
     # the meniscus positions move at most a cell per Newton step
     largest_change = jnp.concatenate([jnp.full((nx - 2) * ny + 1, jnp.inf), jnp.full(ny if starved else 0, spacing)])
 
@@ -503,15 +533,20 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
 
     def newton_then_continuation(_, guess, __):
         """Newton at the load from `guess` (without `start`, from the 1-D start at the load);
-        where that fails, Newton again through the load stages `load_path`, each from the
-        previous one's solution, the first from its own 1-D start; starved, each load stage with
-        the menisci held first. One 1-D solve is traced for both starts (its load an argument)."""
-        stage_loads = jnp.asarray((1.0, *load_path))
+        where that fails, from the coarse grid's solution (`coarse_grid_start`); where that
+        fails too, through the load stages `load_path`, each from the previous one's solution,
+        the first from its own 1-D start; starved, each stage after the first with the menisci
+        held first. One 1-D solve is traced for both starts (its load an argument)."""
+        coarse_stages = (1.0,) if coarse_start else ()
+        stage_loads = jnp.asarray((1.0, *coarse_stages, *load_path))
+        continuation = 1 + len(coarse_stages)  # the index of the load path's first stage
 
         def stage(state):
             index, unknowns = state
-            restart = (index == 1) if start is not None else (index <= 1)
+            restart = (index == continuation) if start is not None else ((index == 0) | (index == continuation))
             unknowns = jax.lax.cond(restart, lambda: start_at(stage_loads[index]), lambda: unknowns)
+            if coarse_start:
+                unknowns = jax.lax.cond(index == 1, from_coarse_grid, lambda: unknowns)
             if starved:
                 unknowns = jax.lax.cond(index > 0, lambda: with_menisci_held(unknowns, stage_loads[index]),
                                         lambda: unknowns)
@@ -521,7 +556,8 @@ def finite_line_film(load, radius, speed, viscosity, pressure_viscosity, effecti
 
         def more(state):
             index, unknowns = state
-            return (index == 0) | ((index < stage_loads.size) & ~((index == 1) & error_and_solved(unknowns)[1]))
+            at_the_load = index <= continuation  # stages at the whole load: solved there, done
+            return (index == 0) | ((index < stage_loads.size) & ~(at_the_load & error_and_solved(unknowns)[1]))
 
         return jax.lax.while_loop(more, stage, (0, guess))[1]
 

@@ -364,12 +364,15 @@ def interpolate_level(unknowns, coarse: UniformLevel, fine: UniformLevel):
 
 
 def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=None, forcing=FORCING_LARGEST,
-                 restart=30):
+                 restart=30, start_anew=False):
     """(the finest UniformLevel built from the live `arguments`, its solution with implicit
     derivatives): `start(coarsest level)` → unknowns there, solved by Newton–Krylov in at most
     `coarsest_steps` (None: taken as solved), then interpolated to each finer level and solved
     again in at most NEWTON_STEPS (starved: after the held menisci and the supply continuation of
-    the module docstring); no derivative flows through the iterations. The loosest linear solve
+    the module docstring); no derivative flows through the iterations. With `start_anew`, a
+    finer level whose coarser solution did not converge to a positive film starts from
+    `start(level)` instead of it (a coarse grid too coarse for a thin film: its discrete film
+    closes, h < 0, and no finer grid recovers from that start). The loosest linear solve
     is `forcing` on flooded levels and STARVED_FORCING on starved ones; `restart` is GMRES's
     Krylov dimension. `level_at(*arguments)` → a function (nx, ny) → UniformLevel."""
     solving = level_at(*jax.lax.stop_gradient(arguments))
@@ -418,7 +421,10 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
         unknowns = solve(previous, unknowns, coarsest_steps)
     for nx, ny in levels[1:]:
         current = solving(nx, ny)
-        unknowns = solve_finer(current, interpolate_level(unknowns, previous, current))
+        carried = interpolate_level(unknowns, previous, current)
+        if start_anew:
+            carried = jnp.where(previous.solution(unknowns, tolerance)[-1], carried, start(current))
+        unknowns = solve_finer(current, carried)
         previous = current
     finest = level_at(*arguments)(*levels[-1])
     return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns), restart=restart)

@@ -125,3 +125,23 @@ def test_very_low_speed_says_whether_it_converged_and_stays_finite():
         lambda q: jax.jvp(solve, (q,), (1.0,)))(GROOVE["load"])
     assert bool(converged) == (float(residual) < 1e-10 and float(lowest) > 0)
     assert bool(jnp.all(jnp.isfinite(values))) and bool(jnp.all(jnp.isfinite(slopes)))
+
+
+@pytest.mark.slow  # about 90 s (2 cores)
+def test_a_heavily_loaded_deep_groove_bearing_converges_at_both_raceways():
+    """The 209 bearing of Hamrock's Fundamentals of Machine Elements (9 balls of 12.7 mm on 65 mm,
+    f = 0.52, 8.9 kN radial, 400 rad/s, η₀ 0.04 Pa·s, α 2.3e-8 1/Pa): its most loaded ball,
+    4.43 kN, at the inner (p₀ 3.08 GPa, κ 9.3) and the outer raceway (2.57 GPa, κ 7.3), u = 6.25
+    m/s, on 65 × 32. The coarsest grid, 33 × 16, is too coarse for this film: its discrete
+    solution closes (h_c < 0), and the finer grid starts anew from the Hertz start
+    (`finite_line_krylov.solve_nested`'s `start_anew`): both converge with positive films."""
+    ball, pitch = 12.7e-3, 65e-3
+    groove = 0.52 * ball / (2 * 0.52 - 1)
+    oil = dict(viscosity=0.04, pressure_viscosity=2.3e-8, effective_modulus=228.57e9)
+    solve = jax.jit(lambda radius, grid: point_film(4434.5, radius, groove, 6.2519, **oil, grid=grid),
+                    static_argnums=1)
+    for radius_rolling in (0.5 * ball * (1 - ball / pitch), 0.5 * ball * (1 + ball / pitch)):
+        coarsest = solve(radius_rolling, (33, 16))
+        assert float(coarsest.central) < 0.0
+        film = solve(radius_rolling, (65, 32))
+        assert bool(film.converged) and 0.0 < float(film.minimum) < float(film.central)

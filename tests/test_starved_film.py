@@ -262,6 +262,30 @@ def test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivat
                          grid=(17, 17), oil_layer=0.8e-6, start=cold)
 
 
+@pytest.mark.slow  # about 80 s (2 cores)
+@pytest.mark.parametrize("load", [1607.0, pytest.param(2471.0, marks=pytest.mark.extended)])
+def test_finite_line_converges_flooded_from_the_coarse_grid_at_the_papers_heavier_loads(load):
+    """The starved-EHL paper's roller with its raceway edge (the `starved_roller` scene), flooded,
+    on 65 × 65 (the scene's default grid): from the 1-D start Newton stalls (scaled residual 2.4 at
+    1607 N, and through the load stages); from the 33 × 65 solution (`coarse_grid_start`) it
+    converges, with the minimum film at the roller end past the flat (6.35 mm) and the central
+    film within 6 % of Pan and Hamrock's line-contact formula at the load per flat length (the
+    middle of the roller is nearly an infinite line: −3.2 % at 1028 N, +2.0 % at 1607 N, +5.0 %
+    at 2471 N on this grid)."""
+    from diffbearing.finite_line_ehl import finite_line_film
+    from diffbearing.film_formulas import pan_hamrock_line
+
+    from .test_starved_finite_line import PAPERS_PROFILE
+
+    speed = starved_ehl_entrainment_speed()
+    film = jax.jit(lambda w: finite_line_film(w, STARVED_EHL_LINE["radius"], speed, 0.08, 2.2e-8, 2.26e11,
+                                              PAPERS_PROFILE, 14.7e-3, 12.7e-3, grid=(65, 65)))(load)
+    central, _ = pan_hamrock_line(load / 12.7e-3, STARVED_EHL_LINE["radius"], speed, 0.08, 2.2e-8, 2.26e11)
+    assert bool(film.converged) and 0.0 < float(film.minimum) < float(film.central)
+    assert 6.35e-3 < float(film.minimum_position) < 7.35e-3
+    assert float(film.central) == pytest.approx(float(central), rel=0.06)
+
+
 def test_clustered_axial_cells_span_the_half_roller_and_halve_on_refinement():
     """`axial_cells` with a clustering β (the sinh map of Farrashkhalvat & Miles 2003, eqs. 4.90–4.91)
     on the starved-EHL paper's half roller (flat end 6.35 mm, roller end 7.35 mm): the edges run from 0 to the
