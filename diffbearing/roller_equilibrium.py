@@ -59,7 +59,7 @@ Solution: the static ring problem minimises the energy from Δ = 0 (`newton.mini
 no initial guess); with centrifugal force, damped Newton (`newton.newton`, dense Jacobian
 through the rollers' implicit solves) continues from there. A cylindrical bearing has no axial
 unknown (δz = 0, an axial force is an error); an imposed misalignment fixes θx, θy, and the
-moments become outputs.
+moments become outputs; an imposed radial (axial) displacement fixes δx, δy (δz), and Fx, Fy (Fz).
 """
 
 import dataclasses
@@ -141,9 +141,10 @@ def roller_raceways(bearing: RollerBearing, *, pitch_diameter, diametral_clearan
 
 class RollerOperating(eqx.Module):
     """Load case of a roller bearing: force [Fx, Fy, Fz] [N], moment [Mx, My] [N·m], ring speeds
-    [rad/s], an imposed inner-ring misalignment [θx, θy] [rad] (None: the moments are applied) and an
+    [rad/s], an imposed inner-ring misalignment [θx, θy] [rad] (None: the moments are applied), an
     imposed radial displacement [δx, δy] [m] (None: the radial force is applied; else Fx, Fy are
-    outputs and the given ones are not read)."""
+    outputs and the given ones are not read) and, for a tapered bearing, an imposed axial
+    displacement δz [m] (None: Fz is applied; else Fz is an output: setting by displacement)."""
 
     force: jax.Array = eqx.field(converter=_as_float)
     moment: jax.Array = eqx.field(converter=_as_float)
@@ -152,6 +153,8 @@ class RollerOperating(eqx.Module):
     misalignment: jax.Array | None = eqx.field(converter=lambda v: None if v is None else _as_float(v), default=None)
     radial_displacement: jax.Array | None = eqx.field(converter=lambda v: None if v is None else _as_float(v),
                                                       default=None)
+    axial_displacement: jax.Array | None = eqx.field(converter=lambda v: None if v is None else _as_float(v),
+                                                     default=None)
 
 
 def roller_azimuths(bearing: RollerBearing):
@@ -418,6 +421,9 @@ def _controls(bearing: RollerBearing, operating: RollerOperating):
     if operating.radial_displacement is not None:
         free[:2] = 0.0
         offset = offset.at[:2].set(operating.radial_displacement)
+    if operating.axial_displacement is not None:
+        free[2] = 0.0
+        offset = offset.at[2].set(operating.axial_displacement)
     if operating.misalignment is not None:
         free[3:] = 0.0
         offset = offset.at[3:].set(operating.misalignment)
@@ -426,7 +432,7 @@ def _controls(bearing: RollerBearing, operating: RollerOperating):
 
 def prescribed_coordinates(bearing: RollerBearing, operating: RollerOperating):
     """(5,) 1 where the inner ring's coordinate [δx, δy, δz, θx, θy] is prescribed (δz of a cylindrical
-    roller bearing held at 0; an imposed radial displacement or misalignment), 0 where it follows
+    roller bearing held at 0; an imposed radial or axial displacement or misalignment), 0 where it follows
     from the applied load (`_controls`)."""
     return 1.0 - _controls(bearing, operating)[0]
 

@@ -414,6 +414,8 @@ OPTIONAL_KEYS = (
      ('operating.force=["0 N", "0 N", "2 kN"]', 'operating.radial_displacement=["20 µm", "0 µm"]')),
     ("cylindrical_roller_bearing", "operating.radial_displacement", "length", 2,
      ('operating.force=["0 N", "0 N", "0 N"]', 'operating.radial_displacement=["20 µm", "0 µm"]')),
+    ("tapered_roller_bearing", "operating.axial_displacement", "length", None,
+     ('operating.force=["4 kN", "0 N", "0 N"]', 'operating.axial_displacement="10 µm"')),
 )
 
 

@@ -144,6 +144,10 @@ def test_blocks_of_each_layout():
     ("cylindrical_roller_bearing", ['operating.radial_displacement=["20 µm", "0 µm"]'],
      "operating.force: Fx and Fy must be 0 with operating.radial_displacement"),
     ("tapered_roller", ['operating.force=["1 kN", "0 N", "0 N"]'], "give only one of 'contact.load', 'operating.force'"),
+    ("cylindrical_roller_bearing", ['operating.axial_displacement="10 µm"'],
+     "operating.axial_displacement: a cylindrical roller bearing without ribs has no axial position to set"),
+    ("tapered_roller_bearing", ['operating.axial_displacement="10 µm"'],
+     "operating.force: Fz must be 0 with operating.axial_displacement"),
 ])
 def test_bad_bearing_input_exits_2_with_one_line(scene, overrides, named):
     arguments = [item for override in overrides for item in ("--set", override)]
@@ -176,6 +180,21 @@ def test_imposed_misalignment_makes_the_moments_outputs(tmp_path, cylindrical):
     assert 0.9 * aligned < moment < aligned and abs(document["force"][3]) < 1e-9
     assert "moments at the imposed misalignment" in out and "My = 4.08" in out
     assert rollers["tilt"][0] == pytest.approx(0.25e-3, rel=1e-9)  # a free roller takes half the ring's tilt
+
+
+def test_a_tapered_bearing_set_by_axial_displacement(tmp_path, tapered):
+    """The packaged tapered bearing with its δz prescribed at the value its 2 kN axial load gives,
+    and Fz = 0: the axial force is an output, 2 kN to 1e-8, every roller load the same to 1e-8; the
+    report names δz as prescribed and prints the axial force."""
+    applied = tapered[3]
+    code, out, err, document = _run(tmp_path, example_scene("tapered_roller_bearing"), "--set",
+                                    'operating.force=["4 kN", "0 kN", "0 kN"]', "--set",
+                                    f'operating.axial_displacement="{applied["displacement"][2] * 1e6!r} um"')
+    assert code == 0, err
+    assert document["force"][2] == pytest.approx(2e3, rel=1e-8)
+    np.testing.assert_allclose(document["rollers"]["inner"]["load"], applied["rollers"]["inner"]["load"], rtol=1e-8,
+                               atol=1e-6)
+    assert "prescribed (load an output): δz, θx, θy" in out and "axial force at the prescribed δz: Fz = 2.0000 kN" in out
 
 
 STRAIGHT = """

@@ -227,6 +227,29 @@ def test_prescribed_radial_displacement_inverts_radial_force_control(solve):
     np.testing.assert_allclose(by_displacement.displacement, by_force.displacement, rtol=1e-8, atol=1e-14)
 
 
+def test_prescribed_axial_displacement_inverts_axial_force_control(solve):
+    """The tapered bearing under [Fx, Fy, Fz] = [4, 1, 2] kN with its tilts held, then with the δz
+    found prescribed (setting by displacement) and Fz = 0: the axial force returned is the
+    applied 2 kN and the displacement is unchanged; with the cone set 5 µm further in, the axial
+    force rises (the preload a tighter setting adds)."""
+    bearing, raceways = tapered()
+    held = jnp.zeros(2)
+    by_force = solve(bearing, raceways, operating([4e3, 1e3, 2e3], misalignment=held), STATIC)
+
+    def set_at(axial):
+        return re.RollerOperating(force=jnp.array([4e3, 1e3, 0.0]), moment=jnp.zeros(2), misalignment=held,
+                                  axial_displacement=axial)
+
+    by_displacement = solve(bearing, raceways, set_at(by_force.displacement[2]), STATIC)
+    assert bool(by_force.converged) and bool(by_displacement.converged)
+    assert np.asarray(re.prescribed_coordinates(bearing, set_at(0.0))).tolist() == [0, 0, 1, 1, 1]
+    np.testing.assert_allclose(by_displacement.force[:3], [4e3, 1e3, 2e3], rtol=1e-8)
+    np.testing.assert_allclose(by_displacement.force[3:], by_force.force[3:], rtol=1e-8)
+    np.testing.assert_allclose(by_displacement.displacement, by_force.displacement, rtol=1e-8, atol=1e-14)
+    tighter = solve(bearing, raceways, set_at(by_force.displacement[2] + 5e-6), STATIC)
+    assert bool(tighter.converged) and float(tighter.force[2]) > 2.2e3
+
+
 @pytest.mark.parametrize("kind", ["cylindrical", "tapered"])
 def test_zero_load(solve, stiffness, kind):
     """No load, no clearance: Δ = 0, the stiffness is finite (zero: q ∝ δ^{10/9} has no stiffness at

@@ -56,6 +56,10 @@ def catalogue_bearing(v, ring):
 # rolling bearing (aero-engine main-shaft bearings run at 2–3e6, test rigs have reached about 4e6;
 # the aero paper's own speed sweep, aero_speed_sweep, ends at 5e6), the input is a slip of units.
 SPEED_FACTOR_WARNING, SPEED_FACTOR_LIMIT = 1.0e6, 1.0e7
+# shared with the tapered roller bearing (`roller_bearing`)
+AXIAL_DISPLACEMENT_KEY = quantity("length", "imposed axial displacement δz of the inner ring (ball and tapered roller "
+                                            "bearings; preload or setting by displacement): Fz must be 0, the axial "
+                                            "force is then an output")
 
 
 def speed_factor(speed, pitch_diameter):
@@ -632,7 +636,7 @@ ADAPTER = register(Adapter(
         "operating.outer_speed": quantity("angular_speed"),
         "operating.force": Key("quantities", "force", length=3, doc="[Fx, Fy, Fz] on the inner ring"),
         "operating.moment": Key("quantities", "moment", length=2, doc="[Mx, My] on the inner ring"),
-        "operating.axial_displacement": quantity("length", "preload by axial displacement: δz held fixed, Fz must be 0"),
+        "operating.axial_displacement": AXIAL_DISPLACEMENT_KEY,
         "operating.misalignment": Key("quantities", "angle", length=2,
                                       doc="imposed inner-ring tilt [θx, θy] (ball and roller bearings): the ring held "
                                           "by its shaft; the moments are then outputs (give no operating.moment)"),

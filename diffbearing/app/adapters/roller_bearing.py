@@ -24,7 +24,7 @@ from ...roller_geometry import ROLLER_KINDS
 from ..formatting import (element_table_lines, format_number, state_column, stiffness_lines, swept_display,
                           to_display)
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, convergence_checks, quantity, register
-from .ball import SPEED_FACTOR_WARNING, check_speed_factor, speed_factor, stiffness_against_sweep
+from .ball import AXIAL_DISPLACEMENT_KEY, SPEED_FACTOR_WARNING, check_speed_factor, speed_factor, stiffness_against_sweep
 from .mounting import operating_clearance
 from .roller import contact_settings, profile_line
 
@@ -107,12 +107,21 @@ def _operating(v, built) -> dict:
     if bearing.kind == "cylindrical_roller" and not _traced(axial) and float(axial) != 0.0:
         raise ValueError(f"operating.force: a cylindrical roller bearing without ribs carries no axial load; "
                          f"Fz must be 0, got {float(axial):g} N")
-    if bearing.kind == "tapered_roller":
+    axial_displacement = v.get("operating.axial_displacement")
+    if axial_displacement is not None:
+        if bearing.kind != "tapered_roller":
+            raise ValueError("operating.axial_displacement: a cylindrical roller bearing without ribs has no axial "
+                             "position to set (δz is held at 0); the key is for tapered roller bearings")
+        if not _traced(axial) and float(axial) != 0.0:
+            raise ValueError(f"operating.force: Fz must be 0 with operating.axial_displacement (the axial force "
+                             f"is then an output), got {float(axial):g} N")
+    elif bearing.kind == "tapered_roller":
         _check_tapered_load(force, v.get("bearing.contact_angle", 0.0))
     return {"operating": RollerOperating(force=force, moment=v.get("operating.moment", [0.0, 0.0]),
                                          inner_speed=v.get("operating.inner_speed", 0.0),
                                          outer_speed=v.get("operating.outer_speed", 0.0), misalignment=misalignment,
-                                         radial_displacement=radial_displacement)}
+                                         radial_displacement=radial_displacement,
+                                         axial_displacement=axial_displacement)}
 
 
 def _check_tapered_load(force, cup_angle) -> None:
@@ -279,8 +288,9 @@ EQUILIBRIUM = Block(
     scene_keys=WHOLE_BEARING,
     outputs=(
         Output("displacement", "m, rad", "", "inner-ring displacement [δx, δy, δz, θx, θy]", in_report=False),
-        Output("force", "N, N*m", "", "load the rollers carry [Fx, Fy, Fz, Mx, My] (the moments: those the imposed "
-                                      "operating.misalignment needs)", in_report=False),
+        Output("force", "N, N*m", "", "load the rollers carry [Fx, Fy, Fz, Mx, My] (Fx, Fy follow under "
+                                      "radial_displacement, Fz under axial_displacement, Mx, My under misalignment)",
+               in_report=False),
         Output("converged", "", "", "the equilibrium solver converged", in_report=False),
         Output("residual", "", "", "largest scaled residual of ring and roller equations", in_report=False),
         Output("validity.approach_ratio", "", "", "largest lamina approach / mean roller diameter (model limit "
@@ -464,6 +474,8 @@ def _header(result) -> list[str]:
         shift = np.asarray(operating.radial_displacement) * 1e6
         load += (f"; radial displacement imposed, [δx, δy] = [{', '.join(f'{d:.4g}' for d in shift)}] µm "
                  "(Fx, Fy are outputs)")
+    if operating.axial_displacement is not None:
+        load += f"; axial displacement imposed, δz = {float(operating.axial_displacement) * 1e6:.4g} µm (Fz is an output)"
     centrifugal = "on" if model.centrifugal else "off"
     if model.centrifugal and not result.sweep_axes:
         centrifugal += f", F_c = {float(values['rollers.centrifugal_force']):.4g} N per roller"
@@ -523,6 +535,8 @@ def _report(result) -> list[str]:
         radial = np.asarray(values["force"])[:2] / 1e3
         lines.append(f"  radial force at the prescribed δx, δy: Fx = {_fixed(radial[0], 4)} kN, "
                      f"Fy = {_fixed(radial[1], 4)} kN")
+    if operating.axial_displacement is not None:
+        lines.append(f"  axial force at the prescribed δz: Fz = {_fixed(np.asarray(values['force'])[2] / 1e3, 4)} kN")
     if operating.misalignment is not None:
         moment = np.asarray(values["force"])[3:]
         lines.append(f"  moments at the imposed misalignment: Mx = {_fixed(moment[0], 3)} N·m, "
@@ -582,6 +596,7 @@ ADAPTER = register(Adapter(
         "operating.radial_displacement": Key("quantities", "length", length=2,
                                              doc="imposed radial displacement [δx, δy] of the inner ring (ball and roller "
                                                  "bearings): Fx, Fy must be 0; the radial force is then an output"),
+        "operating.axial_displacement": AXIAL_DISPLACEMENT_KEY,
         "operating.inner_speed": quantity("angular_speed"),
         "operating.outer_speed": quantity("angular_speed"),
         "effects.centrifugal": Key("boolean"),
