@@ -176,8 +176,7 @@ def test_random_ball_bearings_converge_or_say_why(solvers):
     run_profile(solvers, [("deep_groove_ball", 8), ("angular_contact_ball", 14)], 32)
 
 
-@pytest.mark.extended
-@pytest.mark.slow
+@pytest.mark.slow  # about 2.5 min (2 cores): the slow suite's ≥ 2000 valid cases
 def test_random_ball_bearings_large_profile(solvers):
     """2000 cases: ≥ 99.9 % of those at or above the minimum load (and, angular-contact, with the
     axial load to run without a partner) converge, every other converges or reports its reason."""
