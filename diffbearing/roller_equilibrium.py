@@ -412,6 +412,14 @@ def ring_force(displacement, bearing: RollerBearing, raceways: RollerRaceways, o
 
 # --- the ring problem -------------------------------------------------------------------------------
 
+def check_axial_displacement(bearing: RollerBearing, operating: RollerOperating) -> None:
+    """ValueError naming operating.axial_displacement where a cylindrical bearing is given one: it
+    has no ribs, so no axial position to set (its δz is held at 0)."""
+    if operating.axial_displacement is not None and bearing.kind == "cylindrical_roller":
+        raise ValueError("operating.axial_displacement: a cylindrical roller bearing without ribs has no axial "
+                         "position to set (δz is held at 0); the key is for tapered roller bearings")
+
+
 def _controls(bearing: RollerBearing, operating: RollerOperating):
     """(free, offset): solved (1) or prescribed (0) components of Δ, and the prescribed values."""
     free = np.ones(5)
@@ -422,6 +430,7 @@ def _controls(bearing: RollerBearing, operating: RollerOperating):
         free[:2] = 0.0
         offset = offset.at[:2].set(operating.radial_displacement)
     if operating.axial_displacement is not None:
+        check_axial_displacement(bearing, operating)
         free[2] = 0.0
         offset = offset.at[2].set(operating.axial_displacement)
     if operating.misalignment is not None:

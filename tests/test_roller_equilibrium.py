@@ -248,6 +248,9 @@ def test_prescribed_axial_displacement_inverts_axial_force_control(solve):
     np.testing.assert_allclose(by_displacement.displacement, by_force.displacement, rtol=1e-8, atol=1e-14)
     tighter = solve(bearing, raceways, set_at(by_force.displacement[2] + 5e-6), STATIC)
     assert bool(tighter.converged) and float(tighter.force[2]) > 2.2e3
+    cylinder, cylinder_raceways = cylindrical()
+    with pytest.raises(ValueError, match="operating.axial_displacement: a cylindrical roller bearing"):
+        re.solve_roller_equilibrium(cylinder, cylinder_raceways, set_at(0.0), STATIC)
 
 
 @pytest.mark.parametrize("kind", ["cylindrical", "tapered"])

@@ -18,8 +18,8 @@ import numpy as np
 from ...params import check_radial_force_free, check_range
 from ...roller_contact import roller_contact
 from ...roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways,
-                                   prescribed_coordinates, roller_contact_loadings, roller_raceways, roller_results,
-                                   roller_stiffness_matrix, solve_roller_equilibrium)
+                                   check_axial_displacement, prescribed_coordinates, roller_contact_loadings,
+                                   roller_raceways, roller_results, roller_stiffness_matrix, solve_roller_equilibrium)
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import (element_table_lines, format_number, state_column, stiffness_lines, swept_display,
                           to_display)
@@ -109,19 +109,17 @@ def _operating(v, built) -> dict:
                          f"Fz must be 0, got {float(axial):g} N")
     axial_displacement = v.get("operating.axial_displacement")
     if axial_displacement is not None:
-        if bearing.kind != "tapered_roller":
-            raise ValueError("operating.axial_displacement: a cylindrical roller bearing without ribs has no axial "
-                             "position to set (δz is held at 0); the key is for tapered roller bearings")
         if not _traced(axial) and float(axial) != 0.0:
             raise ValueError(f"operating.force: Fz must be 0 with operating.axial_displacement (the axial force "
                              f"is then an output), got {float(axial):g} N")
     elif bearing.kind == "tapered_roller":
         _check_tapered_load(force, v.get("bearing.contact_angle", 0.0))
-    return {"operating": RollerOperating(force=force, moment=v.get("operating.moment", [0.0, 0.0]),
-                                         inner_speed=v.get("operating.inner_speed", 0.0),
-                                         outer_speed=v.get("operating.outer_speed", 0.0), misalignment=misalignment,
-                                         radial_displacement=radial_displacement,
-                                         axial_displacement=axial_displacement)}
+    operating = RollerOperating(force=force, moment=v.get("operating.moment", [0.0, 0.0]),
+                                inner_speed=v.get("operating.inner_speed", 0.0),
+                                outer_speed=v.get("operating.outer_speed", 0.0), misalignment=misalignment,
+                                radial_displacement=radial_displacement, axial_displacement=axial_displacement)
+    check_axial_displacement(bearing, operating)
+    return {"operating": operating}
 
 
 def _check_tapered_load(force, cup_angle) -> None:
