@@ -366,7 +366,8 @@ def interpolate_level(unknowns, coarse: UniformLevel, fine: UniformLevel):
 def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=None, forcing=FORCING_LARGEST,
                  restart=30, start_anew=False):
     """(the finest UniformLevel built from the live `arguments`, its solution with implicit
-    derivatives): `start(coarsest level)` → unknowns there, solved by Newton–Krylov in at most
+    derivatives, (the next coarser level, its solution without derivatives) or None where there
+    is one level): `start(coarsest level)` → unknowns there, solved by Newton–Krylov in at most
     `coarsest_steps` (None: taken as solved), then interpolated to each finer level and solved
     again in at most NEWTON_STEPS (starved: after the held menisci and the supply continuation of
     the module docstring); no derivative flows through the iterations. With `start_anew`, a
@@ -419,7 +420,9 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
     unknowns = start(previous)
     if coarsest_steps is not None:
         unknowns = solve(previous, unknowns, coarsest_steps)
+    coarser = None
     for nx, ny in levels[1:]:
+        coarser = (previous, unknowns)
         current = solving(nx, ny)
         carried = interpolate_level(unknowns, previous, current)
         if start_anew:
@@ -427,7 +430,8 @@ def solve_nested(level_at, arguments, levels, start, tolerance, coarsest_steps=N
         unknowns = solve_finer(current, carried)
         previous = current
     finest = level_at(*arguments)(*levels[-1])
-    return finest, krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns), restart=restart)
+    root = krylov_root(finest.residual, unknowns, None, previous.preconditioner(unknowns), restart=restart)
+    return finest, root, coarser
 
 
 def line_scales(load, radius, effective_modulus, flat_length):
@@ -497,7 +501,7 @@ def finite_line_film_krylov(load, radius, speed, viscosity, pressure_viscosity, 
         unknowns = jnp.append(pressure[1:-1].reshape(-1), offset)
         return jnp.concatenate([unknowns, coarse.meniscus / half_width]) if starved else unknowns
 
-    finest, unknowns = solve_nested(level_at, arguments, levels, from_dense, tolerance)
+    finest, unknowns, _ = solve_nested(level_at, arguments, levels, from_dense, tolerance)
     pressure, film, meniscus, error, converged = finest.solution(unknowns, tolerance)
     return line_film_result(finest, (load, radius, effective_modulus, flat_length), pressure, film, converged, error,
                             meniscus)

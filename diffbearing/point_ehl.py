@@ -61,7 +61,9 @@ class PointFilm(eqx.Module):
     """Solution [SI] on the half domain y ≥ 0: x [m] (nx), y [m] cell centres (ny), pressure [Pa]
     and film [m] (nx, ny), central film at x = 0 next to y = 0 [m], minimum film [m] and where it
     is (x, y [m]), whether Newton–Krylov converged (scaled residual below the tolerance, positive
-    film), that residual [-] (`finite_line_krylov.UniformLevel.residual_scale`)."""
+    film), that residual [-] (`finite_line_krylov.UniformLevel.residual_scale`), and the central
+    film on the next coarser grid [m] (NaN: none, or not kept), whose difference from `central`
+    measures the grid's own error (`grid_change`)."""
 
     x: jax.Array
     y: jax.Array
@@ -73,6 +75,15 @@ class PointFilm(eqx.Module):
     minimum_y: jax.Array
     converged: jax.Array
     residual: jax.Array
+    coarser_central: jax.Array
+
+
+def grid_change(film: PointFilm):
+    """[-] |h_c − h_c,coarser| / h_c: how much the central film changed from the next coarser grid
+    (spacing halved since). Where the films converge at order p this is (2^p − 1) times the finer
+    grid's own error (Richardson): p ≈ 1.7 to 2 measured (docs/validation/lubricant_film.md §The
+    point contact), so about twice that error."""
+    return jnp.abs(film.central - film.coarser_central) / jnp.abs(film.central)
 
 
 def hertz_scales(load, radius_rolling, radius_transverse, effective_modulus):
@@ -148,19 +159,27 @@ def point_film(load, radius_rolling, radius_transverse, speed, viscosity, pressu
 
     arguments = (load, radius_rolling, radius_transverse, speed, viscosity, pressure_viscosity, effective_modulus)
     constants = jax.lax.stop_gradient(arguments)
-    finest, unknowns = solve_nested(level_at, arguments, levels, lambda level: _hertz_start(level, constants),
-                                    tolerance, coarsest_steps=COARSEST_STEPS, forcing=FORCING, restart=RESTART,
-                                    start_anew=True)
+    finest, unknowns, coarser = solve_nested(level_at, arguments, levels, lambda level: _hertz_start(level, constants),
+                                             tolerance, coarsest_steps=COARSEST_STEPS, forcing=FORCING, restart=RESTART,
+                                             start_anew=True)
     reference = hertz_scales(load, radius_rolling, radius_transverse, effective_modulus)[0]
     pressure, film, _, error, converged = finest.solution(unknowns, tolerance)
-    return film_result(finest, reference, radius_rolling, pressure, film, converged, error)
+    coarser_central = jnp.nan
+    if coarser is not None:  # its film at the centre, without derivative (a measure of the grid)
+        level, solved = coarser
+        coarse_pressure, offset, _ = level.unpack(solved)
+        coarser_central = level.film(coarse_pressure, offset)[level.centre, 0] * jax.lax.stop_gradient(
+            reference**2 / radius_rolling)
+    return film_result(finest, reference, radius_rolling, pressure, film, converged, error, coarser_central)
 
 
-def film_result(level, reference, radius_rolling, pressure, film, converged, error) -> PointFilm:
+def film_result(level, reference, radius_rolling, pressure, film, converged, error, coarser_central=jnp.nan) -> PointFilm:
     """The PointFilm [SI] of a solution on `level` (dimensionless P and H (nx, ny)), b_r [m] and
-    Rx [m]: the central film next to y = 0 at x = 0, the minimum and where it is."""
+    Rx [m]: the central film next to y = 0 at x = 0, the minimum and where it is; the coarser
+    grid's central film [m] as given (NaN: not kept)."""
     thickness = film * reference**2 / radius_rolling
     lowest = jnp.argmin(thickness)
     x, y = level.columns.x * reference, level.columns.y * reference
     return PointFilm(x, y, pressure * level.columns.fluid.hertz_pressure, thickness, thickness[level.centre, 0],
-                     thickness.reshape(-1)[lowest], x[lowest // level.ny], y[lowest % level.ny], converged, error)
+                     thickness.reshape(-1)[lowest], x[lowest // level.ny], y[lowest % level.ny], converged, error,
+                     jnp.asarray(coarser_central, dtype=thickness.dtype))

@@ -134,7 +134,13 @@ def test_a_heavily_loaded_deep_groove_bearing_converges_at_both_raceways():
     4.43 kN, at the inner (p₀ 3.08 GPa, κ 9.3) and the outer raceway (2.57 GPa, κ 7.3), u = 6.25
     m/s, on 65 × 32. The coarsest grid, 33 × 16, is too coarse for this film: its discrete
     solution closes (h_c < 0), and the finer grid starts anew from the Hertz start
-    (`finite_line_krylov.solve_nested`'s `start_anew`): both converge with positive films."""
+    (`finite_line_krylov.solve_nested`'s `start_anew`): both converge with positive films. The
+    coarser grid's central film the result keeps is that of 33 × 16 solved alone (1e-9), so the
+    grid change (`point_ehl.grid_change`) is above the report's warning bound; the report's
+    check warns on it, naming the film and `fidelity.grid`, and not on an unloaded raceway."""
+    from diffbearing.app.adapters.film import GRID_CHANGE_WARNING, _point_checks
+    from diffbearing.point_ehl import grid_change
+
     ball, pitch = 12.7e-3, 65e-3
     groove = 0.52 * ball / (2 * 0.52 - 1)
     oil = dict(viscosity=0.04, pressure_viscosity=2.3e-8, effective_modulus=228.57e9)
@@ -145,3 +151,11 @@ def test_a_heavily_loaded_deep_groove_bearing_converges_at_both_raceways():
         assert float(coarsest.central) < 0.0
         film = solve(radius_rolling, (65, 32))
         assert bool(film.converged) and 0.0 < float(film.minimum) < float(film.central)
+        assert float(film.coarser_central) == pytest.approx(float(coarsest.central), rel=1e-9)
+        assert float(grid_change(film)) > GRID_CHANGE_WARNING
+    change = float(grid_change(film))
+    values = {"film.inner.converged": True, "film.inner.grid_change": change,
+              "film.outer.converged": True, "film.outer.grid_change": float("nan")}
+    errors, warnings = _point_checks(values)
+    assert errors == [] and len(warnings) == 1
+    assert warnings[0].startswith(f"film.inner.central changed by {100 * change:.3g} %") and "fidelity.grid" in warnings[0]
