@@ -284,6 +284,14 @@ def check_radial_force_free(force, radial_displacement) -> None:
                          "(the radial force follows from the prescribed displacement)")
 
 
+def check_axial_force_free(force, axial_displacement) -> None:
+    """ValueError naming operating.force where an axial displacement is prescribed and Fz is not
+    zero (ball and tapered roller bearings: the axial force is then an output)."""
+    if axial_displacement is not None and _is_concrete(force) and np.any(np.asarray(force)[..., 2] != 0):
+        raise ValueError("operating.force: Fz must be 0 with operating.axial_displacement "
+                         "(the axial force follows from the prescribed displacement)")
+
+
 class Operating(eqx.Module):
     """Operating point: ring speeds and the load on the inner ring (outer ring fixed in space)."""
 
@@ -310,9 +318,7 @@ class Operating(eqx.Module):
             if _is_concrete(value) and np.shape(value)[-1:] != (size,):
                 raise ValueError(f"operating.{name} must have {size} components, got shape {np.shape(value)}")
         check_range("operating.axial_displacement", self.axial_displacement, unit=" m")
-        if self.axial_displacement is not None and _is_concrete(self.force) and np.any(np.asarray(self.force)[..., 2] != 0):
-            raise ValueError("operating.force: Fz must be 0 with operating.axial_displacement "
-                             "(the axial force follows from the prescribed displacement)")
+        check_axial_force_free(self.force, self.axial_displacement)
         check_range("operating.misalignment", self.misalignment, low=-MAX_MISALIGNMENT, high=MAX_MISALIGNMENT,
                     unit=" rad", why="small-angle misalignment, |θ| < 0.05 rad ≈ 2.9°")
         if self.misalignment is not None and _is_concrete(self.moment) and np.any(np.asarray(self.moment) != 0):

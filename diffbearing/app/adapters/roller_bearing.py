@@ -15,7 +15,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ...params import check_radial_force_free, check_range
+from ...params import check_axial_force_free, check_radial_force_free, check_range
 from ...roller_contact import roller_contact
 from ...roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways,
                                    check_axial_displacement, prescribed_coordinates, roller_contact_loadings,
@@ -108,11 +108,8 @@ def _operating(v, built) -> dict:
         raise ValueError(f"operating.force: a cylindrical roller bearing without ribs carries no axial load; "
                          f"Fz must be 0, got {float(axial):g} N")
     axial_displacement = v.get("operating.axial_displacement")
-    if axial_displacement is not None:
-        if not _traced(axial) and float(axial) != 0.0:
-            raise ValueError(f"operating.force: Fz must be 0 with operating.axial_displacement (the axial force "
-                             f"is then an output), got {float(axial):g} N")
-    elif bearing.kind == "tapered_roller":
+    check_axial_force_free(force, axial_displacement)
+    if axial_displacement is None and bearing.kind == "tapered_roller":
         _check_tapered_load(force, v.get("bearing.contact_angle", 0.0))
     operating = RollerOperating(force=force, moment=v.get("operating.moment", [0.0, 0.0]),
                                 inner_speed=v.get("operating.inner_speed", 0.0),
