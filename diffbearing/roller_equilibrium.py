@@ -290,6 +290,31 @@ def roller_centrifugal_force(bearing: RollerBearing, raceways: RollerRaceways, o
     return roller_mass(bearing) * cage**2 * 0.5 * raceways.pitch_diameter
 
 
+def tapered_axial_load_needed(bearing: RollerBearing, raceways: RollerRaceways, operating: RollerOperating,
+                              model: RollerModel):
+    """The axial load [N] a tapered roller bearing needs to carry its radial load at all (0 for a
+    cylindrical one): an equilibrium needs F_z > F_r tan α_o + Z F_c sin α_o cos α_m / cos θ.
+
+    Each roller's balance (module docstring: cone, rib, cup and F_c) makes the force the cone and its
+    rib exert on roller j equal to Q_o,j n_o − F_c e_r: the inner ring takes the cup's push less the
+    centrifugal force. Summed over the rollers, Σ e_r(ψ_j) = 0 removes F_c from the radial sum, so
+    F_z = sin α_o Σ Q_o,j and F_r = cos α_o |Σ Q_o,j e_r(ψ_j)|. R_u = 0 with Q_i,j ≥ 0 bounds every
+    cup load from below, Q_o,j ≥ Q_c = F_c cos α_m / cos θ (the cup alone holding the roller
+    against its centrifugal force); with Q_o,j = Q_c + q_j, q_j ≥ 0,
+    F_r ≤ cos α_o Σ q_j = cos α_o (F_z / sin α_o − Z Q_c), which is the bound above, reached with a
+    single roller carrying the cone. At rest it is the static F_r tan α_o."""
+    if bearing.kind == "cylindrical_roller":
+        return jnp.asarray(0.0)
+    angles = directions(bearing, raceways)
+    radial = safe_norm(operating.force[:2])
+    needed = radial * jnp.tan(angles.cup_angle)
+    if model.centrifugal:
+        lightest_cup_load = (roller_centrifugal_force(bearing, raceways, operating) * jnp.cos(angles.axis_angle)
+                             / jnp.cos(bearing.cone_half_angle))
+        needed = needed + bearing.roller_count * lightest_cup_load * jnp.sin(angles.cup_angle)
+    return needed
+
+
 def _roller_force_scale(bearing: RollerBearing, setup: LaminaSetup):
     """A roller's load at 1 µm approach of every lamina [N]: the unit of the roller residuals."""
     return jnp.sum(_lamina_force(jnp.full(setup.y.shape, ROLLER_SCALE), bearing, setup))

@@ -102,6 +102,38 @@ def test_pure_axial_load_on_a_tapered_bearing(solve, results):
     np.testing.assert_allclose(solution.displacement[jnp.array([0, 1, 3, 4])], 0.0, atol=1e-15)
 
 
+@pytest.mark.slow  # 35 s: compiles the aligned solve at speed
+def test_a_tapered_bearing_at_speed_needs_the_axial_push_of_its_rollers_centrifugal_forces(solve, results):
+    """At 1000 rad/s under F_r = 300 N, the rings held aligned, an equilibrium exists only for F_z above F_r tan α_o +
+    Z F_c sin α_o cos α_m / cos θ (`tapered_axial_load_needed`; at rest F_r tan α_o exactly). 2 %
+    above it the solve converges, with the bound's premises as identities of the solution: the ring
+    takes the cup's push less F_c, F_z = sin α_o Σ Q_o and F_x = cos α_o Σ Q_o cos ψ, and every cup
+    load is at least Q_c = F_c cos α_m / cos θ. 2 % below it the solve stops unconverged, finite."""
+    bearing, raceways = tapered()
+    cup, half = np.radians(15.0), np.radians(2.4)
+    rest = float(re.tapered_axial_load_needed(bearing, raceways, operating([300.0, 0.0, 0.0]), STATIC))
+    assert rest == pytest.approx(300.0 * np.tan(cup), rel=1e-14)
+    needed = float(re.tapered_axial_load_needed(bearing, raceways, operating([300.0, 0.0, 0.0], inner_speed=1e3), SPEED))
+    centrifugal = float(re.roller_centrifugal_force(bearing, raceways, operating([0.0] * 3, inner_speed=1e3)))
+    lightest = centrifugal * np.cos(cup - half) / np.cos(half)
+    assert needed == pytest.approx(rest + 18 * lightest * np.sin(cup), rel=1e-14) and needed > 1.9 * rest
+
+    aligned = jnp.zeros(2)
+    above = operating([300.0, 0.0, 1.02 * needed], inner_speed=1e3, misalignment=aligned)
+    solution = solve(bearing, raceways, above, SPEED)
+    assert bool(solution.converged)
+    per_roller = results(solution.displacement, bearing, raceways, above, SPEED)
+    cup_loads = per_roller.outer_load
+    assert float(jnp.sin(cup) * jnp.sum(cup_loads)) == pytest.approx(1.02 * needed, rel=1e-8)
+    assert float(jnp.cos(cup) * jnp.sum(cup_loads * jnp.cos(per_roller.azimuth))) == pytest.approx(300.0, rel=1e-8)
+    assert float(jnp.min(cup_loads)) >= lightest * (1.0 - 1e-8)
+
+    below = solve(bearing, raceways, operating([300.0, 0.0, 0.98 * needed], inner_speed=1e3, misalignment=aligned),
+                  SPEED)
+    assert not bool(below.converged) and float(below.residual) > 1e-3
+    assert np.all(np.isfinite(below.displacement)) and np.all(np.isfinite(below.force))
+
+
 def test_cylindrical_bearing_refuses_an_axial_force(solve):
     bearing, raceways = cylindrical()
     with pytest.raises(ValueError, match="operating.force"):

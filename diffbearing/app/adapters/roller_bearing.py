@@ -19,7 +19,8 @@ from ...params import check_axial_force_free, check_radial_force_free, check_ran
 from ...roller_contact import roller_contact
 from ...roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating, RollerRaceways,
                                    check_axial_displacement, prescribed_coordinates, roller_contact_loadings,
-                                   roller_raceways, roller_results, roller_stiffness_matrix, solve_roller_equilibrium)
+                                   roller_raceways, roller_results, roller_stiffness_matrix, solve_roller_equilibrium,
+                                   tapered_axial_load_needed)
 from ...roller_geometry import ROLLER_KINDS
 from ..formatting import (element_table_lines, format_number, state_column, stiffness_lines, swept_display,
                           to_display)
@@ -158,7 +159,8 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
            "validity.approach_ratio": approach_ratio(bearing, rollers),
            "validity.speed_factor": jax.lax.stop_gradient(speed_factor(operating.inner_speed - operating.outer_speed,
                                                                        raceways.pitch_diameter)),
-           "validity.bearing_factor": jnp.asarray(BEARING_FACTORS[bearing.kind])}
+           "validity.bearing_factor": jnp.asarray(BEARING_FACTORS[bearing.kind]),
+           "validity.missing_axial_load": jax.lax.stop_gradient(missing_axial_load(bearing, raceways, operating, model))}
     for side in ("inner", "outer"):
         out |= {f"rollers.{side}.load": getattr(rollers, f"{side}_load"),
                 f"rollers.{side}.lamina_load": getattr(rollers, f"{side}_lamina_load"),
@@ -170,9 +172,20 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     return out
 
 
+def missing_axial_load(bearing, raceways, operating, model):
+    """max(0, F_r tan α_o + Z F_c sin α_o cos α_m / cos θ − F_z) [N]: the axial load a tapered
+    roller bearing lacks for any equilibrium to exist (`tapered_axial_load_needed`; at speed the
+    rollers' centrifugal force, which the cup takes, raises it); 0 for a cylindrical bearing and
+    under operating.axial_displacement (Fz an output)."""
+    if operating.axial_displacement is not None:
+        return jnp.asarray(0.0)
+    return jnp.maximum(tapered_axial_load_needed(bearing, raceways, operating, model) - operating.force[2], 0.0)
+
+
 def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
-    """Errors: a solver that did not converge, a lamina approach beyond the model; warnings: a peak
-    pressure above the ISO 76 static limit, a speed above the type's n·d_m (`BEARING_FACTORS`)."""
+    """Errors: a tapered bearing short of the axial load any equilibrium needs at its speed, a
+    solver that did not converge, a lamina approach beyond the model; warnings: a peak pressure
+    above the ISO 76 static limit, a speed above the type's n·d_m (`BEARING_FACTORS`)."""
     errors, warnings = [], []
     factor, limit = float(values["validity.speed_factor"]), SPEED_FACTOR_WARNING / float(values["validity.bearing_factor"])
     if factor > limit:
@@ -180,7 +193,13 @@ def _equilibrium_checks(values: dict) -> tuple[list[str], list[str]]:
                         f"(a ball bearing's {SPEED_FACTOR_WARNING:.0e} over its bearing factor "
                         f"{float(values['validity.bearing_factor']):g}; the rib, cage and lubrication, not modelled "
                         "here, set the limit)")
-    if not bool(values["converged"]):
+    missing = float(values["validity.missing_axial_load"])
+    if missing > 0.0:
+        errors.append(f"no equilibrium exists: the axial load is {missing:.4g} N short of F_r tan α_o + Z F_c sin α_o "
+                      "cos α_m / cos θ, what a tapered roller bearing needs at this speed (each roller's centrifugal "
+                      "force F_c presses it on the cup, whose axial push the cone must take besides the radial load's; "
+                      "raise Fz or set the bearing by operating.axial_displacement)")
+    elif not bool(values["converged"]):
         errors.append(f"roller bearing equilibrium solver did not converge: largest scaled residual "
                       f"{float(values['residual']):.1e} (tolerance {RESIDUAL_TOLERANCE:g})")
     elif float(values["validity.approach_ratio"]) > MAX_APPROACH_FRACTION:
@@ -292,6 +311,9 @@ EQUILIBRIUM = Block(
                                                   f"{MAX_APPROACH_FRACTION:g})", in_report=False),
         Output("validity.speed_factor", "", "", "n·d_m of the relative ring speed [mm·r/min]", in_report=False),
         Output("validity.bearing_factor", "", "", "the type's bearing factor b_f: its n·d_m warning is 1e6 / b_f",
+               in_report=False),
+        Output("validity.missing_axial_load", "N", "N", "axial load a tapered bearing lacks for any equilibrium: "
+                                                        "max(0, Fr tan α_o + Z F_c sin α_o cos α_m / cos θ − Fz)",
                in_report=False),
         Output("rollers.azimuth", "rad", "deg", "roller azimuth ψ from +x", column="ψ"),
         *_side_outputs("inner"),
