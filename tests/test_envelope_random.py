@@ -3,16 +3,17 @@
 Valid ball and roller bearings: seeded random draws of geometry, speed and load, solved in batches
 (one compiled program per rolling-element count and bearing type: a batch of hundreds of random
 bearings costs one compilation, where hypothesis's one-example-at-a-time draws would each pay a
-dispatch and the shrinking would re-solve; ball bearings vmapped, roller bearings one after another,
-`one_after_another`; the seed is printed on failure and set by DIFFBEARING_SEED). Every output is finite. At or above the requisite minimum load (ISO 281's
-equivalent load ≥ 0.01 C_r for ball bearings, 0.02 C_r for roller bearings, `minimum_load`, and at
-speed a rolling element's centrifugal force below the load per element), or at standstill, and
-for angular-contact bearings with the axial load to run without a partner, ≥ 99.9 % converge;
-every other case converges or reports the reason the application layer gives (a state outside
-the model, `ball_validity`; a centrifugal force above the load per ball, `light_at_speed`; an
-axial load short of 1.25 F_r tan α₀, or for a tapered roller bearing short of what any
-equilibrium needs at its speed, `without_partner`). The fast profiles run in the default suite,
-the large ones (2000 ball, 400 cylindrical and 400 tapered roller bearings) in the slow suite. Matched pairs of
+dispatch and the shrinking would re-solve; ball bearings vmapped, roller bearings one after
+another, `one_after_another`; the seed is printed on failure and set by DIFFBEARING_SEED). Every
+output is finite. At or above the requisite minimum load (ISO 281's equivalent load ≥ 0.01 C_r
+for ball bearings, 0.02 C_r for roller bearings, `minimum_load`, and at speed a rolling element's
+centrifugal force below the load per element), or at standstill, and for angular-contact bearings
+with the axial load to run without a partner, ≥ 99.9 % converge; every other case converges or
+reports the reason the application layer gives (a state outside the model, `ball_validity`; a
+centrifugal force above the load per ball, `light_at_speed`; an axial load short of
+1.25 F_r tan α₀, or for a tapered roller bearing short of what any equilibrium needs at its
+speed, `without_partner`). The fast profiles run in the default suite, the large ones (2000 ball,
+400 cylindrical and 400 tapered roller bearings) in the slow suite. Matched pairs of
 angular-contact bearings (back-to-back, face-to-face preloaded, tandem) under random radial,
 axial and tilting loads at speed: 24 back-to-back pairs in the slow suite, 1200 pairs of every
 arrangement in the extended one; and 400 angular-contact bearings with their tilts free (no
