@@ -67,11 +67,13 @@ at the solve's balls (`solved_ball_positions`: the balls' implicit derivative, n
 Newton in the derivative's program; 37 671 → 34 434 StableHLO lines for the README's gradient). `ball_positions`
 solves the balls per ball (2×2 Newton steps) for a given Δ and carries the implicit-function
 derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ (`implicit_root`, block by block), so the ring force
-F(Δ) has exact total derivatives and the stiffness K = dF/dΔ (balls re-equilibrated) is
-`jax.jacfwd(ring_force)`. Given the solve's ball centres (`Equilibrium.ball_centres`), `ring_force`,
-`stiffness_matrix` and `ball_results` take the balls as solved there and keep only their implicit
-derivative (`solved_ball_positions`): a program holding the solve and its stiffness traces one
-ball solve, not three.
+F(Δ) has exact total derivatives. The stiffness K = dF/dΔ (balls re-equilibrated) is the Schur
+complement of one exact linearisation at the balls' equilibrium (`stiffness_at_balls`): the same
+as `jax.jacfwd(ring_force)` to rounding, in a smaller program. Given the solve's ball centres
+(`Equilibrium.ball_centres`), `ring_force`, `stiffness_matrix` and `ball_results` take the balls
+as solved there and keep only their implicit derivative (`solved_ball_positions`): a program
+holding the solve and its stiffness traces one ball solve, not three; `stiffness_at_balls` takes
+the balls with their derivative (`ball_results(...).centre`) and adds no second one.
 """
 
 import dataclasses
@@ -609,12 +611,13 @@ def _static_ring_residual(y, args, constants):
     return _scaled_ring_residual(_ring_force_of_state(bearing, state, model), y, args)
 
 
-def _ring_and_ball_residuals(displacement, positions, bearing, operating, model, constants, free: _FreeBalls):
+def _ring_and_ball_residuals(displacement, positions, bearing, operating, model, constants, free: _FreeBalls,
+                             table=None):
     """Each ball's share of the ring force (Z, 5) [N, N·m] and the ball residuals (Z, 2) [N] (free
     balls: their placeholder) at ring displacement Δ and ball centres X, with the Hertz constants
-    held at `constants`."""
+    held at `constants` (None: at the contact angles, from `table`)."""
     centres = inner_groove_centres(bearing, displacement)
-    state = ball_state(bearing, operating, centres, positions, model, constants)
+    state = ball_state(bearing, operating, centres, positions, model, constants, table)
     contributions = _ring_force_contributions(bearing, state, model)
     return contributions, _with_free_balls(sum(contact_forces(bearing, state, model).values()), positions, free)
 
@@ -634,12 +637,15 @@ class CondensedBalls(eqx.Module):
 
 
 def condensed_balls(displacement, positions, bearing: BallBearing, operating: Operating, model: BallModel,
-                    table=None) -> CondensedBalls:
+                    table=None, exact: bool = False) -> CondensedBalls:
     """The bearing's balls at ring displacement Δ [m, rad] and ball centres X (Z, 2) [m] condensed
     onto the ring (`CondensedBalls`), for a Newton step of ring (or shaft) and ball unknowns together.
 
     The Hertz constants are evaluated once at the current contact angles and held in the
-    Jacobian, which leaves out their weak angle dependence; the residuals are exact. The Jacobian
+    Jacobian, which leaves out their weak angle dependence; the residuals are exact. With `exact`
+    the Jacobian follows the constants' angle dependence too and each ball's block is solved as it
+    stands (no shift): at a solution, `condensed_stiffness` is then the stiffness dF/dΔ with the
+    balls re-equilibrated (`stiffness_matrix`). The Jacobian
     is block-arrow: 5 JVP tangents give the ring columns, and 2 tangents with the same unit on
     every ball give all 2×2 ball blocks and the 5×2 couplings of each ball (ball j's residual and
     its share of the ring force depend on X_j alone). The condensation is the block elimination
@@ -650,16 +656,18 @@ def condensed_balls(displacement, positions, bearing: BallBearing, operating: Op
     tangents = (jnp.concatenate([jnp.eye(5), jnp.zeros((2, 5))]),
                 jnp.concatenate([jnp.zeros((5, count, 2)), jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2))]))
     centres = inner_groove_centres(bearing, displacement)
-    constants = hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
+    constants = None if exact else hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
     free = _free_ball_equations(bearing, operating, centres, model, table)
     (contributions, balls), linear = jax.linearize(
-        lambda d, x: _ring_and_ball_residuals(d, x, bearing, operating, model, constants, free), displacement, positions)
+        lambda d, x: _ring_and_ball_residuals(d, x, bearing, operating, model, constants, free, table),
+        displacement, positions)
     d_shares, d_balls = jax.vmap(linear)(*tangents)
     ring_ring = jnp.sum(d_shares[:5], axis=1).T  # (5, 5)
     balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
     ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
     balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
-    solved = _solve_ball_blocks(balls_balls, jnp.concatenate([balls[..., None], balls_ring], axis=-1), free.scale)
+    rhs = jnp.concatenate([balls[..., None], balls_ring], axis=-1)
+    solved = jnp.linalg.solve(balls_balls, rhs) if exact else _solve_ball_blocks(balls_balls, rhs, free.scale)
     force = jnp.sum(contributions, axis=0)
     return CondensedBalls(force, force - jnp.einsum("jab,jb->a", ring_balls, solved[..., 0]),
                           ring_ring - jnp.einsum("jab,jbc->ac", ring_balls, solved[..., 1:]), solved[..., 0],
@@ -821,10 +829,31 @@ def relative_ball_residual(bearing: BallBearing, operating: Operating, centres, 
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel(),
                      ball_centres=None):
-    """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated (exact, jacfwd;
-    with speed effects through the balls' implicit derivative). `ball_centres`: the solved balls at Δ
-    (`Equilibrium.ball_centres`); without them the balls are solved here."""
-    return jax.jacfwd(ring_force)(displacement, bearing, operating, model, constant_table(bearing, model), ball_centres)
+    """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated, exact
+    (`stiffness_at_balls`). `ball_centres`: the solved balls at Δ (`Equilibrium.ball_centres`);
+    without them the balls are solved here."""
+    table = constant_table(bearing, model)
+    positions = (equilibrium_positions(displacement, bearing, operating, model, table, ball_centres)
+                 if model.speed_effects else None)
+    return _stiffness(displacement, positions, bearing, operating, model, table)
+
+
+def stiffness_at_balls(displacement, positions, bearing: BallBearing, operating: Operating,
+                       model: BallModel = BallModel()):
+    """5×5 stiffness K = dF/dΔ at a solved state: Δ [m, rad] and the balls' equilibrium X (Z, 2) [m]
+    there, X carrying its own derivative (`ball_results(...).centre`), so nothing is solved again.
+
+    Without speed effects `jax.jacfwd` of the static ring force (X not read). With them, one
+    linearisation at (Δ, X): K = J_FΔ − J_FX J_XX⁻¹ J_XΔ, the Schur complement of the balls' 2×2
+    blocks (`condensed_balls` with `exact`); equal to `jax.jacfwd(ring_force)` through the balls'
+    implicit derivative to rounding, and differentiable through Δ and X."""
+    return _stiffness(displacement, positions, bearing, operating, model, constant_table(bearing, model))
+
+
+def _stiffness(displacement, positions, bearing, operating, model, table):
+    if not model.speed_effects:
+        return jax.jacfwd(ring_force)(displacement, bearing, operating, model, table)
+    return condensed_balls(displacement, positions, bearing, operating, model, table, exact=True).condensed_stiffness
 
 
 class BallResults(eqx.Module):

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from diffbearing.ball_equilibrium import (BallModel, ball_results, ring_force, solve_equilibrium,
-                                          stiffness_matrix)
+                                          stiffness_at_balls, stiffness_matrix)
 from diffbearing.params import Operating, ball_bearing
 from diffbearing import build_model, load_scene
 
@@ -172,7 +172,8 @@ def test_stiffness_matches_central_difference(solve, aero_bearing, aero_force, s
 
 def test_the_solved_ball_centres_give_the_balls_and_stiffness_of_a_new_ball_solve(solve, aero_bearing):
     """`ball_results` and `stiffness_matrix` given the solve's ball centres equal those that solve the
-    balls again at Δ (to the per-ball tolerance, 1e-13 D_w: relative 1e-9), and trace no Newton loop."""
+    balls again at Δ (to the per-ball tolerance, 1e-13 D_w: relative 1e-9), and trace no Newton loop;
+    `stiffness_at_balls` at the solved balls (as the scenes run it) is `stiffness_matrix` to 1e-12."""
     bearing, operating = aero_bearing["bearing"], aero_bearing["operating"]
     solution, balls, stiffness = solve(bearing, operating)
     assert bool(solution.converged)
@@ -182,6 +183,9 @@ def test_the_solved_ball_centres_give_the_balls_and_stiffness_of_a_new_ball_solv
     for field in ("inner_load", "outer_load", "inner_contact_angle", "outer_contact_angle", "centre"):
         np.testing.assert_allclose(getattr(balls, field), getattr(balls_again, field), rtol=1e-9,
                                    atol=1e-9 * float(jnp.max(jnp.abs(getattr(balls, field)))))
+    at_balls = jax.jit(lambda d, x: stiffness_at_balls(d, x, bearing, operating, SPEED))(solution.displacement,
+                                                                                         balls.centre)
+    np.testing.assert_allclose(at_balls, stiffness, rtol=1e-12, atol=1e-12 * float(jnp.max(jnp.abs(stiffness))))
     solved = jax.make_jaxpr(lambda d, c: stiffness_matrix(d, bearing, operating, SPEED, c))(
         solution.displacement, solution.ball_centres)
     resolved = jax.make_jaxpr(lambda d: stiffness_matrix(d, bearing, operating, SPEED))(solution.displacement)
@@ -381,6 +385,32 @@ def test_stiffness_derivative_matches_central_difference(aero_bearing):
         step = jnp.zeros(2).at[k].set(h)
         central = (value(point + step) - value(point - step)) / (2 * h)
         np.testing.assert_allclose(derivative[k], central, rtol=1e-5)
+
+
+@pytest.mark.slow
+def test_stiffness_at_the_solved_balls_differentiates_as_the_stiffness_matrix(aero_bearing):
+    """d K_zz/d f_i and d K_zz/d F_z at 12 000 r/min (forward mode) of `stiffness_at_balls` at the
+    solve's Δ and balls (`ball_results(...).centre`, each with its implicit derivative: the scenes'
+    way) equal those of `stiffness_matrix` solving its balls at Δ (checked against central
+    differences in `test_stiffness_derivative_matches_central_difference`), to 1e-9."""
+    import equinox as eqx
+
+    operating = Operating(12000 * RPM, 0.0, aero_bearing["operating"].force, aero_bearing["operating"].moment)
+
+    def axial_stiffness(parameters, at_balls):
+        inner_ratio, axial_force = parameters
+        bearing = eqx.tree_at(lambda b: b.inner_groove_ratio, aero_bearing["bearing"], inner_ratio)
+        loaded = eqx.tree_at(lambda o: o.force, operating, jnp.asarray(operating.force).at[2].set(axial_force))
+        solution = solve_equilibrium(bearing, loaded, SPEED)
+        if at_balls:
+            centre = ball_results(solution.displacement, bearing, loaded, SPEED, solution.ball_centres).centre
+            return stiffness_at_balls(solution.displacement, centre, bearing, loaded, SPEED)[2, 2]
+        return stiffness_matrix(solution.displacement, bearing, loaded, SPEED)[2, 2]
+
+    point = jnp.array([float(aero_bearing["bearing"].inner_groove_ratio), float(operating.force[2])])
+    scenes_way, reference = (jax.jit(jax.jacfwd(lambda p, a=at_balls: axial_stiffness(p, a)))(point)
+                             for at_balls in (True, False))
+    np.testing.assert_allclose(scenes_way, reference, rtol=1e-9)
 
 
 def test_negative_clearance_squeezes_every_ball_by_half_the_interference():

@@ -498,8 +498,9 @@ EQUILIBRIUM = Block(
 # --- stiffness ---------------------------------------------------------------------------------
 
 def _stiffness(inputs: dict, settings: dict, results: dict) -> dict:
-    matrix = ball_equilibrium.stiffness_matrix(results["displacement"], inputs["bearing"], inputs["operating"],
-                                               ball_model(settings), results["balls.centre"])
+    # at the equilibrium block's balls, which carry their implicit derivative: no ball solve again
+    matrix = ball_equilibrium.stiffness_at_balls(results["displacement"], results["balls.centre"], inputs["bearing"],
+                                                 inputs["operating"], ball_model(settings))
     return {"stiffness": matrix}
 
 
