@@ -2,6 +2,9 @@
 
     python benchmarks/compile_time.py [--examples NAME ...] [--films]
 
+With --examples, the named examples' rows (and the gradient's) are measured and the others kept
+from the last table written.
+
 For every packaged example (the 2-D EHL example `starved_roller` only with `--films`: minutes of
 compiling and running its numerical films), each in fresh processes:
 
@@ -82,6 +85,15 @@ def program(name: str, gradient: bool = False) -> dict:
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
+def _table_rows() -> list[str]:
+    """The example rows of the last written table (the gradient's row left out)."""
+    path = RESULTS / "compile_time.md"
+    if not path.is_file():
+        return []
+    return [line for line in path.read_text().splitlines()
+            if line.startswith("| ") and not line.startswith(("| example", "| README")) and "---" not in line]
+
+
 def main() -> None:
     from diffbearing.app.scene import examples
     from timing import machine
@@ -115,10 +127,15 @@ def main() -> None:
         return (f"{m['trace_s'] + m['lower_s']:.1f} | {m['lines']} | {m['compile_default_s']:.1f} / "
                 f"{m['compile_quick_s']:.1f} | {1e3 * m['run_default_s']:.2f} / {1e3 * m['run_quick_s']:.2f}")
 
-    for name, cold, timing, warm, measured in rows:
-        lines.append(f"| {name} | {cold:.1f} | {timing['compile_s']:.1f} | {1e3 * timing['run_s']:.1f} | {warm:.1f} | "
-                     + program_cells(measured) + " |")
-    lines.append("| README's `jax.grad` of K_zz | | | | | " + program_cells(gradient) + " |")
+    measured_rows = {name: f"| {name} | {cold:.1f} | {timing['compile_s']:.1f} | {1e3 * timing['run_s']:.1f} | "
+                           f"{warm:.1f} | " + program_cells(measured) + " |"
+                     for name, cold, timing, warm, measured in rows}
+    gradient_row = "| README's `jax.grad` of K_zz | | | | | " + program_cells(gradient) + " |"
+    # with --examples, the other examples' rows stay as the last full run left them
+    kept = {line.split(" | ")[0][2:]: line for line in _table_rows()} if options.examples else {}
+    for name in sorted(set(kept) | set(measured_rows)):
+        lines.append(measured_rows.get(name, kept[name]))
+    lines.append(gradient_row)
     RESULTS.mkdir(exist_ok=True)
     (RESULTS / "compile_time.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
