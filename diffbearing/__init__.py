@@ -14,6 +14,7 @@ from .ball_equilibrium import (
     ball_results as ball_results,
     ring_force as ring_force,
     solve_equilibrium as solve_equilibrium,
+    solve_with_balls as solve_with_balls,
     stiffness_at_balls as stiffness_at_balls,
     stiffness_matrix as stiffness_matrix,
 )

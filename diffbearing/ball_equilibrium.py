@@ -778,6 +778,20 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     forward and reverse mode). At a singular stiffness (zero load, or a direction the bearing does
     not resist) the adjoint uses a least-squares pseudo-inverse: finite, not a true derivative.
     """
+    return _solve(bearing, operating, model)[0]
+
+
+def solve_with_balls(bearing: BallBearing, operating: Operating,
+                     model: BallModel = BallModel()) -> tuple[Equilibrium, "BallResults"]:
+    """`solve_equilibrium` and the `ball_results` at its solution, both from the one solved state:
+    the balls' implicit derivative and the Hertz constants' table are traced once, not again for
+    the per-ball results (the scenes' equilibrium block)."""
+    solution, state, positions, table = _solve(bearing, operating, model)
+    return solution, _ball_results_of_state(bearing, model, state, positions)
+
+
+def _solve(bearing: BallBearing, operating: Operating, model: BallModel):
+    """(`Equilibrium`, the ball state at it, the ball centres (Z, 2) [m], the Hertz constants' table)."""
     require_float64()
     table = constant_table(bearing, model)
     unknown, weight, load_scale = _scales(bearing, operating, model, table)
@@ -799,8 +813,10 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     if model.speed_effects:  # the balls of the joint solve, with their implicit derivative
         positions = solved_ball_positions(positions, displacement, bearing, operating, model, table)
         state = ball_state(bearing, operating, centres, positions, model, table=table)
-    else:
-        state = _static_state(bearing, operating, centres, model, table=table)
+    else:  # `_static_state`, its positions kept
+        constants = _static_constants(bearing, centres, model, table)
+        positions = static_positions(bearing, centres, model, constants)
+        state = ball_state(bearing, operating, centres, positions, model, constants)
     force = _ring_force_of_state(bearing, state, model)
     ring_residual = jnp.max(jnp.abs(_scaled_ring_residual(force, y, args)))
     residual = ring_residual
@@ -812,9 +828,10 @@ def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallMod
     contact_angle = jax.lax.stop_gradient(ball_validity.largest_contact_angle(
         state["inner_angle"], state["outer_angle"], state["inner_load"], state["outer_load"]))
     converged = (residual < RESIDUAL_TOLERANCE) & ball_validity.within_model(approach_ratio, contact_angle)
-    return Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
-                       steps.astype(static_steps.dtype),
-                       jax.lax.stop_gradient(positions) if model.speed_effects else None)
+    solution = Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
+                           steps.astype(static_steps.dtype),
+                           jax.lax.stop_gradient(positions) if model.speed_effects else None)
+    return solution, state, positions, table
 
 
 def relative_ball_residual(bearing: BallBearing, operating: Operating, centres, state: dict, model: BallModel, load_scale):
@@ -891,7 +908,12 @@ def ball_results(displacement, bearing: BallBearing, operating: Operating, model
     table = constant_table(bearing, model)
     centres = inner_groove_centres(bearing, displacement)
     positions = equilibrium_positions(displacement, bearing, operating, model, table, ball_centres)
-    state = ball_state(bearing, operating, centres, positions, model, table=table)
+    return _ball_results_of_state(bearing, model, ball_state(bearing, operating, centres, positions, model, table=table),
+                                  positions)
+
+
+def _ball_results_of_state(bearing: BallBearing, model: BallModel, state: dict, positions) -> BallResults:
+    """`BallResults` of a ball state (`ball_state`) at ball centres `positions` (Z, 2) [m]."""
     modulus = ball_raceway_modulus(bearing)
     inner, outer = (hertz.point_contact(state[f"{side}_load"], *curvature(bearing, state[f"{side}_angle"]), modulus,
                                         model.hertz_method)

@@ -5,7 +5,7 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.ball_equilibrium import (BallModel, ball_results, ring_force, solve_equilibrium,
+from diffbearing.ball_equilibrium import (BallModel, ball_results, ring_force, solve_equilibrium, solve_with_balls,
                                           stiffness_at_balls, stiffness_matrix)
 from diffbearing.params import Operating, ball_bearing
 from diffbearing import build_model, load_scene
@@ -24,9 +24,9 @@ def deep_groove_6411E(radial_clearance=28e-6):
 
 
 def solve_everything(bearing, operating):
-    """The solution, its balls and its stiffness, both from the solve's ball centres (as the scenes run them)."""
-    solution = solve_equilibrium(bearing, operating, SPEED)
-    results = ball_results(solution.displacement, bearing, operating, SPEED, solution.ball_centres)
+    """The solution, its balls (from the solved state, as the scenes run them) and its stiffness
+    from the solve's ball centres."""
+    solution, results = solve_with_balls(bearing, operating, SPEED)
     stiffness = stiffness_matrix(solution.displacement, bearing, operating, SPEED, solution.ball_centres)
     return solution, results, stiffness
 
@@ -173,7 +173,8 @@ def test_stiffness_matches_central_difference(solve, aero_bearing, aero_force, s
 def test_the_solved_ball_centres_give_the_balls_and_stiffness_of_a_new_ball_solve(solve, aero_bearing):
     """`ball_results` and `stiffness_matrix` given the solve's ball centres equal those that solve the
     balls again at Δ (to the per-ball tolerance, 1e-13 D_w: relative 1e-9), and trace no Newton loop;
-    `stiffness_at_balls` at the solved balls (as the scenes run it) is `stiffness_matrix` to 1e-12."""
+    the balls of the solved state (`solve_with_balls`) are `ball_results` at the solve's centres and
+    `stiffness_at_balls` at them (as the scenes run it) is `stiffness_matrix`, both to 1e-12."""
     bearing, operating = aero_bearing["bearing"], aero_bearing["operating"]
     solution, balls, stiffness = solve(bearing, operating)
     assert bool(solution.converged)
@@ -183,6 +184,10 @@ def test_the_solved_ball_centres_give_the_balls_and_stiffness_of_a_new_ball_solv
     for field in ("inner_load", "outer_load", "inner_contact_angle", "outer_contact_angle", "centre"):
         np.testing.assert_allclose(getattr(balls, field), getattr(balls_again, field), rtol=1e-9,
                                    atol=1e-9 * float(jnp.max(jnp.abs(getattr(balls, field)))))
+    given = jax.jit(lambda d, c: ball_results(d, bearing, operating, SPEED, c))(solution.displacement,
+                                                                               solution.ball_centres)
+    for field, value in vars(balls).items():
+        np.testing.assert_allclose(getattr(given, field), value, rtol=1e-12, atol=1e-12 * float(jnp.max(jnp.abs(value))))
     at_balls = jax.jit(lambda d, x: stiffness_at_balls(d, x, bearing, operating, SPEED))(solution.displacement,
                                                                                          balls.centre)
     np.testing.assert_allclose(at_balls, stiffness, rtol=1e-12, atol=1e-12 * float(jnp.max(jnp.abs(stiffness))))

@@ -206,8 +206,7 @@ _BALL_FIELDS = ("load", "contact_angle", "max_pressure", "semi_major_axis", "sem
 def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
     model = ball_model(settings)
     bearing, operating = inputs["bearing"], inputs["operating"]
-    solution = ball_equilibrium.solve_equilibrium(bearing, operating, model)
-    balls = ball_equilibrium.ball_results(solution.displacement, bearing, operating, model, solution.ball_centres)
+    solution, balls = ball_equilibrium.solve_with_balls(bearing, operating, model)
     out = {"balls.centre": balls.centre, "displacement": solution.displacement, "force": solution.force,
            "prescribed": ball_equilibrium.prescribed_coordinates(operating),
            "free_tilt": free_tilt(solution.displacement, operating), "converged": solution.converged,
