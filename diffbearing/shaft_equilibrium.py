@@ -337,17 +337,17 @@ def _joint_solve(start, args):
     """(y, per bearing its ball centres or None, steps) of the structure and the balls together
     (`_joint_step`), from the static solution `start`, continued in speed as one bearing's ring
     solve is (`ball_equilibrium._ring_solve`): the speed rises in `ball_equilibrium.SPEED_STAGES`,
-    each stage's Newton from the last one's solution, the balls first solved at the start at the
-    first stage's speed (`ball_equilibrium.ball_positions`), a stage that fails keeping the last
-    solution. Without line search; each ball's step limited to a tenth of its radius
+    each stage's Newton from the last one's solution, the balls from their start at the static
+    solution and the first stage's speed (`ball_equilibrium.start_positions`), a stage that fails
+    keeping the last solution. Without line search; each ball's step limited to a tenth of its radius
     (`ball_equilibrium.limited_ball_step`); each stage stops when every structure step component
     is below `ball_equilibrium.RING_STEP_TOLERANCE` (1 + |y|) and every ball step below
     `ball_equilibrium.BALL_POSITION_TOLERANCE` D_w."""
     supports, speed, tables, structure, unknown, weight, load_scale = args
     fractions = jnp.asarray(ball_equilibrium.SPEED_STAGES)
     jointly = balls_solved_jointly(supports)
-    positions = tuple(ball_equilibrium.ball_positions(_local(unknown * start, support, move), support.bearing,
-                                                      _operating(support, fractions[0] * speed), support.model, table)
+    positions = tuple(ball_equilibrium.start_positions(_local(unknown * start, support, move), support.bearing,
+                                                       _operating(support, fractions[0] * speed), support.model, table)
                       if joint else None
                       for support, table, move, joint in zip(supports, tables, structure.moves, jointly))
 
