@@ -78,11 +78,14 @@ def contact_constant_table(bearing: BallBearing, method="exact") -> ContactConst
 
 
 def _clenshaw(coefficients, t):
-    """Σ_j c_j T_j(t) by Clenshaw's recurrence (polynomial operations only: smooth derivatives)."""
-    upper = jnp.zeros_like(t)
-    lower = jnp.zeros_like(t)
-    for coefficient in coefficients[:0:-1]:
-        upper, lower = 2.0 * t * upper - lower + coefficient, upper
+    """Σ_j c_j T_j(t) by Clenshaw's recurrence (polynomial operations only: smooth derivatives),
+    one `lax.scan` step per coefficient (a program holds the recurrence once per call, not unrolled)."""
+    def step(carry, coefficient):
+        upper, lower = carry
+        return (2.0 * t * upper - lower + coefficient, upper), None
+
+    zeros = jnp.zeros_like(t)
+    (upper, lower), _ = jax.lax.scan(step, (zeros, zeros), coefficients[:0:-1])
     return t * upper - lower + coefficients[0]
 
 
