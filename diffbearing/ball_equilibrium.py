@@ -62,18 +62,18 @@ evaluates the Hertz constants once at the current contact angles and holds them 
 (their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
 from a Chebyshev table of K(α) that it builds from the bearing (`constant_table`) and passes
 down as `table`. The implicit derivative of the solution uses the exact linearisation
-(`newton.implicit_root`, least squares on the 5×5 Jacobian of `ring_force`), with speed effects
-at the solve's balls (`solved_ball_positions`: the balls' implicit derivative, no second ball
-Newton in the derivative's program; 37 671 → 34 434 StableHLO lines for the README's gradient). `ball_positions`
-solves the balls per ball (2×2 Newton steps) for a given Δ and carries the implicit-function
-derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ (`implicit_root`, block by block), so the ring force
-F(Δ) has exact total derivatives. The stiffness K = dF/dΔ (balls re-equilibrated) is the Schur
-complement of one exact linearisation at the balls' equilibrium (`stiffness_at_balls`): the same
-as `jax.jacfwd(ring_force)` to rounding, in a smaller program. Given the solve's ball centres
-(`Equilibrium.ball_centres`), `ring_force`, `stiffness_matrix` and `ball_results` take the balls
-as solved there and keep only their implicit derivative (`solved_ball_positions`): a program
-holding the solve and its stiffness traces one ball solve, not three; `stiffness_at_balls` takes
-the balls with their derivative (`ball_results(...).centre`) and adds no second one.
+(`newton.implicit_root`, least squares on the 5×5 Jacobian of `ring_force`), with speed effects at
+the solve's balls (`solved_ball_positions`: the balls' implicit derivative, no second ball Newton
+in the derivative's program). `ball_positions` solves the balls per ball (2×2 Newton steps) for a
+given Δ and carries the implicit-function derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ
+(`implicit_root`, block by block), so the ring force F(Δ) has exact total derivatives. The
+stiffness K = dF/dΔ (balls re-equilibrated) is the Schur complement of one exact linearisation at
+the balls' equilibrium (`stiffness_at_balls`): the same as `jax.jacfwd(ring_force)` to rounding, in
+a smaller program. Given the solve's ball centres (`Equilibrium.ball_centres`), `ring_force`,
+`stiffness_matrix` and `ball_results` take the balls as solved there and keep only their implicit
+derivative (`solved_ball_positions`): a program holding the solve and its stiffness traces one ball
+solve, not three; `stiffness_at_balls` takes the balls with their derivative
+(`ball_results(...).centre`) and adds no second one.
 """
 
 import dataclasses
