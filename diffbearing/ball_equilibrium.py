@@ -197,14 +197,14 @@ def _static_constants(bearing: BallBearing, centres, model: BallModel, table=Non
     return hertz_constants(bearing, angle, angle, model, table)
 
 
-def _static_state(bearing: BallBearing, operating: Operating, centres, model: BallModel, constants=None,
+def _static_split(bearing: BallBearing, operating: Operating, centres, model: BallModel, constants=None,
                   table=None):
-    """`ball_state` at the static split, with the Hertz constants evaluated once for both contacts
-    (they lie on the line of groove centres, at the same angle)."""
+    """(ball centres (Z, 2) [m], their `ball_state`) at the static split, with the Hertz constants
+    evaluated once for both contacts (they lie on the line of groove centres, at the same angle)."""
     if constants is None:
         constants = _static_constants(bearing, centres, model, table)
     positions = static_positions(bearing, centres, model, constants)
-    return ball_state(bearing, operating, centres, positions, model, constants)
+    return positions, ball_state(bearing, operating, centres, positions, model, constants)
 
 
 def _contact_angles(centres, positions):
@@ -489,7 +489,7 @@ def ring_force(displacement, bearing: BallBearing, operating: Operating, model: 
         positions = equilibrium_positions(displacement, bearing, operating, model, table, ball_centres)
         state = ball_state(bearing, operating, centres, positions, model, table=table)
     else:
-        state = _static_state(bearing, operating, centres, model, table=table)
+        _, state = _static_split(bearing, operating, centres, model, table=table)
     return _ring_force_of_state(bearing, state, model)
 
 
@@ -614,7 +614,7 @@ def _static_ring_residual(y, args, constants):
     """Scaled ring residual at the static split with the Hertz constants (K_i, K_o) held at `constants`."""
     bearing, operating, model, _, unknown, _, _ = args
     centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
-    state = _static_state(bearing, operating, centres, model, constants)
+    _, state = _static_split(bearing, operating, centres, model, constants)
     return _scaled_ring_residual(_ring_force_of_state(bearing, state, model), y, args)
 
 
@@ -722,8 +722,7 @@ def _ring_solve(residual, start, args):
     `SPEED_STAGES` (fractions whose squares, and so the centrifugal forces and gyroscopic moments,
     rise in equal steps), each stage's Newton starting from the last one's solution, the balls
     from `start_positions` at the static ring position and the first stage's speed (the joint Newton
-    solves them: a per-ball Newton before it changed no outcome of the random profiles, 2000 and
-    400 bearings, and cost 1 765 StableHLO lines of the default scene's 14 542). At once
+    solves them; no per-ball Newton of their own first). At once
     from the static solution, Newton's first steps can carry a light or radially loaded ring past
     the clearance, where contacts switch and the iteration wanders off (measured: 12 % of random
     angular-contact bearings at speed ended unconverged or on a spurious root, docs/theory.md
@@ -795,12 +794,12 @@ def solve_with_balls(bearing: BallBearing, operating: Operating,
     """`solve_equilibrium` and the `ball_results` at its solution, both from the one solved state:
     the balls' implicit derivative and the Hertz constants' table are traced once, not again for
     the per-ball results (the scenes' equilibrium block)."""
-    solution, state, positions, table = _solve(bearing, operating, model)
+    solution, state, positions = _solve(bearing, operating, model)
     return solution, _ball_results_of_state(bearing, model, state, positions)
 
 
 def _solve(bearing: BallBearing, operating: Operating, model: BallModel):
-    """(`Equilibrium`, the ball state at it, the ball centres (Z, 2) [m], the Hertz constants' table)."""
+    """(`Equilibrium`, the ball state at it, the ball centres (Z, 2) [m])."""
     require_float64()
     table = constant_table(bearing, model)
     unknown, weight, load_scale = _scales(bearing, operating, model, table)
@@ -822,10 +821,8 @@ def _solve(bearing: BallBearing, operating: Operating, model: BallModel):
     if model.speed_effects:  # the balls of the joint solve, with their implicit derivative
         positions = solved_ball_positions(positions, displacement, bearing, operating, model, table)
         state = ball_state(bearing, operating, centres, positions, model, table=table)
-    else:  # `_static_state`, its positions kept
-        constants = _static_constants(bearing, centres, model, table)
-        positions = static_positions(bearing, centres, model, constants)
-        state = ball_state(bearing, operating, centres, positions, model, constants)
+    else:
+        positions, state = _static_split(bearing, operating, centres, model, table=table)
     force = _ring_force_of_state(bearing, state, model)
     ring_residual = jnp.max(jnp.abs(_scaled_ring_residual(force, y, args)))
     residual = ring_residual
@@ -840,7 +837,7 @@ def _solve(bearing: BallBearing, operating: Operating, model: BallModel):
     solution = Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
                            steps.astype(static_steps.dtype),
                            jax.lax.stop_gradient(positions) if model.speed_effects else None)
-    return solution, state, positions, table
+    return solution, state, positions
 
 
 def relative_ball_residual(bearing: BallBearing, operating: Operating, centres, state: dict, model: BallModel, load_scale):

@@ -267,8 +267,7 @@ def classify_rollers(out: dict) -> dict[str, np.ndarray]:
 def one_after_another(solve_one):
     """A batch's cases solved one after another in one compiled program (`lax.map`), not vmapped:
     under `vmap` every case's nested roller Newtons (a while loop inside each ring step) run for as
-    long as the slowest case's, so 50 random tapered bearings at speed took 637 s vmapped and 4.4 s
-    mapped, after the same 30 s compile (2 cores)."""
+    long as the slowest case's."""
     return jax.jit(lambda cases: jax.lax.map(solve_one, cases))
 
 

@@ -204,21 +204,17 @@ def test_a_tapered_bearing_short_of_its_axial_load_at_speed_says_by_how_much(tmp
     F_r tan α_o + Z F_c sin α_o cos α_m / cos θ it needs at this speed. No equilibrium exists: exit 3,
     one line with the shortfall (`tapered_axial_load_needed` less 120 N, to the printed digits),
     every output finite."""
-    from diffbearing import roller_equilibrium as re
-    from diffbearing.roller_geometry import roller_bearing
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.roller_equilibrium import RollerModel, tapered_axial_load_needed
 
-    code, out, err, document = _run(tmp_path, example_scene("tapered_roller_bearing"), "--set",
-                                    'operating.force=["300 N", "0 N", "120 N"]', "--set",
-                                    'operating.inner_speed="9000 r/min"', "--set", "effects.centrifugal=true")
+    overrides = ('operating.force=["300 N", "0 N", "120 N"]', 'operating.inner_speed="9000 r/min"',
+                 "effects.centrifugal=true")
+    code, out, err, document = _run(tmp_path, example_scene("tapered_roller_bearing"),
+                                    *(item for override in overrides for item in ("--set", override)))
     assert code == 3, err
     (error,) = err.strip().splitlines()
-    bearing = roller_bearing(kind="tapered_roller", small_diameter=7e-3, large_diameter=8e-3, length=12e-3,
-                             cone_half_angle=math.radians(2.4), roller_count=18,
-                             profile=roller_profile("johns_gohar", design_load=1e3))
-    raceways = re.roller_raceways(bearing, pitch_diameter=50.686e-3, cup_angle=math.radians(15.0))
-    needed = float(re.tapered_axial_load_needed(bearing, raceways, re.RollerOperating(
-        [300.0, 0.0, 120.0], [0.0, 0.0], inner_speed=9000 * math.pi / 30), re.RollerModel(centrifugal=True)))
+    inputs = build_model(load_scene("tapered_roller_bearing", list(overrides))).inputs
+    needed = float(tapered_axial_load_needed(inputs["bearing"], inputs["raceways"], inputs["operating"],
+                                             RollerModel(centrifugal=True)))
     assert 150.0 < needed < 170.0
     assert f"no equilibrium exists: the axial load is {needed - 120.0:.4g} N short of F_r tan α_o" in error
     assert document["validity"]["missing_axial_load"] == pytest.approx(needed - 120.0, rel=1e-12)
