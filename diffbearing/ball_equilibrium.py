@@ -769,6 +769,9 @@ class Equilibrium(eqx.Module):
     # (Z, 2) ball centres [m] (axial, radial; outer groove centre as origin) with speed effects, else None:
     # hand them to `ring_force`, `stiffness_matrix` or `ball_results` at this Δ, which then solve no balls
     ball_centres: jax.Array | None = None
+    # the table of Hertz constants K(α) the solve built (`constant_table`; None where the model holds
+    # them at α₀), with its derivative: hand it to `stiffness_at_balls`, which then builds none
+    constant_table: ContactConstantTable | None = None
 
 
 def solve_equilibrium(bearing: BallBearing, operating: Operating, model: BallModel = BallModel()) -> Equilibrium:
@@ -836,7 +839,7 @@ def _solve(bearing: BallBearing, operating: Operating, model: BallModel):
     converged = (residual < RESIDUAL_TOLERANCE) & ball_validity.within_model(approach_ratio, contact_angle)
     solution = Equilibrium(displacement, force, converged, residual, approach_ratio, contact_angle, static_steps,
                            steps.astype(static_steps.dtype),
-                           jax.lax.stop_gradient(positions) if model.speed_effects else None)
+                           jax.lax.stop_gradient(positions) if model.speed_effects else None, table)
     return solution, state, positions
 
 
@@ -862,15 +865,19 @@ def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, m
 
 
 def stiffness_at_balls(displacement, positions, bearing: BallBearing, operating: Operating,
-                       model: BallModel = BallModel()):
+                       model: BallModel = BallModel(), table: ContactConstantTable | None = None):
     """5×5 stiffness K = dF/dΔ at a solved state: Δ [m, rad] and the balls' equilibrium X (Z, 2) [m]
     there, X carrying its own derivative (`ball_results(...).centre`), so nothing is solved again.
+    `table`: the solve's table of Hertz constants (`Equilibrium.constant_table`); without it, it is
+    built here.
 
     Without speed effects `jax.jacfwd` of the static ring force (X not read). With them, one
     linearisation at (Δ, X): K = J_FΔ − J_FX J_XX⁻¹ J_XΔ, the Schur complement of the balls' 2×2
     blocks (`condensed_balls` with `exact`); equal to `jax.jacfwd(ring_force)` through the balls'
     implicit derivative to rounding, and differentiable through Δ and X."""
-    return _stiffness(displacement, positions, bearing, operating, model, constant_table(bearing, model))
+    if table is None:
+        table = constant_table(bearing, model)
+    return _stiffness(displacement, positions, bearing, operating, model, table)
 
 
 def _stiffness(displacement, positions, bearing, operating, model, table):
@@ -908,10 +915,12 @@ class BallResults(eqx.Module):
 
 
 def ball_results(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel(),
-                 ball_centres=None) -> BallResults:
+                 ball_centres=None, table: ContactConstantTable | None = None) -> BallResults:
     """Per-ball loads, contact angles, Hertz contact sizes and pressures, kinematics at Δ (SI).
-    `ball_centres`: the solved balls at Δ (`Equilibrium.ball_centres`); without them, solved here."""
-    table = constant_table(bearing, model)
+    `ball_centres`: the solved balls at Δ (`Equilibrium.ball_centres`); without them, solved here.
+    `table`: the solve's table of Hertz constants (`Equilibrium.constant_table`); without it, built here."""
+    if table is None:
+        table = constant_table(bearing, model)
     centres = inner_groove_centres(bearing, displacement)
     positions = equilibrium_positions(displacement, bearing, operating, model, table, ball_centres)
     return _ball_results_of_state(bearing, model, ball_state(bearing, operating, centres, positions, model, table=table),
@@ -920,10 +929,13 @@ def ball_results(displacement, bearing: BallBearing, operating: Operating, model
 
 def _ball_results_of_state(bearing: BallBearing, model: BallModel, state: dict, positions) -> BallResults:
     """`BallResults` of a ball state (`ball_state`) at ball centres `positions` (Z, 2) [m]."""
-    modulus = ball_raceway_modulus(bearing)
-    inner, outer = (hertz.point_contact(state[f"{side}_load"], *curvature(bearing, state[f"{side}_angle"]), modulus,
-                                        model.hertz_method)
-                    for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)))
+    # both sides in one elementwise evaluation: the program holds the ellipticity solve once
+    curvatures = [curvature(bearing, state[f"{side}_angle"])
+                  for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature))]
+    both = hertz.point_contact(jnp.stack([state["inner_load"], state["outer_load"]]),
+                               *(jnp.stack(jnp.broadcast_arrays(*pair)) for pair in zip(*curvatures)),
+                               ball_raceway_modulus(bearing), model.hertz_method)
+    inner, outer = (jax.tree.map(lambda x: x[k], both) for k in (0, 1))
     return BallResults(
         ball_azimuths(bearing),
         state["inner_load"], state["inner_angle"], inner.max_pressure, inner.semi_major_axis, inner.semi_minor_axis,

@@ -40,7 +40,8 @@ from .params import _as_float, _is_concrete
 from .shaft_beam import NODE_DOFS, BeamMesh, ShaftSections, beam_mesh, node_positions, stiffness_matrix
 from .shaft_equilibrium import (DISPLACEMENT_SCALE, RESIDUAL_TOLERANCE, STATIC_GRADIENT_TOLERANCE, Shaft,
                                 ShaftEquilibrium, Structure, balls_solved_jointly, constant_tables, damped_newton,
-                                local_displacement, shaft_scales, solve_jointly, support_energy, support_force, turned)
+                                energy_constants, local_displacement, shaft_scales, solve_jointly, support_energy,
+                                support_force, turned)
 
 
 class FlexibleShaft(eqx.Module):
@@ -138,11 +139,12 @@ def _bearing_locals(u_b, flexible: FlexibleShaft):
 
 
 def _static_energy(y, args):
-    """Scaled ½ U_bᵀ K_c U_b − F_c·U_b + Σ_k E_k(Δ_k) (convex in U_b)."""
-    flexible, unknown, _, load_scale, _, stiffness, force = args
+    """Scaled ½ U_bᵀ K_c U_b − F_c·U_b + Σ_k E_k(Δ_k) (convex in U_b); args' fifth: `energy_constants`."""
+    flexible, unknown, _, load_scale, constants, stiffness, force = args
     u_b = unknown * y
     energy = 0.5 * u_b @ stiffness @ u_b - force @ u_b + sum(
-        support_energy(local, support) for local, support in zip(_bearing_locals(u_b, flexible), flexible.shaft.supports))
+        support_energy(local, support, held)
+        for local, support, held in zip(_bearing_locals(u_b, flexible), flexible.shaft.supports, constants))
     return energy / (load_scale * DISPLACEMENT_SCALE)
 
 
@@ -179,7 +181,8 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
     stiffness, force, recover = condensed(flexible)
     tables = constant_tables(shaft)
     start, static_steps = minimise_convex(
-        _static_energy, jnp.zeros(unknown.shape[0]), (flexible, unknown, weight, load_scale, None, stiffness, force),
+        _static_energy, jnp.zeros(unknown.shape[0]),
+        (flexible, unknown, weight, load_scale, energy_constants(shaft), stiffness, force),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (flexible, unknown, weight, load_scale, tables, stiffness, force)
     start = jax.lax.stop_gradient(start)
@@ -202,7 +205,7 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
     return FlexibleShaftEquilibrium(
         displacement=nodes[reference_node], bearing_displacements=locals_, bearing_forces=forces,
         converged=residual < RESIDUAL_TOLERANCE, residual=residual, static_steps=static_steps,
-        steps=steps.astype(static_steps.dtype), ball_centres=centres,
+        steps=steps.astype(static_steps.dtype), ball_centres=centres, constant_tables=tables,
         nodes=node_positions(flexible.mesh, flexible.sections, points(flexible)),
         node_displacements=nodes)
 
@@ -213,7 +216,7 @@ def flexible_shaft_stiffness(solution: FlexibleShaftEquilibrium, flexible: Flexi
     bearing_nodes, slots, _, reference_node = _structure(flexible)
     tangent = stiffness_matrix(flexible.mesh, flexible.sections, points(flexible))
     for slot, local, support, table, balls in zip(slots, solution.bearing_displacements, flexible.shaft.supports,
-                                                  constant_tables(flexible.shaft), solution.ball_centres):
+                                                  solution.constant_tables, solution.ball_centres):
         sign = turned(support)
         bearing = jax.jacfwd(support_force)(local, support, flexible.shaft.speed, table, balls)
         index = _dofs([bearing_nodes[slot]])

@@ -58,7 +58,8 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
         y0: the start; an array, or a pytree of arrays with `linear_step` and no line search.
         max_steps: the most Newton steps (`loop="scan"`: exactly this many scan iterations).
         loop: "scan" (fixed count) or "while" (stops early).
-        jacobian: J(y, args), dense; default `jax.jacfwd(function)`.
+        jacobian: J(y, args), dense; default `jax.jacfwd(function)`. With `objective`, (H, ∇f)(y, args):
+            the Hessian and the gradient from one pass.
         linear_step: (y, args) → d = −J⁻¹F, instead of the dense solve.
         limit: d → d shortened (e.g. a largest change per unknown); applied to every step.
         line_search: backtrack on the merit; False: full (limited) steps.
@@ -106,9 +107,11 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
 
         return _iterate(full_step, busy, (y0, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
 
-    def evaluate(y):  # (merit, F)
+    def evaluate(y):  # (merit, F); when minimising, (f, None): ∇f comes with the Hessian at the next step
+        if objective is not None:
+            return objective(y, args), None
         residual = function(y, args)
-        return (0.5 * jnp.sum(residual**2) if objective is None else objective(y, args)), residual
+        return 0.5 * jnp.sum(residual**2), residual
 
     def levenberg_marquardt(y, residual, start, matrix):
         normal = matrix.T @ matrix
@@ -126,35 +129,38 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
             damping = 10.0 * search[0]
             return (damping, *evaluate(trial(damping)))
 
-        damping, merit, following = jax.lax.while_loop(no_decrease, raise_damping, (1e-6, *evaluate(trial(1e-6))))
+        damped = (1e-6, *evaluate(trial(1e-6)))
+        damping, merit, following = jax.lax.while_loop(no_decrease, raise_damping, damped)
         return trial(damping), merit, following
 
-    def damped_step(state):
-        y, residual, start, _, count = state
-        step, matrix = newton_step(y, residual)
-        if objective is None:
-            slope, resolved = -start, jnp.asarray(False)
-        else:
-            slope = jnp.dot(residual, step)
-            resolved = -slope <= RESOLUTION * (1.0 + jnp.abs(start))
-
+    def line_search_from(y, step, start, slope, resolved):
+        """(length, merit, F) of the Armijo backtracking from length 1: one evaluation per trial,
+        traced once (the first trial is the loop's first pass)."""
         def sufficient(length, merit):
             return (merit <= start + ARMIJO * length * slope) | resolved
 
         def keep_halving(search):
-            length, merit, _ = search
-            return ~sufficient(length, merit) & (length > shortest)
+            length, merit, _, tried = search
+            return ~tried | (~sufficient(length, merit) & (length > shortest))
 
         def halve(search):
-            length = 0.5 * search[0]
-            return (length, *evaluate(y + length * step))
+            length = jnp.where(search[3], 0.5 * search[0], search[0])
+            return (length, *evaluate(y + length * step), jnp.asarray(True))
 
-        length, merit, following = jax.lax.while_loop(keep_halving, halve, (1.0, *evaluate(y + step)))
+        untried = jax.tree.map(lambda v: jnp.zeros(v.shape, v.dtype), jax.eval_shape(evaluate, y))
+        length, merit, following, _ = jax.lax.while_loop(keep_halving, halve,
+                                                         (jnp.asarray(1.0, y.dtype), *untried, jnp.asarray(False)))
+        return length, merit, following, sufficient(length, merit)
+
+    def damped_step(state):
+        y, residual, start, _, count = state
+        step, matrix = newton_step(y, residual)
+        length, merit, following, _ = line_search_from(y, step, start, -start, jnp.asarray(False))
         point = y + length * step
         if fallback:
             point, merit, following = jax.lax.cond(merit < start, lambda: (point, merit, following),
                                                    lambda: levenberg_marquardt(y, residual, start, matrix))
-        accepted = merit < start if objective is None else sufficient(length, merit)
+        accepted = merit < start
         return (jnp.where(accepted, point, y), jnp.where(accepted, following, residual),
                 jnp.where(accepted, merit, start), ~accepted, count + 1)
 
@@ -162,8 +168,24 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
         _, residual, _, stopped, _ = state
         return ~stopped if floor is None else ~stopped & (jnp.linalg.norm(residual) > floor)
 
-    start, residual = evaluate(y0)
-    return _iterate(damped_step, busy, (y0, residual, start, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
+    if objective is None:
+        start, residual = evaluate(y0)
+        return _iterate(damped_step, busy, (y0, residual, start, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
+
+    def descent_step(state):  # minimising f: the step from H and ∇f at y (one trace of each), f alone in the search
+        y, start, _, count = state
+        matrix, gradient = jacobian(y, args)
+        converged = jnp.asarray(False) if floor is None else jnp.linalg.norm(gradient) <= floor
+        step = limited(dense_solve(matrix, -gradient))
+        slope = jnp.dot(gradient, step)
+        resolved = -slope <= RESOLUTION * (1.0 + jnp.abs(start))
+        length, merit, _, sufficient = line_search_from(y, step, start, slope, resolved)
+        accepted = sufficient & ~converged
+        return (jnp.where(accepted, y + length * step, y), jnp.where(accepted, merit, start), ~accepted,
+                count + jnp.where(converged, 0, 1))
+
+    return _iterate(descent_step, lambda state: ~state[2], (y0, objective(y0, args), jnp.asarray(False),
+                                                            jnp.asarray(0)), max_steps, loop)
 
 
 def guarded_solve(matrix, rhs):
@@ -214,9 +236,9 @@ def minimise_convex(function, y0, args, *, gradient_tolerance=1e-12, max_steps=2
     """
     gradient = jax.grad(function)
 
-    def regularised_hessian(y, args):  # H and ∇f from one forward pass over the gradient
+    def regularised_hessian(y, args):  # (H + μI, ∇f) from one forward pass over the gradient
         hessian, slope = jax.jacfwd(lambda y: (g := gradient(y, args), g), has_aux=True)(y)
-        return hessian + REGULARIZATION * jnp.linalg.norm(slope) * jnp.eye(y.shape[0])
+        return hessian + REGULARIZATION * jnp.linalg.norm(slope) * jnp.eye(y.shape[0]), slope
 
     return newton(gradient, y0, args, max_steps=max_steps, loop="while", jacobian=regularised_hessian,
                   objective=function, shortest=shortest, floor=gradient_tolerance)

@@ -44,10 +44,13 @@ def ball_raceway_modulus(bearing: BallBearing):
 
 
 def contact_constants(bearing: BallBearing, inner_contact_angle, outer_contact_angle, method="exact"):
-    """Hertz load–deflection constants (K_i, K_o) [N/m^1.5] in Q = K δ^{3/2} at the given angles [rad]."""
-    modulus = ball_raceway_modulus(bearing)
-    inner = load_deflection_constant(*inner_curvature(bearing, inner_contact_angle), modulus, method)
-    outer = load_deflection_constant(*outer_curvature(bearing, outer_contact_angle), modulus, method)
+    """Hertz load–deflection constants (K_i, K_o) [N/m^1.5] in Q = K δ^{3/2} at the given angles [rad]
+    (both sides in one elementwise evaluation: a program holds the ellipticity solve once)."""
+    inner_sum, inner_difference = inner_curvature(bearing, inner_contact_angle)
+    outer_sum, outer_difference = outer_curvature(bearing, outer_contact_angle)
+    sums = jnp.stack(jnp.broadcast_arrays(inner_sum, outer_sum))
+    differences = jnp.stack(jnp.broadcast_arrays(inner_difference, outer_difference))
+    inner, outer = load_deflection_constant(sums, differences, ball_raceway_modulus(bearing), method)
     return inner, outer
 
 

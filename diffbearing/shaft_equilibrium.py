@@ -184,9 +184,16 @@ def reaction(shaft_displacement, support, speed, table=None, ball_centres=None):
 
 
 def constant_tables(shaft: Shaft):
-    """Each ball bearing's table of contact constants (`ball_equilibrium.constant_table`); None for a roller bearing."""
-    return tuple(ball_equilibrium.constant_table(s.bearing, s.model) if isinstance(s, BallSupport) else None
-                 for s in shaft.supports)
+    """Each ball bearing's table of contact constants (`ball_equilibrium.constant_table`); None for a
+    roller bearing. Supports holding the same bearing object with the same model (a matched set)
+    share one table."""
+    tables = []
+    for k, support in enumerate(shaft.supports):
+        same = next((tables[j] for j, earlier in enumerate(shaft.supports[:k]) if isinstance(earlier, BallSupport)
+                     and earlier.bearing is getattr(support, "bearing", None) and earlier.model == support.model), None)
+        tables.append(same if same is not None or not isinstance(support, BallSupport)
+                      else ball_equilibrium.constant_table(support.bearing, support.model))
+    return tuple(tables)
 
 
 def shaft_force(shaft_displacement, shaft: Shaft, tables=None, ball_centres=None):
@@ -206,13 +213,20 @@ def applied_load(shaft: Shaft):
     return jnp.einsum("lij,li->j", jax.vmap(transfer)(loads.positions), combined)
 
 
-def support_energy(local, support):
-    """E_k(Δ_k) [J] with the contact constants at the free contact angle (convex in Δ_k)."""
+def energy_constants(shaft: Shaft):
+    """Per support, what its static energy holds fixed (`support_energy`): a ball bearing's combined
+    contact constant K_n(α₀) [N/m^1.5], a roller bearing's lamina setup; evaluated once per solve,
+    not in every trace of the energy and its derivatives."""
+    return tuple(ball_equilibrium.free_contact_constant(s.bearing, s.model) if isinstance(s, BallSupport)
+                 else roller_equilibrium.lamina_setup(s.bearing, s.raceways, s.model) for s in shaft.supports)
+
+
+def support_energy(local, support, constants):
+    """E_k(Δ_k) [J] with the contact constants at the free contact angle (convex in Δ_k);
+    `constants`: the support's entry of `energy_constants`."""
     if isinstance(support, BallSupport):
-        combined = ball_equilibrium.free_contact_constant(support.bearing, support.model)
-        return ball_equilibrium.static_energy(local, support.bearing, combined)
-    setup = roller_equilibrium.lamina_setup(support.bearing, support.raceways, support.model)
-    return roller_equilibrium.static_energy(local, support.bearing, support.raceways, setup)
+        return ball_equilibrium.static_energy(local, support.bearing, constants)
+    return roller_equilibrium.static_energy(local, support.bearing, support.raceways, constants)
 
 
 def _characteristic_load(support):
@@ -238,10 +252,11 @@ def shaft_scales(shaft: Shaft):
 
 
 def _static_energy(y, args):
-    """Scaled potential Σ_k E_k − F·u of the static problem (convex in u)."""
-    shaft, unknown, _, load_scale, _ = args
+    """Scaled potential Σ_k E_k − F·u of the static problem (convex in u); args' last: `energy_constants`."""
+    shaft, unknown, _, load_scale, constants = args
     u = unknown * y
-    energy = sum(support_energy(support_displacement(u, support), support) for support in shaft.supports)
+    energy = sum(support_energy(support_displacement(u, support), support, held)
+                 for support, held in zip(shaft.supports, constants))
     energy = energy - jnp.dot(applied_load(shaft), u)
     return energy / (load_scale * DISPLACEMENT_SCALE)
 
@@ -415,7 +430,8 @@ class ShaftEquilibrium(eqx.Module):
     residual below `RESIDUAL_TOLERANCE`), the residual [-] and the Newton steps; per bearing its
     balls' centres (Z, 2) [m] where the solve carried them (ball bearings with speed effects; else
     None): hand them to `shaft_stiffness` and `ball_equilibrium.ball_results`, which then solve no
-    balls of their own."""
+    balls of their own; and per bearing the table of Hertz constants the solve built (None for a
+    roller bearing or constants held at α₀), likewise for `shaft_stiffness` and `ball_results`."""
 
     displacement: jax.Array
     bearing_displacements: tuple
@@ -425,6 +441,7 @@ class ShaftEquilibrium(eqx.Module):
     static_steps: jax.Array
     steps: jax.Array
     ball_centres: tuple
+    constant_tables: tuple
 
 
 def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
@@ -436,7 +453,8 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     require_float64()
     unknown, weight, load_scale = shaft_scales(shaft)
     tables = constant_tables(shaft)
-    start, static_steps = minimise_convex(_static_energy, jnp.zeros(5), (shaft, unknown, weight, load_scale, None),
+    start, static_steps = minimise_convex(_static_energy, jnp.zeros(5),
+                                          (shaft, unknown, weight, load_scale, energy_constants(shaft)),
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (shaft, unknown, weight, load_scale, tables)
     start = jax.lax.stop_gradient(start)
@@ -454,13 +472,15 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     forces = tuple(support_force(local, support, shaft.speed, table, balls)
                    for local, support, table, balls in zip(locals_, shaft.supports, tables, centres))
     return ShaftEquilibrium(u, locals_, forces, residual < RESIDUAL_TOLERANCE, residual, static_steps,
-                            steps.astype(static_steps.dtype), centres)
+                            steps.astype(static_steps.dtype), centres, tables)
 
 
-def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, ball_centres=None):
+def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, ball_centres=None, tables=None):
     """5×5 system stiffness [N/m, N/rad; N·m/m, N·m/rad] at the shaft point z = `at` [m]: the
     Jacobian of the bearings' loads with respect to that point's displacement (exact, jacfwd).
-    `ball_centres`: the solve's balls (`ShaftEquilibrium.ball_centres`; else solved here)."""
-    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, constant_tables(shaft), ball_centres)
+    `ball_centres`: the solve's balls (`ShaftEquilibrium.ball_centres`; else solved here);
+    `tables`: the solve's (`ShaftEquilibrium.constant_tables`; else built here)."""
+    tables = constant_tables(shaft) if tables is None else tables
+    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, tables, ball_centres)
     back = transfer(-jnp.asarray(at, dtype=float))
     return back.T @ stiffness @ back

@@ -5,8 +5,8 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.ball_equilibrium import (BallModel, ball_results, ring_force, solve_equilibrium, solve_with_balls,
-                                          stiffness_at_balls, stiffness_matrix)
+from diffbearing.ball_equilibrium import (BallModel, ball_results, constant_table, ring_force, solve_equilibrium,
+                                          solve_with_balls, stiffness_at_balls, stiffness_matrix)
 from diffbearing.params import Operating, ball_bearing
 from diffbearing import build_model, load_scene
 
@@ -191,6 +191,20 @@ def test_the_solved_ball_centres_give_the_balls_and_stiffness_of_a_new_ball_solv
     at_balls = jax.jit(lambda d, x: stiffness_at_balls(d, x, bearing, operating, SPEED))(solution.displacement,
                                                                                          balls.centre)
     np.testing.assert_allclose(at_balls, stiffness, rtol=1e-12, atol=1e-12 * float(jnp.max(jnp.abs(stiffness))))
+    # the solve's table of Hertz constants is the bearing's, and the stiffness given it builds none of its own
+    table = constant_table(bearing, SPEED)
+    for side in ("inner", "outer"):
+        coefficients = getattr(table, side)  # the higher ones cancel to rounding of the first: compared against it
+        np.testing.assert_allclose(getattr(solution.constant_table, side), coefficients, rtol=0,
+                                   atol=1e-14 * float(jnp.max(jnp.abs(coefficients))))
+    with_table = jax.jit(lambda d, x, t: stiffness_at_balls(d, x, bearing, operating, SPEED, t))
+    np.testing.assert_allclose(with_table(solution.displacement, balls.centre, solution.constant_table), at_balls,
+                               rtol=1e-14, atol=1e-14 * float(jnp.max(jnp.abs(at_balls))))
+    built = jax.make_jaxpr(lambda d, x: stiffness_at_balls(d, x, bearing, operating, SPEED))(
+        solution.displacement, balls.centre)
+    handed = jax.make_jaxpr(lambda d, x, t: stiffness_at_balls(d, x, bearing, operating, SPEED, t))(
+        solution.displacement, balls.centre, table)
+    assert str(built).count("scan[") > str(handed).count("scan["), "the table's ellipticity solves are not traced"
     solved = jax.make_jaxpr(lambda d, c: stiffness_matrix(d, bearing, operating, SPEED, c))(
         solution.displacement, solution.ball_centres)
     resolved = jax.make_jaxpr(lambda d: stiffness_matrix(d, bearing, operating, SPEED))(solution.displacement)

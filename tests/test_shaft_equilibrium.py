@@ -237,3 +237,20 @@ def test_bad_input_is_refused():
     assert np.allclose(support_displacement(jnp.array([0.0, 0.0, 1e-6, 0.0, 0.0]),
                                             BallSupport(ANGULAR, 0.0, offset=2e-6, orientation=-1)),
                        [0.0, 0.0, 1e-6, 0.0, 0.0])
+
+
+def test_a_matched_pair_shares_one_table_of_hertz_constants():
+    """The two bearings of a set hold the same bearing and model: one table, built once, equal to
+    the bearing's own; a different bearing (or model) gets its own table."""
+    from diffbearing.ball_equilibrium import constant_table
+    from diffbearing.shaft_equilibrium import constant_tables
+
+    first, second = constant_tables(pair(0.0))
+    assert first is second
+    np.testing.assert_allclose(first.inner, constant_table(ANGULAR, BallModel()).inner, rtol=1e-15)
+    mixed = Shaft((BallSupport(ANGULAR, -0.03), BallSupport(DEEP_GROOVE, 0.03),
+                   BallSupport(ANGULAR, 0.06, model=BallModel(hertz_method="brewe_hamrock"))),
+                  loads(0.0, (1000.0, 0.0, 0.0)), 0.0)
+    tables = constant_tables(mixed)
+    assert len({id(table) for table in tables}) == 3
+    np.testing.assert_allclose(tables[1].outer, constant_table(DEEP_GROOVE, BallModel()).outer, rtol=1e-15)

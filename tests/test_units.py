@@ -37,3 +37,22 @@ def test_stiffness_round_off_prints_as_zero():
     rows = stiffness_lines(matrix, "balls")[3:]
     assert rows[0].split() == ["Fx", "1000", "0", "0", "0", "0"]
     assert rows[2].split()[-1] == "1000"
+
+
+def test_the_unit_registry_keeps_its_parsed_definitions_in_the_cache_folder_and_survives_a_broken_one(
+        monkeypatch, tmp_path):
+    from diffbearing.app.units import registry
+
+    monkeypatch.setenv("DIFFBEARING_CACHE", str(tmp_path))
+    build = registry.__wrapped__  # the registry itself is built once per process
+    assert build().Quantity("1500 r/min").to("rad/s").magnitude == pytest.approx(50.0 * math.pi, rel=1e-15)
+    stored = sorted((tmp_path / "pint").glob("*.pickle"))
+    assert stored, "pint's parsed definitions are stored under $DIFFBEARING_CACHE/pint"
+    for path in stored:  # as another process would leave a file it is still writing
+        path.write_bytes(path.read_bytes()[:10])
+    assert build().Quantity("60 degC").to("K").magnitude == pytest.approx(333.15, rel=1e-15)
+    assert not (tmp_path / "pint").exists(), "the broken cache is removed"
+    build()
+    assert sorted((tmp_path / "pint").glob("*.pickle")), "and written anew by the next process"
+    monkeypatch.setenv("DIFFBEARING_CACHE", "off")
+    assert build().cache_folder is None

@@ -9,7 +9,8 @@ from ... import ball_equilibrium, ball_validity, groove_chamfer, hertz
 from ...kinematics import RACE_CONTROLS
 from ...params import (BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance,
                        with_radial_clearance)
-from ...raceway_contact import ball_raceway_modulus, diameter_ratio, inner_curvature, outer_curvature
+from ...raceway_contact import (ContactConstantTable, ball_raceway_modulus, diameter_ratio, inner_curvature,
+                               outer_curvature)
 from ..formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .materials import material
@@ -225,6 +226,8 @@ def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:
         out["balls.centrifugal_force"] = balls.centrifugal_force
     if model.gyroscopic:
         out["balls.gyroscopic_moment"] = balls.gyroscopic_moment
+    if solution.constant_table is not None:
+        out |= {f"hertz.constant_table.{side}": getattr(solution.constant_table, side) for side in ("inner", "outer")}
     if inputs.get("shoulders") is not None:
         out |= shoulder_outputs(bearing, balls, inputs["shoulders"])
     return out
@@ -480,6 +483,10 @@ EQUILIBRIUM = Block(
         *_ball_outputs("outer"),
         Output("balls.centre", "m", "mm", "ball centre (axial, radial) from the outer groove curvature centre, "
                "in the ball's azimuth plane", in_report=False),
+        *(Output(f"hertz.constant_table.{side}", "N/m**1.5", "N/mm**1.5",
+                 f"Chebyshev coefficients of the {side} Hertz constant K(α) in t = 2 cos α − 1, which the "
+                 "equilibrium interpolates (with fidelity.hertz_constants = \"contact_angle\")", in_report=False)
+          for side in ("inner", "outer")),
         Output("balls.orbital_speed", "rad/s", "rpm", "orbital (cage) speed ω_m", column="ωm"),
         Output("balls.spin_speed", "rad/s", "rpm", "ball spin speed ω_R about its own axis", in_report=False),
         Output("balls.centrifugal_force", "N", "N", "centrifugal force F_c", effect="centrifugal", column="Fc"),
@@ -497,9 +504,12 @@ EQUILIBRIUM = Block(
 # --- stiffness ---------------------------------------------------------------------------------
 
 def _stiffness(inputs: dict, settings: dict, results: dict) -> dict:
-    # at the equilibrium block's balls, which carry their implicit derivative: no ball solve again
+    # at the equilibrium block's balls, which carry their implicit derivative, and with its table of
+    # Hertz constants: no ball solve and no table again
+    table = (ContactConstantTable(results["hertz.constant_table.inner"], results["hertz.constant_table.outer"])
+             if "hertz.constant_table.inner" in results else None)
     matrix = ball_equilibrium.stiffness_at_balls(results["displacement"], results["balls.centre"], inputs["bearing"],
-                                                 inputs["operating"], ball_model(settings))
+                                                 inputs["operating"], ball_model(settings), table)
     return {"stiffness": matrix}
 
 

@@ -119,9 +119,10 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     out = {"set.displacement": solution.displacement, "set.converged": solution.converged,
            "set.residual": solution.residual, "set.preload_force": preload, "set.preload_offset": offset}
     approach, angle, lowest, every = [], [], [], []
-    for number, (support, local, force, centres) in enumerate(zip(supports, solution.bearing_displacements,
-                                                                  solution.bearing_forces, solution.ball_centres)):
-        balls = ball_results(local, bearing, operating, model, centres)
+    for number, (support, local, force, centres, table) in enumerate(zip(
+            supports, solution.bearing_displacements, solution.bearing_forces, solution.ball_centres,
+            solution.constant_tables)):
+        balls = ball_results(local, bearing, operating, model, centres, table)
         every.append(balls)
         prefix = f"set.bearings.{number}."
         azimuth = balls.azimuth if support.orientation > 0 else jnp.mod(-balls.azimuth, 2.0 * jnp.pi)
@@ -143,7 +144,8 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     out["set.validity.missing_axial_load"] = tandem_missing_axial_load(bearing, operating.force, operating.moment,
                                                                        layout.spacing, layout.arrangement)
     if settings["effects"].get("stiffness", False) is True:
-        out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft, ball_centres=solution.ball_centres)
+        out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft, ball_centres=solution.ball_centres,
+                                               tables=solution.constant_tables)
     return out
 
 

@@ -189,12 +189,13 @@ def _supports(layout: ShaftLayout, settings: dict):
                                                                    layout.orientations))
 
 
-def _results(support, local, speed, ball_centres=None):
+def _results(support, local, speed, ball_centres=None, table=None):
     """The bearing's per-element results at its displacement (a ball bearing's balls at the solve's
-    `ball_centres` where it carried them): BallResults or RollerResults."""
+    `ball_centres` where it carried them, with the solve's table of Hertz constants): BallResults or
+    RollerResults."""
     if isinstance(support, BallSupport):
         return ball_results(local, support.bearing, Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)), support.model,
-                            ball_centres)
+                            ball_centres, table)
     return roller_results(local, support.bearing, support.raceways,
                           RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed), support.model)
 
@@ -281,7 +282,7 @@ def _solve(layout: ShaftLayout, shaft: Shaft, stiffness: bool) -> dict:
                "shaft.displacement": transfer(layout.stiffness_at) @ solution.displacement}
         if stiffness:
             out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at,
-                                                     solution.ball_centres)
+                                                     solution.ball_centres, solution.constant_tables)
         return out
     flexible = FlexibleShaft(shaft, layout.sections, layout.stiffness_at, layout.mesh)
     solution = solve_flexible_shaft(flexible)
@@ -297,8 +298,9 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     shaft = Shaft(_supports(layout, settings), layout.loads, layout.speed)
     solved = _solve(layout, shaft, settings["effects"].get("stiffness", False) is True)
     solution = solved.pop("solution")
-    per_bearing = [_results(support, local, layout.speed, balls) for support, local, balls
-                   in zip(shaft.supports, solution.bearing_displacements, solution.ball_centres)]
+    per_bearing = [_results(support, local, layout.speed, balls, table) for support, local, balls, table
+                   in zip(shaft.supports, solution.bearing_displacements, solution.ball_centres,
+                          solution.constant_tables)]
     out = solved | {
         "shaft.converged": solution.converged,
         "shaft.residual": solution.residual,
