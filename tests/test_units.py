@@ -41,18 +41,31 @@ def test_stiffness_round_off_prints_as_zero():
 
 def test_the_unit_registry_keeps_its_parsed_definitions_in_the_cache_folder_and_survives_a_broken_one(
         monkeypatch, tmp_path):
+    """pint's parsed definitions go to the "pint" folder of the cache in use: JAX's folder where one
+    is set (the tests set one), else DIFFBEARING_CACHE's; a half-written file is parsed around and
+    the folder removed, to be written anew; with neither folder there is no cache."""
+    import jax
+
     from diffbearing.app.units import registry
 
-    monkeypatch.setenv("DIFFBEARING_CACHE", str(tmp_path))
     build = registry.__wrapped__  # the registry itself is built once per process
-    assert build().Quantity("1500 r/min").to("rad/s").magnitude == pytest.approx(50.0 * math.pi, rel=1e-15)
-    stored = sorted((tmp_path / "pint").glob("*.pickle"))
-    assert stored, "pint's parsed definitions are stored under $DIFFBEARING_CACHE/pint"
-    for path in stored:  # as another process would leave a file it is still writing
-        path.write_bytes(path.read_bytes()[:10])
-    assert build().Quantity("60 degC").to("K").magnitude == pytest.approx(333.15, rel=1e-15)
-    assert not (tmp_path / "pint").exists(), "the broken cache is removed"
-    build()
-    assert sorted((tmp_path / "pint").glob("*.pickle")), "and written anew by the next process"
-    monkeypatch.setenv("DIFFBEARING_CACHE", "off")
-    assert build().cache_folder is None
+    before = jax.config.jax_compilation_cache_dir
+    try:
+        jax.config.update("jax_compilation_cache_dir", str(tmp_path / "jax"))
+        monkeypatch.setenv("DIFFBEARING_CACHE", str(tmp_path / "ours"))
+        assert build().Quantity("1500 r/min").to("rad/s").magnitude == pytest.approx(50.0 * math.pi, rel=1e-15)
+        stored = sorted((tmp_path / "jax" / "pint").glob("*.pickle"))
+        assert stored and not (tmp_path / "ours").exists()
+        for path in stored:  # as another process would leave a file it is still writing
+            path.write_bytes(path.read_bytes()[:10])
+        assert build().Quantity("60 degC").to("K").magnitude == pytest.approx(333.15, rel=1e-15)
+        assert not (tmp_path / "jax" / "pint").exists(), "the broken cache is removed"
+        build()
+        assert sorted((tmp_path / "jax" / "pint").glob("*.pickle")), "and written anew by the next process"
+        jax.config.update("jax_compilation_cache_dir", None)
+        build()
+        assert sorted((tmp_path / "ours" / "pint").glob("*.pickle")), "without JAX's folder, in DIFFBEARING_CACHE"
+        monkeypatch.setenv("DIFFBEARING_CACHE", "off")
+        assert build().cache_folder is None
+    finally:
+        jax.config.update("jax_compilation_cache_dir", before)

@@ -23,6 +23,14 @@ def compilation_cache_folder() -> str | None:
     return chosen or os.path.join(os.path.expanduser("~"), ".cache", "diffbearing", "jax")
 
 
+def cache_folder_in_use() -> str | None:
+    """The folder diffbearing keeps things in between processes, without switching anything on:
+    JAX's cache folder where the user set one, else `compilation_cache_folder()`."""
+    import jax
+
+    return jax.config.jax_compilation_cache_dir or compilation_cache_folder()
+
+
 def use_compilation_cache() -> str | None:
     """Switch JAX's persistent compilation cache on in `compilation_cache_folder()`, keeping every
     compiled program however quick its compilation, unless JAX already has a cache folder (the
