@@ -176,13 +176,13 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
     require_float64()
     shaft = flexible.shaft
     bearing_nodes, _, _, reference_node = _structure(flexible)
-    unknown, weight, load_scale = shaft_scales(shaft)
+    tables = constant_tables(shaft)
+    unknown, weight, load_scale = shaft_scales(shaft, tables)
     unknown, weight = jnp.tile(unknown, len(bearing_nodes)), jnp.tile(weight, len(bearing_nodes))
     stiffness, force, recover = condensed(flexible)
-    tables = constant_tables(shaft)
     start, static_steps = minimise_convex(
         _static_energy, jnp.zeros(unknown.shape[0]),
-        (flexible, unknown, weight, load_scale, energy_constants(shaft), stiffness, force),
+        (flexible, unknown, weight, load_scale, energy_constants(shaft, tables), stiffness, force),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (flexible, unknown, weight, load_scale, tables, stiffness, force)
     start = jax.lax.stop_gradient(start)

@@ -49,7 +49,7 @@ REFINED = 1e-8  # ‖b − Jx‖/‖b‖ a refined step must reach, else the flo
 
 def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacobian=None, linear_step=None,
            limit=None, line_search: bool = True, shortest: float = 1e-6, fallback: bool = False, objective=None,
-           floor=None, step_tolerance=None, single_precision_factor: bool = False):
+           floor=None, step_tolerance=None, single_precision_factor: bool = False, guard: bool = False):
     """Root of `function(y, args)` from `y0` by damped Newton (module docstring); returns (y, steps).
 
     Args:
@@ -71,13 +71,20 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
             with |d| ≤ a + r|y| in every component.
         single_precision_factor: solve the dense steps by a float32 LU refined in float64
             (`refined_solve`; module docstring), for Jacobians of thousands of unknowns.
+        guard: the default dense J regularised as in `guarded_solve` (`guarded`): a direction
+            nothing resists keeps the step finite.
 
     `steps` counts the steps taken or tried (an int array).
     """
     if loop not in ("scan", "while"):
         raise ValueError(f"loop: 'scan' or 'while', got {loop!r}")
-    if jacobian is None and linear_step is None:
+    # the default dense J comes with F from one forward pass (`jax.jacfwd` with the residual as aux),
+    # so the damped iteration traces F once in the step and once in the line search, not again to start
+    joint = jacobian is None and linear_step is None
+    if joint:
         jacobian = jax.jacfwd(function)
+    if guard and not joint:
+        raise ValueError("guard: regularises the default dense jacobian only")
     if fallback and jacobian is None:
         raise ValueError("fallback: Levenberg–Marquardt steps need the dense jacobian")
     limited = (lambda d: d) if limit is None else limit
@@ -113,6 +120,9 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
         residual = function(y, args)
         return 0.5 * jnp.sum(residual**2), residual
 
+    def untried(y):  # (merit, F) placeholders before a loop's first evaluation (F has y's shape)
+        return jnp.zeros((), y.dtype), (None if objective is not None else jnp.zeros_like(y))
+
     def levenberg_marquardt(y, residual, start, matrix):
         normal = matrix.T @ matrix
         gradient = matrix.T @ residual
@@ -121,16 +131,16 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
         def trial(damping):
             return y - limited(jnp.linalg.solve(normal + damping * jnp.diag(scale), gradient))
 
-        def no_decrease(search):
-            damping, merit, _ = search
-            return (~(merit < start)) & (damping < 1e6)
+        def no_decrease(search):  # the first pass tries μ = 1e-6: one evaluation traced, in the loop
+            damping, merit, _, tried = search
+            return ~tried | ((~(merit < start)) & (damping < 1e6))
 
         def raise_damping(search):
-            damping = 10.0 * search[0]
-            return (damping, *evaluate(trial(damping)))
+            damping = jnp.where(search[3], 10.0 * search[0], search[0])
+            return (damping, *evaluate(trial(damping)), jnp.asarray(True))
 
-        damped = (1e-6, *evaluate(trial(1e-6)))
-        damping, merit, following = jax.lax.while_loop(no_decrease, raise_damping, damped)
+        damping, merit, following, _ = jax.lax.while_loop(no_decrease, raise_damping,
+                                                          (jnp.asarray(1e-6, y.dtype), *untried(y), jnp.asarray(False)))
         return trial(damping), merit, following
 
     def line_search_from(y, step, start, slope, resolved):
@@ -147,30 +157,38 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
             length = jnp.where(search[3], 0.5 * search[0], search[0])
             return (length, *evaluate(y + length * step), jnp.asarray(True))
 
-        untried = jax.tree.map(lambda v: jnp.zeros(v.shape, v.dtype), jax.eval_shape(evaluate, y))
         length, merit, following, _ = jax.lax.while_loop(keep_halving, halve,
-                                                         (jnp.asarray(1.0, y.dtype), *untried, jnp.asarray(False)))
+                                                         (jnp.asarray(1.0, y.dtype), *untried(y), jnp.asarray(False)))
         return length, merit, following, sufficient(length, merit)
 
-    def damped_step(state):
-        y, residual, start, _, count = state
-        step, matrix = newton_step(y, residual)
+    def damped_step(state):  # state: (y, F at y where known (not before the first step), stopped, first, count)
+        y, residual, _, first, count = state
+        if joint:
+            matrix, residual = jax.jacfwd(lambda y: (r := function(y, args), r), has_aux=True)(y)
+            matrix = guarded(matrix) if guard else matrix
+            step = limited(dense_solve(matrix, -residual))
+        else:
+            step, matrix = newton_step(y, residual)
+        start = 0.5 * jnp.sum(residual**2)
         length, merit, following, _ = line_search_from(y, step, start, -start, jnp.asarray(False))
         point = y + length * step
         if fallback:
             point, merit, following = jax.lax.cond(merit < start, lambda: (point, merit, following),
                                                    lambda: levenberg_marquardt(y, residual, start, matrix))
-        accepted = merit < start
-        return (jnp.where(accepted, point, y), jnp.where(accepted, following, residual),
-                jnp.where(accepted, merit, start), ~accepted, count + 1)
+        # a start already below the floor takes no step (known only now, with F from the Jacobian's pass)
+        converged = jnp.asarray(False) if floor is None else first & (jnp.linalg.norm(residual) <= floor)
+        accepted = (merit < start) & ~converged
+        return (jnp.where(accepted, point, y), jnp.where(accepted, following, residual), ~accepted,
+                jnp.asarray(False), count + jnp.where(converged, 0, 1))
 
     def busy(state):
-        _, residual, _, stopped, _ = state
-        return ~stopped if floor is None else ~stopped & (jnp.linalg.norm(residual) > floor)
+        _, residual, stopped, first, _ = state
+        return ~stopped if floor is None else ~stopped & (first | (jnp.linalg.norm(residual) > floor))
 
     if objective is None:
-        start, residual = evaluate(y0)
-        return _iterate(damped_step, busy, (y0, residual, start, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
+        known = jnp.zeros_like(y0) if joint else function(y0, args)
+        return _iterate(damped_step, busy, (y0, known, jnp.asarray(False), jnp.asarray(joint), jnp.asarray(0)),
+                        max_steps, loop)
 
     def descent_step(state):  # minimising f: the step from H and ∇f at y (one trace of each), f alone in the search
         y, start, _, count = state
@@ -188,12 +206,16 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
                                                             jnp.asarray(0)), max_steps, loop)
 
 
+def guarded(matrix):
+    """J + 1e-12 (max |J_kk| + 1) I (Levenberg–Marquardt form): at a singular J (zero load, every
+    contact open, a direction nothing resists) a step solved with it stays finite and, with a zero
+    right-hand side, zero."""
+    return matrix + 1e-12 * (jnp.max(jnp.abs(jnp.diag(matrix))) + 1.0) * jnp.eye(matrix.shape[0])
+
+
 def guarded_solve(matrix, rhs):
-    """x = J⁻¹ r (LU), J regularised by 1e-12 (max |J_kk| + 1) I (Levenberg–Marquardt form): at a
-    singular J (zero load, every contact open, a direction nothing resists) the step stays finite
-    and, with a zero right-hand side, zero."""
-    guard = 1e-12 * (jnp.max(jnp.abs(jnp.diag(matrix))) + 1.0)
-    return jnp.linalg.solve(matrix + guard * jnp.eye(matrix.shape[0]), rhs)
+    """x = J⁻¹ r (LU) with J `guarded`."""
+    return jnp.linalg.solve(guarded(matrix), rhs)
 
 
 def refined_solve(matrix, rhs):

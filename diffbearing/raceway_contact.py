@@ -82,20 +82,24 @@ def contact_constant_table(bearing: BallBearing, method="exact") -> ContactConst
 
 def _clenshaw(coefficients, t):
     """Σ_j c_j T_j(t) by Clenshaw's recurrence (polynomial operations only: smooth derivatives),
-    one `lax.scan` step per coefficient (a program holds the recurrence once per call, not unrolled)."""
+    one `lax.scan` step per coefficient (a program holds the recurrence once per call, not unrolled).
+    `coefficients` (n, k): n series, each evaluated at its row of `t` (n, ...)."""
     def step(carry, coefficient):
         upper, lower = carry
         return (2.0 * t * upper - lower + coefficient, upper), None
 
     zeros = jnp.zeros_like(t)
-    (upper, lower), _ = jax.lax.scan(step, (zeros, zeros), coefficients[:0:-1])
-    return t * upper - lower + coefficients[0]
+    per_row = coefficients.T.reshape(coefficients.shape[::-1] + (1,) * (t.ndim - 1))  # (k, n, 1, ...)
+    (upper, lower), _ = jax.lax.scan(step, (zeros, zeros), per_row[:0:-1])
+    return t * upper - lower + per_row[0]
 
 
 def table_constants(table: ContactConstantTable, inner_angle, outer_angle):
-    """(K_i, K_o) [N/m^1.5] at the contact angles [rad] from a `ContactConstantTable`."""
-    return (_clenshaw(table.inner, 2.0 * jnp.cos(inner_angle) - 1.0),
-            _clenshaw(table.outer, 2.0 * jnp.cos(outer_angle) - 1.0))
+    """(K_i, K_o) [N/m^1.5] at the contact angles [rad] from a `ContactConstantTable` (both sides
+    in one recurrence)."""
+    t = jnp.stack(jnp.broadcast_arrays(2.0 * jnp.cos(inner_angle) - 1.0, 2.0 * jnp.cos(outer_angle) - 1.0))
+    inner, outer = _clenshaw(jnp.stack([table.inner, table.outer]), t)
+    return inner, outer
 
 
 def rolling_radius(bearing: BallBearing, contact_angle, side: str):

@@ -213,12 +213,14 @@ def applied_load(shaft: Shaft):
     return jnp.einsum("lij,li->j", jax.vmap(transfer)(loads.positions), combined)
 
 
-def energy_constants(shaft: Shaft):
+def energy_constants(shaft: Shaft, tables):
     """Per support, what its static energy holds fixed (`support_energy`): a ball bearing's combined
-    contact constant K_n(α₀) [N/m^1.5], a roller bearing's lamina setup; evaluated once per solve,
-    not in every trace of the energy and its derivatives."""
-    return tuple(ball_equilibrium.free_contact_constant(s.bearing, s.model) if isinstance(s, BallSupport)
-                 else roller_equilibrium.lamina_setup(s.bearing, s.raceways, s.model) for s in shaft.supports)
+    contact constant K_n(α₀) [N/m^1.5] (from its table of Hertz constants, `constant_tables`), a
+    roller bearing's lamina setup; evaluated once per solve, not in every trace of the energy and
+    its derivatives."""
+    return tuple(ball_equilibrium.free_contact_constant(s.bearing, s.model, table) if isinstance(s, BallSupport)
+                 else roller_equilibrium.lamina_setup(s.bearing, s.raceways, s.model)
+                 for s, table in zip(shaft.supports, tables))
 
 
 def support_energy(local, support, constants):
@@ -229,9 +231,9 @@ def support_energy(local, support, constants):
     return roller_equilibrium.static_energy(local, support.bearing, support.raceways, constants)
 
 
-def _characteristic_load(support):
+def _characteristic_load(support, table):
     if isinstance(support, BallSupport):
-        return ball_equilibrium.characteristic_load(support.bearing, support.model)
+        return ball_equilibrium.characteristic_load(support.bearing, support.model, table)
     setup = roller_equilibrium.lamina_setup(support.bearing, support.raceways, support.model)
     return roller_equilibrium.characteristic_load(support.bearing, setup)
 
@@ -241,13 +243,15 @@ def _pitch_radius(support):
     return 0.5 * bearing.pitch_diameter
 
 
-def shaft_scales(shaft: Shaft):
-    """Unknown scale s (u = s·y), residual weights w (moments to forces by an arm) and load scale [N].
+def shaft_scales(shaft: Shaft, tables):
+    """Unknown scale s (u = s·y), residual weights w (moments to forces by an arm) and load scale [N]
+    (the bearings' characteristic loads from their tables of Hertz constants, `constant_tables`).
 
     The arm is the largest of the bearings' distances from z = 0 and pitch radii."""
     arm = jnp.max(jnp.stack([jnp.maximum(jnp.abs(s.position), _pitch_radius(s)) for s in shaft.supports]))
     weight = jnp.stack([1.0, 1.0, 1.0, 1.0 / arm, 1.0 / arm])
-    scale = safe_norm(applied_load(shaft) * weight) + sum(_characteristic_load(s) for s in shaft.supports)
+    scale = safe_norm(applied_load(shaft) * weight) + sum(_characteristic_load(s, table)
+                                                          for s, table in zip(shaft.supports, tables))
     return DISPLACEMENT_SCALE * weight, weight, scale
 
 
@@ -271,13 +275,7 @@ def damped_newton(residual, start, args):
     """(root, steps) of a shaft's scaled residual: damped Newton with Levenberg–Marquardt steps
     where it stalls, on the dense Jacobian regularised by 1e-12 of its largest diagonal entry (a
     direction no bearing resists keeps the step finite)."""
-
-    def regularised_jacobian(y, args):
-        jacobian = jax.jacfwd(residual)(y, args)
-        return jacobian + 1e-12 * (jnp.max(jnp.abs(jnp.diag(jacobian))) + 1.0) * jnp.eye(y.shape[0])
-
-    y, steps = newton(residual, start, args, max_steps=MAX_STEPS, loop="while", jacobian=regularised_jacobian,
-                      fallback=True, floor=1e-14)
+    y, steps = newton(residual, start, args, max_steps=MAX_STEPS, loop="while", guard=True, fallback=True, floor=1e-14)
     return y, steps.astype(y.dtype)
 
 
@@ -451,10 +449,10 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     implicit adjoint, least squares where the system stiffness is singular).
     """
     require_float64()
-    unknown, weight, load_scale = shaft_scales(shaft)
     tables = constant_tables(shaft)
+    unknown, weight, load_scale = shaft_scales(shaft, tables)
     start, static_steps = minimise_convex(_static_energy, jnp.zeros(5),
-                                          (shaft, unknown, weight, load_scale, energy_constants(shaft)),
+                                          (shaft, unknown, weight, load_scale, energy_constants(shaft, tables)),
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (shaft, unknown, weight, load_scale, tables)
     start = jax.lax.stop_gradient(start)

@@ -56,3 +56,52 @@ def test_newton_with_float32_factors_reaches_the_float64_root():
              for mixed in (False, True)]
     assert float(jnp.linalg.norm(residual(roots[1], None))) <= 1e-12
     np.testing.assert_allclose(roots[1], roots[0], rtol=0.0, atol=1e-12)
+
+
+def _counted(function):
+    """`function` with a count of the times it is traced (called in Python)."""
+    def counted(*arguments):
+        counted.calls += 1
+        return function(*arguments)
+
+    counted.calls = 0
+    return counted
+
+
+def test_the_damped_newton_traces_its_residual_once_per_use_and_reaches_the_root():
+    """F(y) = y³ + y − b, damped with Levenberg–Marquardt fallback from a far start: the residual is
+    traced once in the Jacobian's pass (which also gives F), once in the line search and once in
+    the fallback, the loops' first passes holding their first trials; without the fallback, twice.
+    The root is reached below the floor, and a start already there takes no step."""
+    target = jnp.array([2.0, -30.0, 0.5])
+    residual = _counted(lambda y, _: y**3 + y - target)
+    root, steps = jax.jit(lambda y0: newton(residual, y0, max_steps=60, loop="while", fallback=True, floor=1e-13))(
+        jnp.full(3, 5.0))
+    assert residual.calls == 3
+    assert float(jnp.linalg.norm(root**3 + root - target)) <= 1e-13 and 0 < int(steps) < 60
+    plain = _counted(lambda y, _: y**3 + y - target)
+    jax.make_jaxpr(lambda y0: newton(plain, y0, max_steps=60, floor=1e-13))(jnp.full(3, 5.0))
+    assert plain.calls == 2
+    _, again = jax.jit(lambda y0: newton(residual, y0, max_steps=60, loop="while", floor=1e-13))(root)
+    assert int(again) == 0
+
+
+def test_the_convex_minimisation_traces_its_energy_for_the_line_search_and_its_gradient_once():
+    """f(y) = Σ cosh(y − c) (convex, minimum at c): the energy is traced at the start and once in
+    the line search, its gradient once (in the Hessian's pass, which gives both)."""
+    from diffbearing.newton import minimise_convex
+
+    centre = jnp.array([0.3, -2.0, 1.0])
+    energy = _counted(lambda y, _: jnp.sum(jnp.cosh(y - centre)))
+    minimum, _ = jax.jit(lambda y0: minimise_convex(energy, y0, None, gradient_tolerance=1e-12))(jnp.zeros(3))
+    np.testing.assert_allclose(minimum, centre, rtol=0.0, atol=1e-12)
+    assert energy.calls == 3  # the start, the line search, and the gradient (by jax.grad, in the Hessian's pass)
+
+
+def test_a_guard_is_for_the_default_jacobian_only():
+    try:
+        newton(lambda y, _: y, jnp.zeros(2), max_steps=3, jacobian=lambda y, _: jnp.eye(2), guard=True)
+    except ValueError as error:
+        assert "guard" in str(error)
+    else:
+        raise AssertionError("a guard with the caller's jacobian is refused")

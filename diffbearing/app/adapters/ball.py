@@ -148,22 +148,20 @@ def _raceway_contact(inputs: dict, settings: dict, results: dict) -> dict:
         "geometry.diameter_ratio": diameter_ratio(bearing, angle),
         "geometry.effective_modulus": modulus,
     }
-    constants = {}
-    for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature)):
-        curvature_sum, curvature_difference = curvature(bearing, angle)
-        unit = hertz.point_contact(1.0, curvature_sum, curvature_difference, modulus, method)
-        # p₀ ∝ Q^{1/3}: the load that reaches the ISO 76 limit follows from p₀ at 1 N.
-        limit = (ISO76_BALL_PRESSURE_LIMIT / unit.max_pressure) ** 3
-        constants[side] = unit.load_deflection_constant
+    sums, differences = (jnp.stack(pair) for pair in zip(inner_curvature(bearing, angle), outer_curvature(bearing, angle)))
+    both = hertz.point_contact(1.0, sums, differences, modulus, method)  # one ellipticity solve for both sides
+    # p₀ ∝ Q^{1/3}: the load that reaches the ISO 76 limit follows from p₀ at 1 N.
+    limits = (ISO76_BALL_PRESSURE_LIMIT / both.max_pressure) ** 3
+    for k, side in enumerate(("inner", "outer")):
         out |= {
-            f"hertz.{side}.curvature_sum": curvature_sum,
-            f"hertz.{side}.curvature_difference": curvature_difference,
-            f"hertz.{side}.ellipticity": unit.ellipticity,
-            f"hertz.{side}.load_deflection_constant": unit.load_deflection_constant,
-            f"hertz.{side}.static_limit_load": limit,
+            f"hertz.{side}.curvature_sum": sums[k],
+            f"hertz.{side}.curvature_difference": differences[k],
+            f"hertz.{side}.ellipticity": both.ellipticity[k],
+            f"hertz.{side}.load_deflection_constant": both.load_deflection_constant[k],
+            f"hertz.{side}.static_limit_load": limits[k],
         }
     out["hertz.combined_load_deflection_constant"] = hertz.combined_load_deflection_constant(
-        constants["inner"], constants["outer"])
+        *both.load_deflection_constant)
     return out
 
 
