@@ -664,7 +664,9 @@ def condensed_balls(displacement, positions, bearing: BallBearing, operating: Op
                 jnp.concatenate([jnp.zeros((5, count, 2)), jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2))]))
     centres = inner_groove_centres(bearing, displacement)
     constants = None if exact else hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
-    free = _free_ball_equations(bearing, operating, centres, model, table)
+    # a free ball's placeholder row carries no force and no coupling to Δ (its reference is held in
+    # the linearisation): its reference and scale leave F and K unchanged, and carry no derivative
+    free = _without_gradient(_free_ball_equations(bearing, operating, centres, model, table))
     (contributions, balls), linear = jax.linearize(
         lambda d, x: _ring_and_ball_residuals(d, x, bearing, operating, model, constants, free, table),
         displacement, positions)
