@@ -117,7 +117,8 @@ def _table_rows() -> list[str]:
     path = RESULTS / "compile_time.md"
     if not path.is_file():
         return []
-    return [line for line in path.read_text().splitlines()
+    examples_part = path.read_text().split("block by block")[0]  # not the block table's rows
+    return [line for line in examples_part.splitlines()
             if line.startswith("| ") and not line.startswith(("| example", "| README")) and "---" not in line]
 
 

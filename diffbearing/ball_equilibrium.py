@@ -56,8 +56,8 @@ the convex elastic energy Σ (2/5) K_n max(|A| − B D_w, 0)^{5/2} − F·Δ (no
 zero stiffness at the start is fine; `newton.minimise_convex`). Newton (`newton.newton`, full
 steps) then adds the contact-angle dependence of the Hertz constants and the speed terms: without
 speed effects on the 5 ring unknowns with the balls at the closed-form static split; with them on
-the ring and ball unknowns together (5 + 2Z, the balls starting from `start_positions` at the
-static ring position), each step through the 5×5 Schur complement of the block-arrow Jacobian. Each step
+the ring and ball unknowns together (5 + 2Z, the balls first solved per ball at the static ring
+position), each step through the 5×5 Schur complement of the block-arrow Jacobian. Each step
 evaluates the Hertz constants once at the current contact angles and holds them in the Jacobian
 (their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
 from a Chebyshev table of K(α) that it builds from the bearing (`constant_table`) and passes
@@ -723,8 +723,12 @@ def _ring_solve(residual, start, args):
     the ring and ball unknowns together (`_speed_step`), continued in speed: the speeds rise in
     `SPEED_STAGES` (fractions whose squares, and so the centrifugal forces and gyroscopic moments,
     rise in equal steps), each stage's Newton starting from the last one's solution, the balls
-    from `start_positions` at the static ring position and the first stage's speed (the joint Newton
-    solves them; no per-ball Newton of their own first). At once
+    first solved per ball (`ball_positions`) at the static ring position and the first stage's
+    speed. From `start_positions` instead (the balls left to the joint Newton, as a shaft's are),
+    82 of 200 loads spread as in benchmarks/ball_batch.py (aero-engine bearing, 1500 r/min) took
+    17 to 194 steps in all where this start takes 15 to 22 (`Equilibrium.steps` of single solves;
+    a first stage wandering for its 100 steps, then discarded), and a vmapped batch runs as many
+    steps as its slowest case. At once
     from the static solution, Newton's first steps can carry a light or radially loaded ring past
     the clearance, where contacts switch and the iteration wanders off (measured: 12 % of random
     angular-contact bearings at speed ended unconverged or on a spurious root, docs/theory.md
@@ -740,7 +744,7 @@ def _ring_solve(residual, start, args):
         return y, (None, steps.astype(y.dtype))  # custom_root's JVP rule takes floating aux only
     fractions = jnp.asarray(SPEED_STAGES)
     first = _at_speed_fraction(operating, fractions[0])
-    positions = start_positions(_displacement(start, unknown, first), bearing, first, model, table)
+    positions = ball_positions(_displacement(start, unknown, first), bearing, first, model, table)
 
     def stage(unknowns, fraction):
         staged = (bearing, _at_speed_fraction(operating, fraction), model, table, unknown, weight, load_scale)
