@@ -86,8 +86,8 @@ from . import ball_validity, hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
 from .params import BallBearing, Operating, groove_curvature_centre_distance
 from .newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
-from .raceway_contact import (ContactConstantTable, ball_raceway_modulus, contact_constant_table, contact_constants,
-                              inner_curvature, outer_curvature, table_constants)
+from .raceway_contact import (ContactConstantTable, ball_raceway_modulus, both_curvatures, contact_constant_table,
+                              contact_constants, table_constants)
 
 BALL_NEWTON_MAX_STEPS = 40
 BALL_POSITION_TOLERANCE = 1e-13  # × D_w: step size at which the per-ball Newton stops
@@ -935,11 +935,8 @@ def ball_results(displacement, bearing: BallBearing, operating: Operating, model
 
 def _ball_results_of_state(bearing: BallBearing, model: BallModel, state: dict, positions) -> BallResults:
     """`BallResults` of a ball state (`ball_state`) at ball centres `positions` (Z, 2) [m]."""
-    # both sides in one elementwise evaluation: the program holds the ellipticity solve once
-    curvatures = [curvature(bearing, state[f"{side}_angle"])
-                  for side, curvature in (("inner", inner_curvature), ("outer", outer_curvature))]
     both = hertz.point_contact(jnp.stack([state["inner_load"], state["outer_load"]]),
-                               *(jnp.stack(jnp.broadcast_arrays(*pair)) for pair in zip(*curvatures)),
+                               *both_curvatures(bearing, state["inner_angle"], state["outer_angle"]),
                                ball_raceway_modulus(bearing), model.hertz_method)
     inner, outer = (jax.tree.map(lambda x: x[k], both) for k in (0, 1))
     return BallResults(

@@ -177,12 +177,13 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
     shaft = flexible.shaft
     bearing_nodes, _, _, reference_node = _structure(flexible)
     tables = constant_tables(shaft)
-    unknown, weight, load_scale = shaft_scales(shaft, tables)
+    constants = energy_constants(shaft, tables)
+    unknown, weight, load_scale = shaft_scales(shaft, tables, constants)
     unknown, weight = jnp.tile(unknown, len(bearing_nodes)), jnp.tile(weight, len(bearing_nodes))
     stiffness, force, recover = condensed(flexible)
     start, static_steps = minimise_convex(
         _static_energy, jnp.zeros(unknown.shape[0]),
-        (flexible, unknown, weight, load_scale, energy_constants(shaft, tables), stiffness, force),
+        (flexible, unknown, weight, load_scale, constants, stiffness, force),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (flexible, unknown, weight, load_scale, tables, stiffness, force)
     start = jax.lax.stop_gradient(start)

@@ -131,38 +131,23 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
         def trial(damping):
             return y - limited(jnp.linalg.solve(normal + damping * jnp.diag(scale), gradient))
 
-        def no_decrease(search):  # the first pass tries μ = 1e-6: one evaluation traced, in the loop
-            damping, merit, _, tried = search
-            return ~tried | ((~(merit < start)) & (damping < 1e6))
-
-        def raise_damping(search):
-            damping = jnp.where(search[3], 10.0 * search[0], search[0])
-            return (damping, *evaluate(trial(damping)), jnp.asarray(True))
-
-        damping, merit, following, _ = jax.lax.while_loop(no_decrease, raise_damping,
-                                                          (jnp.asarray(1e-6, y.dtype), *untried(y), jnp.asarray(False)))
+        damping, merit, following = _trials(lambda damping: evaluate(trial(damping)), jnp.asarray(1e-6, y.dtype), 10.0,
+                                            lambda damping, merit: ~(merit < start) & (damping < 1e6), untried(y))
         return trial(damping), merit, following
 
     def line_search_from(y, step, start, slope, resolved):
-        """(length, merit, F) of the Armijo backtracking from length 1: one evaluation per trial,
-        traced once (the first trial is the loop's first pass)."""
+        """(length, merit, F, sufficient) of the Armijo backtracking from length 1 (`_trials`)."""
         def sufficient(length, merit):
             return (merit <= start + ARMIJO * length * slope) | resolved
 
-        def keep_halving(search):
-            length, merit, _, tried = search
-            return ~tried | (~sufficient(length, merit) & (length > shortest))
-
-        def halve(search):
-            length = jnp.where(search[3], 0.5 * search[0], search[0])
-            return (length, *evaluate(y + length * step), jnp.asarray(True))
-
-        length, merit, following, _ = jax.lax.while_loop(keep_halving, halve,
-                                                         (jnp.asarray(1.0, y.dtype), *untried(y), jnp.asarray(False)))
+        length, merit, following = _trials(lambda length: evaluate(y + length * step), jnp.asarray(1.0, y.dtype), 0.5,
+                                           lambda length, merit: ~sufficient(length, merit) & (length > shortest),
+                                           untried(y))
         return length, merit, following, sufficient(length, merit)
 
-    def damped_step(state):  # state: (y, F at y where known (not before the first step), stopped, first, count)
-        y, residual, _, first, count = state
+    def damped_step(state):  # state: (y, F at y where known, stopped, count); F unknown before a joint first step
+        y, residual, _, count = state
+        first = joint & (count == 0)
         if joint:
             matrix, residual = jax.jacfwd(lambda y: (r := function(y, args), r), has_aux=True)(y)
             matrix = guarded(matrix) if guard else matrix
@@ -179,16 +164,15 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
         converged = jnp.asarray(False) if floor is None else first & (jnp.linalg.norm(residual) <= floor)
         accepted = (merit < start) & ~converged
         return (jnp.where(accepted, point, y), jnp.where(accepted, following, residual), ~accepted,
-                jnp.asarray(False), count + jnp.where(converged, 0, 1))
+                count + jnp.where(converged, 0, 1))
 
     def busy(state):
-        _, residual, stopped, first, _ = state
-        return ~stopped if floor is None else ~stopped & (first | (jnp.linalg.norm(residual) > floor))
+        _, residual, stopped, count = state
+        return ~stopped if floor is None else ~stopped & ((joint & (count == 0)) | (jnp.linalg.norm(residual) > floor))
 
     if objective is None:
         known = jnp.zeros_like(y0) if joint else function(y0, args)
-        return _iterate(damped_step, busy, (y0, known, jnp.asarray(False), jnp.asarray(joint), jnp.asarray(0)),
-                        max_steps, loop)
+        return _iterate(damped_step, busy, (y0, known, jnp.asarray(False), jnp.asarray(0)), max_steps, loop)
 
     def descent_step(state):  # minimising f: the step from H and ∇f at y (one trace of each), f alone in the search
         y, start, _, count = state
@@ -204,6 +188,23 @@ def newton(function, y0, args=None, *, max_steps: int, loop: str = "scan", jacob
 
     return _iterate(descent_step, lambda state: ~state[2], (y0, objective(y0, args), jnp.asarray(False),
                                                             jnp.asarray(0)), max_steps, loop)
+
+
+def _trials(evaluate_at, initial, factor, more, untried):
+    """(p, merit, F) of the trials p = initial, initial·factor, initial·factor², … each evaluated by
+    `evaluate_at(p)` → (merit, F), while `more(p, merit)`: a backtracking line search (factor ½) or
+    a rising damping (factor 10). One `while_loop` whose first pass is the first trial, so the
+    evaluation is traced once; `untried`: (merit, F) placeholders of its shapes."""
+    def going(search):
+        p, merit, _, tried = search
+        return ~tried | more(p, merit)
+
+    def advance(search):
+        p = jnp.where(search[3], factor * search[0], search[0])
+        return (p, *evaluate_at(p), jnp.asarray(True))
+
+    p, merit, following, _ = jax.lax.while_loop(going, advance, (initial, *untried, jnp.asarray(False)))
+    return p, merit, following
 
 
 def guarded(matrix):

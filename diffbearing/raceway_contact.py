@@ -37,6 +37,14 @@ def outer_curvature(bearing: BallBearing, contact_angle):
     return total / bearing.ball_diameter, (1.0 / bearing.outer_groove_ratio - raceway) / total
 
 
+def both_curvatures(bearing: BallBearing, inner_contact_angle, outer_contact_angle):
+    """(Σρ, F(ρ)), each (2, ...): the inner contact's in row 0, the outer's in row 1, for one
+    elementwise Hertz evaluation of both sides (a program then holds the ellipticity solve once)."""
+    pairs = zip(inner_curvature(bearing, inner_contact_angle), outer_curvature(bearing, outer_contact_angle))
+    sums, differences = (jnp.stack(jnp.broadcast_arrays(*pair)) for pair in pairs)
+    return sums, differences
+
+
 def ball_raceway_modulus(bearing: BallBearing):
     """Effective modulus E' [Pa] of the ball against a ring (`hertz.effective_modulus`)."""
     ball, ring = bearing.ball_material, bearing.ring_material
@@ -45,12 +53,9 @@ def ball_raceway_modulus(bearing: BallBearing):
 
 def contact_constants(bearing: BallBearing, inner_contact_angle, outer_contact_angle, method="exact"):
     """Hertz load–deflection constants (K_i, K_o) [N/m^1.5] in Q = K δ^{3/2} at the given angles [rad]
-    (both sides in one elementwise evaluation: a program holds the ellipticity solve once)."""
-    inner_sum, inner_difference = inner_curvature(bearing, inner_contact_angle)
-    outer_sum, outer_difference = outer_curvature(bearing, outer_contact_angle)
-    sums = jnp.stack(jnp.broadcast_arrays(inner_sum, outer_sum))
-    differences = jnp.stack(jnp.broadcast_arrays(inner_difference, outer_difference))
-    inner, outer = load_deflection_constant(sums, differences, ball_raceway_modulus(bearing), method)
+    (both sides at once, `both_curvatures`)."""
+    inner, outer = load_deflection_constant(*both_curvatures(bearing, inner_contact_angle, outer_contact_angle),
+                                            ball_raceway_modulus(bearing), method)
     return inner, outer
 
 

@@ -187,13 +187,11 @@ def constant_tables(shaft: Shaft):
     """Each ball bearing's table of contact constants (`ball_equilibrium.constant_table`); None for a
     roller bearing. Supports holding the same bearing object with the same model (a matched set)
     share one table."""
-    tables = []
-    for k, support in enumerate(shaft.supports):
-        same = next((tables[j] for j, earlier in enumerate(shaft.supports[:k]) if isinstance(earlier, BallSupport)
-                     and earlier.bearing is getattr(support, "bearing", None) and earlier.model == support.model), None)
-        tables.append(same if same is not None or not isinstance(support, BallSupport)
-                      else ball_equilibrium.constant_table(support.bearing, support.model))
-    return tuple(tables)
+    built = {}  # (id of the bearing object, model) → its table
+    for support in shaft.supports:
+        if isinstance(support, BallSupport) and (id(support.bearing), support.model) not in built:
+            built[id(support.bearing), support.model] = ball_equilibrium.constant_table(support.bearing, support.model)
+    return tuple(built[id(s.bearing), s.model] if isinstance(s, BallSupport) else None for s in shaft.supports)
 
 
 def shaft_force(shaft_displacement, shaft: Shaft, tables=None, ball_centres=None):
@@ -231,11 +229,10 @@ def support_energy(local, support, constants):
     return roller_equilibrium.static_energy(local, support.bearing, support.raceways, constants)
 
 
-def _characteristic_load(support, table):
+def _characteristic_load(support, table, held):
     if isinstance(support, BallSupport):
         return ball_equilibrium.characteristic_load(support.bearing, support.model, table)
-    setup = roller_equilibrium.lamina_setup(support.bearing, support.raceways, support.model)
-    return roller_equilibrium.characteristic_load(support.bearing, setup)
+    return roller_equilibrium.characteristic_load(support.bearing, held)
 
 
 def _pitch_radius(support):
@@ -243,15 +240,16 @@ def _pitch_radius(support):
     return 0.5 * bearing.pitch_diameter
 
 
-def shaft_scales(shaft: Shaft, tables):
+def shaft_scales(shaft: Shaft, tables, constants):
     """Unknown scale s (u = s·y), residual weights w (moments to forces by an arm) and load scale [N]
-    (the bearings' characteristic loads from their tables of Hertz constants, `constant_tables`).
+    (the bearings' characteristic loads from their tables of Hertz constants, `constant_tables`, and
+    their `energy_constants`).
 
     The arm is the largest of the bearings' distances from z = 0 and pitch radii."""
     arm = jnp.max(jnp.stack([jnp.maximum(jnp.abs(s.position), _pitch_radius(s)) for s in shaft.supports]))
     weight = jnp.stack([1.0, 1.0, 1.0, 1.0 / arm, 1.0 / arm])
-    scale = safe_norm(applied_load(shaft) * weight) + sum(_characteristic_load(s, table)
-                                                          for s, table in zip(shaft.supports, tables))
+    scale = safe_norm(applied_load(shaft) * weight) + sum(_characteristic_load(s, table, held)
+                                                          for s, table, held in zip(shaft.supports, tables, constants))
     return DISPLACEMENT_SCALE * weight, weight, scale
 
 
@@ -450,9 +448,9 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     """
     require_float64()
     tables = constant_tables(shaft)
-    unknown, weight, load_scale = shaft_scales(shaft, tables)
-    start, static_steps = minimise_convex(_static_energy, jnp.zeros(5),
-                                          (shaft, unknown, weight, load_scale, energy_constants(shaft, tables)),
+    constants = energy_constants(shaft, tables)
+    unknown, weight, load_scale = shaft_scales(shaft, tables, constants)
+    start, static_steps = minimise_convex(_static_energy, jnp.zeros(5), (shaft, unknown, weight, load_scale, constants),
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     args = (shaft, unknown, weight, load_scale, tables)
     start = jax.lax.stop_gradient(start)

@@ -277,6 +277,27 @@ def test_constant_table_reproduces_exact_hertz_constants(make):
     np.testing.assert_allclose(slope_table, slope_exact, atol=1e-9 * float(jnp.max(jnp.abs(slope_exact))))
 
 
+def test_constant_table_derivative_matches_central_difference(aero_bearing):
+    """The `hertz.constant_table` output's derivative with respect to the groove ratios and the
+    ball diameter, forward and reverse, against a central difference (h = 1e-6 of each), to 1e-6
+    of each side's largest coefficient (the higher coefficients are rounding-sized)."""
+    import equinox as eqx
+
+    from diffbearing.raceway_contact import contact_constant_table
+
+    bearing = aero_bearing["bearing"]
+    geometry = jnp.array([bearing.inner_groove_ratio, bearing.outer_groove_ratio, bearing.ball_diameter])
+
+    def table(values):
+        changed = eqx.tree_at(lambda b: (b.inner_groove_ratio, b.outer_groove_ratio, b.ball_diameter), bearing,
+                              tuple(values))
+        built = contact_constant_table(changed)
+        return built.inner / jnp.max(jnp.abs(built.inner)), built.outer / jnp.max(jnp.abs(built.outer))
+
+    for direction in jnp.diag(geometry):  # each value in turn, the step 1e-6 of it
+        assert_jvp_matches_central_difference(table, geometry, direction, 1e-6, rtol=0.0, atol=1e-6)
+
+
 def test_preload_by_axial_displacement_inverts_preload_by_force(solve):
     """Solve with Fz = 6 kN, then prescribe the δz found: the axial force returned is 6 kN and the
     other components are unchanged (displacement control is the inverse of force control)."""

@@ -9,8 +9,7 @@ from ... import ball_equilibrium, ball_validity, groove_chamfer, hertz
 from ...kinematics import RACE_CONTROLS
 from ...params import (BALL_BEARING_KINDS, Operating, ball_bearing, groove_curvature_centre_distance, radial_clearance,
                        with_radial_clearance)
-from ...raceway_contact import (ContactConstantTable, ball_raceway_modulus, diameter_ratio, inner_curvature,
-                               outer_curvature)
+from ...raceway_contact import ContactConstantTable, ball_raceway_modulus, both_curvatures, diameter_ratio
 from ..formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
 from ..registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from .materials import material
@@ -148,8 +147,8 @@ def _raceway_contact(inputs: dict, settings: dict, results: dict) -> dict:
         "geometry.diameter_ratio": diameter_ratio(bearing, angle),
         "geometry.effective_modulus": modulus,
     }
-    sums, differences = (jnp.stack(pair) for pair in zip(inner_curvature(bearing, angle), outer_curvature(bearing, angle)))
-    both = hertz.point_contact(1.0, sums, differences, modulus, method)  # one ellipticity solve for both sides
+    sums, differences = both_curvatures(bearing, angle, angle)
+    both = hertz.point_contact(1.0, sums, differences, modulus, method)
     # p₀ ∝ Q^{1/3}: the load that reaches the ISO 76 limit follows from p₀ at 1 N.
     limits = (ISO76_BALL_PRESSURE_LIMIT / both.max_pressure) ** 3
     for k, side in enumerate(("inner", "outer")):
