@@ -13,18 +13,15 @@ The batch answers are compared with single calls on a subset (largest relative d
 and K). Targets: static ≤ 50 µs/case in a 10 000-case batch, the aero-engine bearing ≤ 200
 µs/case, batch below single call for both. Writes benchmarks/results/ball_batch.md.
 
-Where the time went (after the solver changes; jit(vmap), 200–2000 cases, 2 shared cores). 7-ball
-static: the static start (regularized Newton on the elastic energy, ≤ 9 steps) is 22 µs/case of
-43; the ring Newton (3 steps, Jacobian with the Hertz constants held, 5 tangents) the rest. Before,
-`jax.jacfwd` through the Chebyshev (Clenshaw, degree 16) Hertz constants cost 48 000 flop/case per
-Jacobian against 2 300 for a residual. The aero-engine bearing with speed effects: solve 720
-µs/case, stiffness 370 µs/case. Both are dominated by the per-ball 2×2 Newton (`_ball_newton`, about 25 µs/case per
-step for 28 balls): the vmapped loop runs as many steps as the slowest ball of the batch needs,
-13 here (most cases need 4–6), where a lightly loaded ball whose inner contact is open at the start
-overshoots and comes back slowly on Hertz's δ^{3/2}. The solve pays it for its start (balls solved
-at the static ring position, 320 µs/case), then 5–6 steps of the combined ring-and-ball Newton (7
-tangents and the 5×5 Schur complement); the stiffness pays it again for the balls at Δ, then
-`jax.jacfwd(ring_force)`; the static start is 37 µs/case.
+Where the time goes (jit(vmap), 2 cores). 7-ball static: the static start (regularized Newton
+on the elastic energy, ≤ 9 steps) and the ring Newton (3 steps, Jacobian with the Hertz constants
+held, 5 tangents). The aero-engine bearing with speed effects: a stage of per-ball 2×2 Newton
+steps with the ring held, then four speed stages of the joint ring-and-ball Newton, every step
+one linearisation of the balls (4 tangents: each ball's groove centre and centre) and the 5×5
+Schur complement (`ball_equilibrium.condensed_balls`); the vmapped loops run as many steps as
+the slowest case of the batch needs (a lightly loaded ball whose inner contact is open at the
+start overshoots and comes back slowly on Hertz's δ^{3/2}). The stiffness is one exact
+linearisation at the solved balls.
 """
 
 import argparse

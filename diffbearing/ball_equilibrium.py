@@ -57,7 +57,8 @@ zero stiffness at the start is fine; `newton.minimise_convex`). Newton (`newton.
 steps) then adds the contact-angle dependence of the Hertz constants and the speed terms: without
 speed effects on the 5 ring unknowns with the balls at the closed-form static split; with them on
 the ring and ball unknowns together (5 + 2Z, the balls first solved per ball at the static ring
-position), each step through the 5×5 Schur complement of the block-arrow Jacobian. Each step
+position by the same step with the ring held), each step through the 5×5 Schur complement of the
+block-arrow Jacobian. Each step
 evaluates the Hertz constants once at the current contact angles and holds them in the Jacobian
 (their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
 from a Chebyshev table of K(α) that it builds from the bearing (`constant_table`) and passes
@@ -81,6 +82,7 @@ import dataclasses
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 
 from . import ball_validity, hertz, kinematics
 from .numerics import positive_power, require_float64, safe_norm
@@ -124,8 +126,16 @@ class BallModel:
 
 
 def ball_azimuths(bearing: BallBearing):
-    """ψ_j = 2π j / Z [rad], ball 0 on +x."""
-    return 2.0 * jnp.pi * jnp.arange(bearing.ball_count) / bearing.ball_count
+    """ψ_j = 2π j / Z [rad], ball 0 on +x: constants of the static ball count (NumPy), so a
+    traced program holds them, and their sines and cosines (`_azimuth_directions`), as values
+    rather than as operations in every trace of the geometry."""
+    return 2.0 * np.pi * np.arange(bearing.ball_count) / bearing.ball_count
+
+
+def _azimuth_directions(bearing: BallBearing):
+    """(sin ψ_j, cos ψ_j), (Z,) each: constants (`ball_azimuths`)."""
+    psi = ball_azimuths(bearing)
+    return np.sin(psi), np.cos(psi)
 
 
 def inner_groove_radius_of_centres(bearing: BallBearing):
@@ -136,13 +146,12 @@ def inner_groove_radius_of_centres(bearing: BallBearing):
 
 def inner_groove_centres(bearing: BallBearing, displacement):
     """(Z, 2) positions (axial, radial) of the inner groove curvature centres [m] (module docstring)."""
-    psi = ball_azimuths(bearing)
+    sin_psi, cos_psi = _azimuth_directions(bearing)
     distance = groove_curvature_centre_distance(bearing)
     arm = inner_groove_radius_of_centres(bearing)
     dx, dy, dz, tx, ty = (displacement[i] for i in range(5))
-    axial = distance * jnp.sin(bearing.free_contact_angle) + dz + arm * (tx * jnp.sin(psi) - ty * jnp.cos(psi))
-    radial = (distance * jnp.cos(bearing.free_contact_angle) + 0.5 * bearing.interference + dx * jnp.cos(psi)
-              + dy * jnp.sin(psi))
+    axial = distance * jnp.sin(bearing.free_contact_angle) + dz + arm * (tx * sin_psi - ty * cos_psi)
+    radial = distance * jnp.cos(bearing.free_contact_angle) + 0.5 * bearing.interference + dx * cos_psi + dy * sin_psi
     return jnp.stack([axial, radial], axis=-1)
 
 
@@ -502,7 +511,7 @@ def _ring_force_contributions(bearing: BallBearing, state: dict, model: BallMode
     contact point, f_i D_w + δ_i from that centre, and adds its couple 2 M_g (f_i D_w + δ_i)/D_w
     along e_t.
     """
-    psi = ball_azimuths(bearing)
+    sin_psi, cos_psi = _azimuth_directions(bearing)
     forces = contact_forces(bearing, state, model)
     axial, radial = jnp.moveaxis(forces["inner_normal"] + forces["inner_friction"], -1, 0)
     # e_t component of Σ r × F about the ring centre: −R_i F_axial, plus the friction's couple
@@ -511,11 +520,11 @@ def _ring_force_contributions(bearing: BallBearing, state: dict, model: BallMode
               else jnp.zeros_like(axial))
     tangential_moment = -inner_groove_radius_of_centres(bearing) * axial + couple
     return jnp.stack([
-        radial * jnp.cos(psi),
-        radial * jnp.sin(psi),
+        radial * cos_psi,
+        radial * sin_psi,
         axial,
-        -tangential_moment * jnp.sin(psi),
-        tangential_moment * jnp.cos(psi),
+        -tangential_moment * sin_psi,
+        tangential_moment * cos_psi,
     ], axis=-1)
 
 
@@ -618,12 +627,12 @@ def _static_ring_residual(y, args, constants):
     return _scaled_ring_residual(_ring_force_of_state(bearing, state, model), y, args)
 
 
-def _ring_and_ball_residuals(displacement, positions, bearing, operating, model, constants, free: _FreeBalls,
+def _ring_and_ball_residuals(centres, positions, bearing, operating, model, constants, free: _FreeBalls,
                              table=None):
     """Each ball's share of the ring force (Z, 5) [N, N·m] and the ball residuals (Z, 2) [N] (free
-    balls: their placeholder) at ring displacement Δ and ball centres X, with the Hertz constants
-    held at `constants` (None: at the contact angles, from `table`)."""
-    centres = inner_groove_centres(bearing, displacement)
+    balls: their placeholder) at inner groove centres A (Z, 2) [m] and ball centres X, with the Hertz
+    constants held at `constants` (None: at the contact angles, from `table`). Ball j's share and
+    residual depend on (A_j, X_j) alone."""
     state = ball_state(bearing, operating, centres, positions, model, constants, table)
     contributions = _ring_force_contributions(bearing, state, model)
     return contributions, _with_free_balls(sum(contact_forces(bearing, state, model).values()), positions, free)
@@ -653,28 +662,30 @@ def condensed_balls(displacement, positions, bearing: BallBearing, operating: Op
     the Jacobian follows the constants' angle dependence too and each ball's block is solved as it
     stands (no shift): at a solution, `condensed_stiffness` is then the stiffness dF/dΔ with the
     balls re-equilibrated (`stiffness_matrix`). The Jacobian
-    is block-arrow: 5 JVP tangents give the ring columns, and 2 tangents with the same unit on
-    every ball give all 2×2 ball blocks and the 5×2 couplings of each ball (ball j's residual and
-    its share of the ring force depend on X_j alone). The condensation is the block elimination
+    is block-arrow: ball j's residual and its share of the ring force depend on its inner groove
+    centre A_j and X_j alone, so 4 JVP tangents with the same unit on every ball (2 for A, 2 for X)
+    give every ball's 2×2 blocks, and the ring columns follow by the chain rule through the
+    groove centres' motion dA/dΔ (affine in Δ: a constant (Z, 2, 5)). The condensation is the block elimination
     through the 5×5 Schur complement S = J_ΔΔ − Σ_j J_ΔXj J_XjXj⁻¹ J_XjΔ (Golub & Van Loan, Matrix
     Computations, §3.2).
     """
     count = bearing.ball_count
-    tangents = (jnp.concatenate([jnp.eye(5), jnp.zeros((2, 5))]),
-                jnp.concatenate([jnp.zeros((5, count, 2)), jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2))]))
     centres = inner_groove_centres(bearing, displacement)
+    groove_motion = jax.jacfwd(inner_groove_centres, argnums=1)(bearing, displacement)  # dA/dΔ (Z, 2, 5), constant
     constants = None if exact else hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
     # a free ball's placeholder row carries no force and no coupling to Δ (its reference is held in
     # the linearisation): its reference and scale leave F and K unchanged, and carry no derivative
     free = _without_gradient(_free_ball_equations(bearing, operating, centres, model, table))
     (contributions, balls), linear = jax.linearize(
-        lambda d, x: _ring_and_ball_residuals(d, x, bearing, operating, model, constants, free, table),
-        displacement, positions)
-    d_shares, d_balls = jax.vmap(linear)(*tangents)
-    ring_ring = jnp.sum(d_shares[:5], axis=1).T  # (5, 5)
-    balls_ring = jnp.moveaxis(d_balls[:5], 0, -1)  # (Z, 2, 5)
-    ring_balls = jnp.moveaxis(d_shares[5:], 0, -1)  # (Z, 5, 2)
-    balls_balls = jnp.moveaxis(d_balls[5:], 0, -1)  # (Z, 2, 2)
+        lambda a, x: _ring_and_ball_residuals(a, x, bearing, operating, model, constants, free, table),
+        centres, positions)
+    units, none = jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, count, 2)), jnp.zeros((2, count, 2))
+    d_shares, d_balls = jax.vmap(linear)(jnp.concatenate([units, none]), jnp.concatenate([none, units]))
+    shares_centres = jnp.moveaxis(d_shares[:2], 0, -1)  # (Z, 5, 2)
+    ring_balls = jnp.moveaxis(d_shares[2:], 0, -1)  # (Z, 5, 2)
+    balls_ring = jnp.einsum("jab,jbc->jac", jnp.moveaxis(d_balls[:2], 0, -1), groove_motion)  # (Z, 2, 5)
+    balls_balls = jnp.moveaxis(d_balls[2:], 0, -1)  # (Z, 2, 2)
+    ring_ring = jnp.einsum("jab,jbc->ac", shares_centres, groove_motion)  # (5, 5)
     rhs = jnp.concatenate([balls[..., None], balls_ring], axis=-1)
     solved = jnp.linalg.solve(balls_balls, rhs) if exact else _solve_ball_blocks(balls_balls, rhs, free.scale)
     force = jnp.sum(contributions, axis=0)
@@ -694,10 +705,12 @@ def _static_step(y, args):
     return -guarded_solve(jacobian, residual)
 
 
-def _speed_step(unknowns, args):
+def _speed_step(unknowns, args, ring_held=False):
     """Newton step (−dy, −dX) of the ring and ball unknowns together (5 + 2Z), (y, ball centres
     (Z, 2) [m]): the balls condensed onto the ring (`condensed_balls`), the ring step from the
-    condensed residual (a prescribed component's equation is its unknown, = 0), then the balls'."""
+    condensed residual (a prescribed component's equation is its unknown, = 0), then the balls'.
+    With `ring_held` (a bool array) the ring stays where it is (dy = 0) and the step is each ball's
+    own 2×2 Newton step, −J_XX⁻¹ g: the balls solved per ball at a fixed ring."""
     y, positions = unknowns
     bearing, operating, model, table, unknown, weight, load_scale = args
     free, _ = _controls(operating)
@@ -705,7 +718,7 @@ def _speed_step(unknowns, args):
     ring = _scaled_ring_residual(condensed.condensed_force, y, args)
     rows = (free * weight / load_scale)[:, None]
     schur = rows * condensed.condensed_stiffness * (unknown * free)[None, :] + jnp.diag(1.0 - free)
-    dy = guarded_solve(schur, ring)
+    dy = jnp.where(ring_held, 0.0, guarded_solve(schur, ring))
     # the ring moves by −dy; the balls by −J_XX⁻¹ g − J_XX⁻¹ J_XΔ dΔ with dΔ = −(its scale) dy
     return -dy, -(condensed.ball_correction - condensed.ball_coupling @ (unknown * free * dy))
 
@@ -722,13 +735,16 @@ def _ring_solve(residual, start, args):
     Without speed effects on the ring unknowns at the static split (`_static_step`). With them on
     the ring and ball unknowns together (`_speed_step`), continued in speed: the speeds rise in
     `SPEED_STAGES` (fractions whose squares, and so the centrifugal forces and gyroscopic moments,
-    rise in equal steps), each stage's Newton starting from the last one's solution, the balls
-    first solved per ball (`ball_positions`) at the static ring position and the first stage's
-    speed. From `start_positions` instead (the balls left to the joint Newton, as a shaft's are),
-    82 of 200 loads spread as in benchmarks/ball_batch.py (aero-engine bearing, 1500 r/min) took
-    17 to 194 steps in all where this start takes 15 to 22 (`Equilibrium.steps` of single solves;
-    a first stage wandering for its 100 steps, then discarded), and a vmapped batch runs as many
-    steps as its slowest case. At once
+    rise in equal steps), each stage's Newton starting from the last one's solution. Before them a
+    stage with the ring held at the static solution (`_speed_step` with `ring_held`) solves the
+    balls per ball from `start_positions` at the first stage's speed: each ball's own 2×2 Newton
+    in the same loop body as the joint stages, so the program holds one step, not a per-ball solve
+    of its own. From `start_positions` without it (the balls left to the joint Newton, as a
+    shaft's are), 82 of 200 loads spread as in benchmarks/ball_batch.py (aero-engine bearing,
+    1500 r/min) took 17 to 194 ring steps where the held stage leaves 15 to 22 (`Equilibrium.steps`
+    of single solves, which now count the held stage's steps too: 19 to 36; a first stage
+    wandering for its 100 steps, then discarded), and a vmapped batch runs as many steps as its
+    slowest case. At once
     from the static solution, Newton's first steps can carry a light or radially loaded ring past
     the clearance, where contacts switch and the iteration wanders off (measured: 12 % of random
     angular-contact bearings at speed ended unconverged or on a spurious root, docs/theory.md
@@ -742,22 +758,27 @@ def _ring_solve(residual, start, args):
         y, steps = newton(residual, start, args, linear_step=_static_step,
                           step_tolerance=(RING_STEP_TOLERANCE, RING_STEP_TOLERANCE), **options)
         return y, (None, steps.astype(y.dtype))  # custom_root's JVP rule takes floating aux only
-    fractions = jnp.asarray(SPEED_STAGES)
-    first = _at_speed_fraction(operating, fractions[0])
-    positions = ball_positions(_displacement(start, unknown, first), bearing, first, model, table)
+    # a first stage at the first fraction with the ring held: the balls solved per ball at the static ring
+    fractions = jnp.asarray((SPEED_STAGES[0],) + SPEED_STAGES)
+    ring_held = jnp.arange(len(SPEED_STAGES) + 1) == 0
+    positions = start_positions(_displacement(start, unknown, operating), bearing,
+                                _at_speed_fraction(operating, fractions[0]), model, table)
 
-    def stage(unknowns, fraction):
+    def stage(unknowns, stage_input):
+        fraction, held = stage_input
         staged = (bearing, _at_speed_fraction(operating, fraction), model, table, unknown, weight, load_scale)
-        solved, steps = newton(None, unknowns, staged, linear_step=_speed_step,
+        solved, steps = newton(None, unknowns, staged, linear_step=lambda unknowns, args: _speed_step(unknowns, args, held),
                                limit=lambda step: (step[0], limited_ball_step(bearing, step[1])),
                                step_tolerance=((RING_STEP_TOLERANCE, BALL_POSITION_TOLERANCE * bearing.ball_diameter),
                                                (RING_STEP_TOLERANCE, 0.0)), **options)
-        # a stage that ran out of steps or off to non-finite values keeps the last stage's solution:
-        # the report then names the residual at full speed, with finite values
-        reached = (steps < RING_MAX_STEPS) & jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in jax.tree.leaves(solved)]))
+        # a ring stage that ran out of steps or off to non-finite values keeps the last stage's solution:
+        # the report then names the residual at full speed, with finite values (the balls' stage keeps its
+        # finite positions, as far as it came)
+        reached = (held | (steps < RING_MAX_STEPS)) & jnp.all(jnp.stack([jnp.all(jnp.isfinite(x))
+                                                                          for x in jax.tree.leaves(solved)]))
         return jax.tree.map(lambda new, old: jnp.where(reached, new, old), solved, unknowns), steps
 
-    (y, positions), steps = jax.lax.scan(stage, (start, positions), fractions)
+    (y, positions), steps = jax.lax.scan(stage, (start, positions), (fractions, ring_held))
     return y, (positions, jnp.sum(steps).astype(y.dtype))
 
 
