@@ -329,6 +329,17 @@ def test_run_model_keeps_its_programs_in_the_cache_unless_told_otherwise(tmp_pat
     assert (own.is_dir() and any(own.iterdir())) == (setting == "own")
 
 
+def test_build_model_switches_the_cache_on_for_the_input_builders(tmp_path):
+    """`build_model` alone (the mounted bearing's fits and temperatures are array operations that
+    compile) keeps its programs in DIFFBEARING_CACHE, for a later process to load."""
+    env = {key: value for key, value in os.environ.items() if not key.startswith("JAX_")}
+    env["DIFFBEARING_CACHE"] = str(tmp_path / "ours")
+    code = ("import jax; jax.config.update('jax_enable_x64', True)\n"
+            "from diffbearing import build_model, load_scene; build_model(load_scene('mounted_6411'))")
+    subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert any((tmp_path / "ours").glob("jit_*-cache"))  # JAX's entries (pint keeps its units in pint/)
+
+
 def test_a_setting_of_another_level_is_a_warning(capsys, tmp_path):
     """The starved-roller example's grid belongs to the finite line level: switched to the film
     formula by --set, the run goes on and the report says the grid is not used."""

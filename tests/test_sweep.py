@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from diffbearing.app import cli
+from diffbearing.app import cli, stored_models
 from diffbearing import build_model, load_scene, run_model
 
 from .helpers import BEARING_6411E, example_scene
@@ -62,6 +62,18 @@ def test_sweep_json_has_batch_axes(capsys, scene_file, tmp_path):
     np.testing.assert_allclose(document["sweep"]["operating.inner_speed"], [0.0, 100 * np.pi])
     np.testing.assert_allclose(np.array(document["sweep"]["operating.force"])[:, 0], [2e3, 5e3, 8e3])
     assert "Sweep over 2 × 3 = 6 points" in capsys.readouterr().out
+
+
+def test_a_sweep_is_stored_and_a_second_run_loads_it_without_tracing(swept, scene_file, monkeypatch):
+    """The sweep's batch, stored by its first run (stored_models.py), is loaded by the next run of
+    the same scene: nothing is traced and exported again, and the values are the same."""
+    def no_export(*args, **kwargs):
+        raise AssertionError("the stored sweep was traced again")
+
+    monkeypatch.setattr(stored_models.export, "export", no_export)
+    again = run_model(build_model(load_scene(str(scene_file))), progress=False)
+    for key in ("displacement", "stiffness", "life.L10r"):
+        np.testing.assert_array_equal(again.values[key], swept.values[key])
 
 
 def test_bad_sweep_entries_exit_2(capsys, scene_file):

@@ -3,8 +3,8 @@
 By default in ~/.cache/diffbearing/jax; DIFFBEARING_CACHE names another folder, and
 DIFFBEARING_CACHE=off switches it off. A folder the user set for JAX's own cache
 (`jax_compilation_cache_dir`, or JAX_COMPILATION_CACHE_DIR) is used as it is, with JAX's own
-settings, and DIFFBEARING_CACHE is not read. `run_model` and `run_sweep` switch the cache on before
-they first compile, from the CLI as from a script or notebook (which so reuses the programs of an
+settings, and DIFFBEARING_CACHE is not read. `build_model`, `run_model` and `run_sweep` switch the
+cache on before they first compile, from the CLI as from a script or notebook (which so reuses the programs of an
 earlier process too); importing diffbearing changes nothing. JAX's cache is one per process: once switched
 on here, it keeps every program the process compiles, the user's own included.
 """

@@ -15,6 +15,7 @@ import jax
 import numpy as np
 
 from . import registry
+from .compilation_cache import use_compilation_cache
 from .registry import Reads
 from .result import RunResult
 from .scene import Scene
@@ -83,7 +84,12 @@ def _unread(scene: Scene, blocks, asked: set, axes: dict) -> tuple[list[str], li
 
 def build_model(scene: Scene) -> Model:
     """Assemble the model of a scene: only the blocks its effects name (and what they require),
-    and the inputs those blocks read. ValueError for bad values, settings or unread keys."""
+    and the inputs those blocks read. ValueError for bad values, settings or unread keys.
+
+    The persistent compilation cache is switched on first (`use_compilation_cache`): the input
+    builders' array operations (fits and temperatures, a cage's geometry) compile too, and a later
+    process loads them."""
+    use_compilation_cache()
     blocks, missing = registry.resolve(scene.bearing_type, scene.table("effects"), present=scene.values)
     values = Reads(scene.values)
     inputs = build_inputs(scene.bearing_type, blocks, values)

@@ -12,7 +12,9 @@ that change array shapes (`bearing.balls`) or choices cannot. Blocks marked `seq
 over the points one after another inside the compiled function (`jax.lax.map`) instead. The
 batch runs in chunks of `CHUNK` points through one compiled function (a tqdm bar counts the
 chunks); with several local JAX devices each chunk is sharded over them along the batch axis
-(`jax.sharding`). Output arrays gain the grid's leading axes.
+(`jax.sharding`). Output arrays gain the grid's leading axes. On one device of one process the
+compiled batch is kept between processes as a single run's programs are (stored_models.py): a
+second run of the same sweep loads it without tracing.
 
 Under `jax.distributed` (several processes, e.g. one per host; docs/distributed_sweeps.md) each
 process evaluates a contiguous block of the chunks on its own devices and the blocks are gathered
@@ -34,6 +36,7 @@ from .registry import compiler_options
 from .registry import evaluate as evaluate_blocks
 from .result import RunResult
 from .schema import convert, lookup
+from .stored_models import compile_stored
 
 CHUNK = 64
 
@@ -78,6 +81,16 @@ def check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
         inputs_from_values(values)
 
 
+def _stored_key(model, blocks, base: dict, first: dict, sequential: bool) -> str:
+    """The key a sweep's program is stored under (`stored_models.compile_stored`): its blocks and
+    settings, the scene's values that every point shares (traced into it as constants), and the
+    swept keys with the chunk's shapes."""
+    settings = sorted((k, sorted(v.items())) for k, v in model.settings.items())
+    swept = sorted((key, value.shape, str(value.dtype)) for key, value in first.items())
+    return repr(("sweep", model.scene.bearing_type, tuple(b.name for b in blocks), settings,
+                 sorted(base.items(), key=lambda item: item[0]), swept, sequential))
+
+
 def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     """Evaluate `model` (a model.Model) over the grid `axes`; returns a RunResult with batched values."""
     inputs_from_values = model.inputs_from_values
@@ -100,10 +113,8 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
         values.update(swept)
         return evaluate(inputs_from_values(values))
 
-    if any(block.sequential_sweep for block in blocks):  # iterative solvers: one point after another
-        batched = jax.jit(lambda swept: jax.lax.map(point, swept))
-    else:
-        batched = jax.jit(jax.vmap(point))
+    sequential = any(block.sequential_sweep for block in blocks)  # iterative solvers: one point after another
+    batch = (lambda swept: jax.lax.map(point, swept)) if sequential else jax.vmap(point)
     sharding = NamedSharding(Mesh(np.array(devices), ("batch",)), PartitionSpec("batch")) if len(devices) > 1 else None
 
     def chunk_inputs(start):
@@ -116,8 +127,12 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
 
     first, _ = chunk_inputs(rank * share)
     use_compilation_cache()  # a sweep's program is kept between processes too (compilation_cache.py)
+    options = compiler_options(blocks, model.settings) or None
     start_time = time.perf_counter()
-    executable = batched.lower(first).compile(compiler_options(blocks, model.settings) or None)
+    if sharding is None and processes == 1:  # stored between processes: a second run skips tracing
+        executable, _ = compile_stored(batch, first, _stored_key(model, blocks, base, first, sequential), options)
+    else:
+        executable = jax.jit(batch).lower(first).compile(options)
     compile_s = time.perf_counter() - start_time
     pieces = []
     run_start = time.perf_counter()
