@@ -63,9 +63,11 @@ evaluates the Hertz constants once at the current contact angles and holds them 
 (their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
 from a Chebyshev table of K(α) that it builds from the bearing (`constant_table`) and passes
 down as `table`. The implicit derivative of the solution uses the exact linearisation
-(`newton.implicit_root`, least squares on the 5×5 Jacobian of `ring_force`), with speed effects at
-the solve's balls (`solved_ball_positions`: the balls' implicit derivative, no second ball Newton
-in the derivative's program). `ball_positions` solves the balls per ball (2×2 Newton steps) for a
+(`newton.implicit_root`, least squares on the 5×5 Jacobian of `ring_force`); with speed effects
+ring and balls are one root (`_joint_residual`), differentiated as one: the balls eliminated
+from its linearisation through the 5×5 Schur complement, which least squares solves
+(`_joint_tangent_solve`), so the derivative's program holds one linearisation of the balls, not
+a ring root's over each ball's. `ball_positions` solves the balls per ball (2×2 Newton steps) for a
 given Δ and carries the implicit-function derivative dX = −(∂g/∂X)⁻¹ (∂g/∂(Δ, p)) dΔ
 (`implicit_root`, block by block), so the ring force F(Δ) has exact total derivatives. The
 stiffness K = dF/dΔ (balls re-equilibrated) is the Schur complement of one exact linearisation at
@@ -611,12 +613,37 @@ def _ring_residual(y, args):
     return _scaled_ring_residual(force, y, args)
 
 
-def _ring_residual_at_balls(y, args):
-    """`_ring_residual` with the balls at the solve's centres (the last of `args`), their implicit
-    derivative kept (`solved_ball_positions`): the residual whose root the joint solve found."""
-    bearing, operating, model, table, unknown, _, _, positions = args
-    force = ring_force(_displacement(y, unknown, operating), bearing, operating, model, table, positions)
-    return _scaled_ring_residual(force, y, args[:7])
+def _joint_residual(unknowns, args):
+    """The joint solve's equations at ring unknowns y and ball centres X = s·u (s =
+    `DISPLACEMENT_SCALE`): the scaled ring residual (5,) and each ball's ΣF (Z, 2) over the load
+    scale (free balls: their placeholder, held), unknowns and equations of like size; the root the
+    joint Newton finds, and the system its implicit derivative solves (`_joint_tangent_solve`)."""
+    y, scaled_positions = unknowns
+    bearing, operating, model, table, unknown, _, load_scale = args
+    positions = DISPLACEMENT_SCALE * scaled_positions
+    centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
+    free = jax.lax.stop_gradient(_free_ball_equations(bearing, operating, centres, model, table))
+    contributions, balls = _ring_and_ball_residuals(centres, positions, bearing, operating, model, None, free, table)
+    return _scaled_ring_residual(jnp.sum(contributions, axis=0), y, args), balls / load_scale
+
+
+def _joint_tangent_solve(linear, rhs):
+    """(dy, du) with linear((dy, du)) = rhs, the joint residual linearised at its root: its dense
+    Jacobian (`jax.jacfwd`, 5 + 2Z tangents), the balls eliminated through the 5×5 Schur complement
+    S = J_yy − J_yu J_uu⁻¹ J_uy (the ring's scaled stiffness with the balls re-equilibrated), S
+    solved by least squares (finite where it is singular, as `newton.least_squares_tangent_solve`),
+    the balls by back substitution."""
+    ring_rhs, ball_rhs = rhs
+    size = ball_rhs.size
+    (ring_ring, ring_balls), (balls_ring, balls_balls) = jax.jacfwd(linear)(rhs)
+    ring_balls = ring_balls.reshape(5, size)
+    # J_uu factored once; its solves of the constant J_uy and of the right-hand side apart, so the
+    # solve stays linear in rhs (reverse mode transposes it)
+    factor = jax.scipy.linalg.lu_factor(balls_balls.reshape(size, size))
+    coupling = jax.scipy.linalg.lu_solve(factor, balls_ring.reshape(size, 5))
+    balls = jax.scipy.linalg.lu_solve(factor, ball_rhs.reshape(size))
+    dy = jnp.linalg.lstsq(ring_ring - ring_balls @ coupling, ring_rhs - ring_balls @ balls)[0]
+    return dy, (balls - coupling @ dy).reshape(ball_rhs.shape)
 
 
 def _static_ring_residual(y, args, constants):
@@ -839,17 +866,17 @@ def _solve(bearing: BallBearing, operating: Operating, model: BallModel):
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
     static_y = jax.lax.stop_gradient(static_y)
     args = (bearing, operating, model, table, unknown, weight, load_scale)
-    if model.speed_effects:  # the root's derivative at the solved balls: no ball Newton traced but the start's
+    if model.speed_effects:  # ring and balls one root, differentiated as one (`_joint_residual`)
         solved, (positions, steps) = jax.lax.stop_gradient(_ring_solve(_ring_residual, static_y, args))
-        y = implicit_root(_ring_residual_at_balls, solved, (*args, positions), lambda residual, guess, args: guess,
-                          least_squares_tangent_solve)
+        y, scaled_positions = implicit_root(_joint_residual, (solved, positions / DISPLACEMENT_SCALE), args,
+                                            lambda residual, guess, args: guess, _joint_tangent_solve)
+        positions = DISPLACEMENT_SCALE * scaled_positions
     else:  # the exact ring residual defines the implicit derivative
         y, (positions, steps) = implicit_root(_ring_residual, static_y, args, _ring_solve, least_squares_tangent_solve,
                                               has_aux=True)
     displacement = _displacement(y, unknown, operating)
     centres = inner_groove_centres(bearing, displacement)
     if model.speed_effects:  # the balls of the joint solve, with their implicit derivative
-        positions = solved_ball_positions(positions, displacement, bearing, operating, model, table)
         state = ball_state(bearing, operating, centres, positions, model, table=table)
     else:
         positions, state = _static_split(bearing, operating, centres, model, table=table)
