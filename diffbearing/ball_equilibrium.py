@@ -908,11 +908,13 @@ def relative_ball_residual(bearing: BallBearing, operating: Operating, centres, 
 
 
 def stiffness_matrix(displacement, bearing: BallBearing, operating: Operating, model: BallModel = BallModel(),
-                     ball_centres=None):
+                     ball_centres=None, table: ContactConstantTable | None = None):
     """5×5 stiffness K = dF/dΔ [N/m, N/rad; N·m/m, N·m/rad] with the balls re-equilibrated, exact
     (`stiffness_at_balls`). `ball_centres`: the solved balls at Δ (`Equilibrium.ball_centres`);
-    without them the balls are solved here."""
-    table = constant_table(bearing, model)
+    without them the balls are solved here. `table`: the solve's table of Hertz constants
+    (`Equilibrium.constant_table`); without it, it is built here."""
+    if table is None:
+        table = constant_table(bearing, model)
     positions = (equilibrium_positions(displacement, bearing, operating, model, table, ball_centres)
                  if model.speed_effects else None)
     return _stiffness(displacement, positions, bearing, operating, model, table)

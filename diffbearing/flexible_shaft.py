@@ -41,7 +41,7 @@ from .shaft_beam import NODE_DOFS, BeamMesh, ShaftSections, beam_mesh, node_posi
 from .shaft_equilibrium import (DISPLACEMENT_SCALE, RESIDUAL_TOLERANCE, STATIC_GRADIENT_TOLERANCE, Shaft,
                                 ShaftEquilibrium, Structure, balls_solved_jointly, constant_tables, damped_newton,
                                 energy_constants, local_displacement, shaft_scales, solve_jointly, support_energy,
-                                support_force, turned)
+                                support_force, support_stiffness, turned)
 
 
 class FlexibleShaft(eqx.Module):
@@ -213,13 +213,14 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
 
 def flexible_shaft_stiffness(solution: FlexibleShaftEquilibrium, flexible: FlexibleShaft):
     """5×5 stiffness [N/m, N/rad; N·m/m, N·m/rad] at the reference point: the Schur complement onto
-    its node of the tangent stiffness of beam and bearings (module docstring; exact, jacfwd)."""
+    its node of the tangent stiffness of beam and bearings (module docstring; exact, each bearing's own
+    `support_stiffness`)."""
     bearing_nodes, slots, _, reference_node = _structure(flexible)
     tangent = stiffness_matrix(flexible.mesh, flexible.sections, points(flexible))
     for slot, local, support, table, balls in zip(slots, solution.bearing_displacements, flexible.shaft.supports,
                                                   solution.constant_tables, solution.ball_centres):
         sign = turned(support)
-        bearing = jax.jacfwd(support_force)(local, support, flexible.shaft.speed, table, balls)
+        bearing = support_stiffness(local, support, flexible.shaft.speed, table, balls)
         index = _dofs([bearing_nodes[slot]])
         tangent = tangent.at[np.ix_(index, index)].add(sign[:, None] * bearing * sign[None, :])
     kept = _dofs([reference_node])

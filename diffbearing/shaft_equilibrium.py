@@ -177,6 +177,17 @@ def support_force(local_displacement, support, speed, table=None, ball_centres=N
                                          support.model)
 
 
+def support_stiffness(local_displacement, support, speed, table=None, ball_centres=None):
+    """K_k = dF_k/dΔ_k (5, 5) [N/m, N/rad; N·m/m, N·m/rad] of the bearing at Δ_k, in its own frame, with
+    its balls re-equilibrated: a ball bearing's exact stiffness (`ball_equilibrium.stiffness_matrix`:
+    with speed effects one linearisation at the balls, those the solve found where `ball_centres`
+    are given); a roller bearing's `jax.jacfwd` of its ring force."""
+    if isinstance(support, BallSupport):
+        return ball_equilibrium.stiffness_matrix(local_displacement, support.bearing, _operating(support, speed),
+                                                 support.model, ball_centres, table)
+    return jax.jacfwd(support_force)(local_displacement, support, speed, table)
+
+
 def reaction(shaft_displacement, support, speed, table=None, ball_centres=None):
     """G(z_k)ᵀ P_k F_k: the load the bearing takes from the shaft, moved to z = 0 [N, N·m]."""
     local = support_force(support_displacement(shaft_displacement, support), support, speed, table, ball_centres)
@@ -473,10 +484,16 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
 
 def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, ball_centres=None, tables=None):
     """5×5 system stiffness [N/m, N/rad; N·m/m, N·m/rad] at the shaft point z = `at` [m]: the
-    Jacobian of the bearings' loads with respect to that point's displacement (exact, jacfwd).
+    Jacobian of the bearings' loads with respect to that point's displacement (exact), Σ_k G_kᵀ P_k
+    K_k P_k G_k with each bearing's own K_k (`support_stiffness`), since Δ_k = P_k G_k u + (e_k + c_k) ẑ.
     `ball_centres`: the solve's balls (`ShaftEquilibrium.ball_centres`; else solved here);
     `tables`: the solve's (`ShaftEquilibrium.constant_tables`; else built here)."""
     tables = constant_tables(shaft) if tables is None else tables
-    stiffness = jax.jacfwd(shaft_force)(shaft_displacement, shaft, tables, ball_centres)
+    centres = (None,) * len(shaft.supports) if not ball_centres else ball_centres
+    stiffness = jnp.zeros((5, 5))
+    for support, table, balls in zip(shaft.supports, tables, centres):
+        move = turned(support)[:, None] * transfer(support.position)  # dΔ_k/du = P_k G_k
+        own = support_stiffness(support_displacement(shaft_displacement, support), support, shaft.speed, table, balls)
+        stiffness = stiffness + move.T @ own @ move
     back = transfer(-jnp.asarray(at, dtype=float))
     return back.T @ stiffness @ back
