@@ -87,7 +87,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from . import ball_validity, hertz, kinematics
-from .numerics import positive_power, require_float64, safe_norm
+from .numerics import positive_power, require_float64, safe_norm, without_gradient
 from .params import BallBearing, Operating, groove_curvature_centre_distance
 from .newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from .raceway_contact import (ContactConstantTable, ball_raceway_modulus, both_curvatures, contact_constant_table,
@@ -421,11 +421,6 @@ def start_positions(displacement, bearing: BallBearing, operating: Operating, mo
     return _speed_start(bearing, operating, inner_groove_centres(bearing, displacement), model, table)
 
 
-def _without_gradient(tree):
-    """`tree` with every floating array leaf under `jax.lax.stop_gradient`."""
-    return jax.tree.map(lambda x: jax.lax.stop_gradient(x) if eqx.is_inexact_array(x) else x, tree)
-
-
 def limited_ball_step(bearing: BallBearing, step):
     """Each ball's Newton step (Z, 2) [m], shortened to at most a tenth of the ball radius: Hertz's
     δ^{3/2} can throw a far Newton step."""
@@ -444,8 +439,8 @@ def ball_positions(displacement, bearing: BallBearing, operating: Operating, mod
     ball's placeholder equation is held fixed (it carries no force wherever it is). `table`: the
     Hertz constants' Chebyshev table (`hertz_constants`).
     """
-    centres = _without_gradient(inner_groove_centres(bearing, displacement))
-    start = _speed_start(*_without_gradient((bearing, operating)), centres, model, _without_gradient(table))
+    centres = without_gradient(inner_groove_centres(bearing, displacement))
+    start = _speed_start(*without_gradient((bearing, operating)), centres, model, without_gradient(table))
     return _balls_in_equilibrium(start, displacement, bearing, operating, model, table, _ball_newton)
 
 
@@ -702,7 +697,7 @@ def condensed_balls(displacement, positions, bearing: BallBearing, operating: Op
     constants = None if exact else hertz_constants(bearing, *_contact_angles(centres, positions), model, table)
     # a free ball's placeholder row carries no force and no coupling to Δ (its reference is held in
     # the linearisation): its reference and scale leave F and K unchanged, and carry no derivative
-    free = _without_gradient(_free_ball_equations(bearing, operating, centres, model, table))
+    free = without_gradient(_free_ball_equations(bearing, operating, centres, model, table))
     (contributions, balls), linear = jax.linearize(
         lambda a, x: _ring_and_ball_residuals(a, x, bearing, operating, model, constants, free, table),
         centres, positions)
@@ -860,14 +855,15 @@ def _solve(bearing: BallBearing, operating: Operating, model: BallModel):
     require_float64()
     table = constant_table(bearing, model)
     unknown, weight, load_scale = _scales(bearing, operating, model, table)
+    # the starts and the joint solve carry no derivative (the roots' implicit one stands for it): their
+    # inputs held, so a derivative's program holds no tangents of their loops either
     static_y, static_steps = minimise_convex(
         _static_energy, jnp.zeros(5),
-        (bearing, operating, free_contact_constant(bearing, model, table), unknown, load_scale),
+        without_gradient((bearing, operating, free_contact_constant(bearing, model, table), unknown, load_scale)),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
-    static_y = jax.lax.stop_gradient(static_y)
     args = (bearing, operating, model, table, unknown, weight, load_scale)
     if model.speed_effects:  # ring and balls one root, differentiated as one (`_joint_residual`)
-        solved, (positions, steps) = jax.lax.stop_gradient(_ring_solve(_ring_residual, static_y, args))
+        solved, (positions, steps) = _ring_solve(_ring_residual, static_y, without_gradient(args))
         y, scaled_positions = implicit_root(_joint_residual, (solved, positions / DISPLACEMENT_SCALE), args,
                                             lambda residual, guess, args: guess, _joint_tangent_solve)
         positions = DISPLACEMENT_SCALE * scaled_positions

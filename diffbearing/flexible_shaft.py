@@ -35,7 +35,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from .newton import implicit_root, least_squares_tangent_solve, minimise_convex
-from .numerics import require_float64
+from .numerics import require_float64, without_gradient
 from .params import _as_float, _is_concrete
 from .shaft_beam import NODE_DOFS, BeamMesh, ShaftSections, beam_mesh, node_positions, stiffness_matrix
 from .shaft_equilibrium import (DISPLACEMENT_SCALE, RESIDUAL_TOLERANCE, STATIC_GRADIENT_TOLERANCE, Shaft,
@@ -183,10 +183,9 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
     stiffness, force, recover = condensed(flexible)
     start, static_steps = minimise_convex(
         _static_energy, jnp.zeros(unknown.shape[0]),
-        (flexible, unknown, weight, load_scale, constants, stiffness, force),
-        gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
+        without_gradient((flexible, unknown, weight, load_scale, constants, stiffness, force)),
+        gradient_tolerance=STATIC_GRADIENT_TOLERANCE)  # a start: no derivative
     args = (flexible, unknown, weight, load_scale, tables, stiffness, force)
-    start = jax.lax.stop_gradient(start)
     if not any(balls_solved_jointly(shaft.supports)):
         y, steps = implicit_root(_residual, start, args, damped_newton, least_squares_tangent_solve, has_aux=True)
         centres = (None,) * len(shaft.supports)

@@ -4,8 +4,11 @@
   precision).
 * NaN-safe branches (the double-`where` trick of jax-md's `safe_mask`): the value is exact and
   the gradient finite where a contact opens (`max(δ, 0)^1.5`) or a load vanishes (`Q^(1/3)`).
+* `without_gradient` — a start's or a solve's inputs held, where an implicit derivative stands for
+  the solve's own.
 """
 
+import equinox as eqx
 import jax
 import jax.numpy as jnp
 
@@ -17,6 +20,13 @@ def require_float64() -> None:
             "diffbearing needs float64: call jax.config.update('jax_enable_x64', True) "
             "before the first JAX computation (the CLI and the tests do this)"
         )
+
+
+def without_gradient(tree):
+    """`tree` with every floating array leaf under `jax.lax.stop_gradient`: the inputs of a start or
+    a solve whose root an implicit derivative differentiates, so that a derivative's program holds
+    no tangents of its loops (a `stop_gradient` of the outputs alone leaves them traced)."""
+    return jax.tree.map(lambda x: jax.lax.stop_gradient(x) if eqx.is_inexact_array(x) else x, tree)
 
 
 def positive_power(x, exponent):

@@ -43,7 +43,7 @@ import numpy as np
 from . import ball_equilibrium, roller_equilibrium
 from .ball_equilibrium import BallModel
 from .newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
-from .numerics import require_float64, safe_norm
+from .numerics import require_float64, safe_norm, without_gradient
 from .params import BallBearing, Operating, _as_float, _is_concrete, check_range, groove_curvature_centre_distance
 from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways
 from .roller_geometry import RollerBearing
@@ -415,7 +415,7 @@ def solve_jointly(start, supports, speed, tables, structure: Structure, unknown,
     back-to-back pair at 2.3e4 r/min under random loads, residual 0.13; solved together it
     converges in 24 steps)."""
     args = (supports, speed, tables, structure, unknown, weight, load_scale)
-    solved, centres, steps = jax.lax.stop_gradient(_joint_solve(start, args))
+    solved, centres, steps = _joint_solve(start, without_gradient(args))  # the root's derivative is implicit
     args = (*args, centres)
     y = implicit_root(_residual_at_balls, solved, args, lambda residual, guess, args: guess,
                       least_squares_tangent_solve)
@@ -461,10 +461,10 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     tables = constant_tables(shaft)
     constants = energy_constants(shaft, tables)
     unknown, weight, load_scale = shaft_scales(shaft, tables, constants)
-    start, static_steps = minimise_convex(_static_energy, jnp.zeros(5), (shaft, unknown, weight, load_scale, constants),
-                                          gradient_tolerance=STATIC_GRADIENT_TOLERANCE)
+    start, static_steps = minimise_convex(_static_energy, jnp.zeros(5),
+                                          without_gradient((shaft, unknown, weight, load_scale, constants)),
+                                          gradient_tolerance=STATIC_GRADIENT_TOLERANCE)  # a start: no derivative
     args = (shaft, unknown, weight, load_scale, tables)
-    start = jax.lax.stop_gradient(start)
     if not any(balls_solved_jointly(shaft.supports)):
         y, steps = implicit_root(_residual, start, args, damped_newton, least_squares_tangent_solve, has_aux=True)
         centres = (None,) * len(shaft.supports)

@@ -243,6 +243,40 @@ def test_the_joint_roots_derivative_of_the_ball_centres_matches_central_differen
                                           atol=1e-8)
 
 
+def _loop_sizes(closed_jaxpr):
+    """Sorted equation counts of the bodies of every `while` loop in a jaxpr, nested ones included."""
+    from jax.extend.core import jaxprs_in_params
+
+    sizes = []
+
+    def walk(jaxpr):
+        for eqn in jaxpr.eqns:
+            if eqn.primitive.name == "while":
+                sizes.append(len(eqn.params["body_jaxpr"].jaxpr.eqns))
+            for inner in jaxprs_in_params(eqn.params):
+                walk(inner)
+
+    walk(closed_jaxpr.jaxpr)
+    return sorted(sizes)
+
+
+def test_a_gradient_holds_the_solves_loops_as_they_run_without_tangents(aero_bearing):
+    """The starts and the joint solve take their inputs without derivative (`numerics.without_gradient`;
+    the implicit root stands for theirs): the gradient's program holds each of their loops as the
+    solve alone does, with no tangents carried through the iterations."""
+    import equinox as eqx
+
+    bearing, operating = aero_bearing["bearing"], aero_bearing["operating"]
+
+    def axial_displacement(force):
+        loaded = eqx.tree_at(lambda o: o.force, operating, force)
+        return solve_equilibrium(bearing, loaded, SPEED).displacement[2]
+
+    force = jnp.asarray(operating.force)
+    alone = _loop_sizes(jax.make_jaxpr(axial_displacement)(force))
+    assert len(alone) >= 3 and _loop_sizes(jax.make_jaxpr(jax.grad(axial_displacement))(force)) == alone
+
+
 def _block_asymmetry(k):
     """Largest |K_ij − K_ji| over the translation–translation and translation–rotation blocks,
     relative to each block's largest entry."""
