@@ -61,6 +61,7 @@ def test_starved_film_follows_the_supply_and_never_exceeds_it(starved, flooded):
     assert centrals[1] < float(fast.central) < 0.8e-6
 
 
+@pytest.mark.slow  # a 2-D film's hard case: CI's slow suite (the default run's time)
 def test_severe_starvation_converges_with_finite_gradients(starved, flooded):
     """Hard case: an oil layer a tenth of the flooded film. The film is about the layer over the
     density ratio; values and gradients (oil layer, speed) are finite."""

@@ -69,6 +69,7 @@ def test_starved_film_derivatives_match_central_differences(coarse_flooded):
         assert_jvp_matches_central_difference(jax.jit(films), point, direction, step=1e-4, rtol=1e-4)
 
 
+@pytest.mark.slow  # a 2-D film's hard case: CI's slow suite (the default run's time)
 def test_severe_starvation_says_whether_it_converged_and_stays_finite(coarse_flooded):
     """A hard case: a layer of a third of the flooded film on 33 × 16 (where the march does not reach
     the steady solution). Converged or not, the result says so by its residual, and the films and
