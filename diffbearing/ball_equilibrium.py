@@ -58,9 +58,8 @@ steps) then adds the contact-angle dependence of the Hertz constants and the spe
 speed effects on the 5 ring unknowns with the balls at the closed-form static split; with them on
 the ring and ball unknowns together (5 + 2Z, the balls first solved per ball at the static ring
 position by the same step with the ring held), each step through the 5×5 Schur complement of the
-block-arrow Jacobian. Each step
-evaluates the Hertz constants once at the current contact angles and holds them in the Jacobian
-(their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
+block-arrow Jacobian. Each step evaluates the Hertz constants once at the current contact angles
+and holds them in the Jacobian (their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
 from a Chebyshev table of K(α) that it builds from the bearing (`constant_table`) and passes
 down as `table`. The implicit derivative of the solution uses the exact linearisation
 (`newton.implicit_root`, least squares on the 5×5 Jacobian of `ring_force`); with speed effects
@@ -617,7 +616,7 @@ def _joint_residual(unknowns, args):
     bearing, operating, model, table, unknown, _, load_scale = args
     positions = DISPLACEMENT_SCALE * scaled_positions
     centres = inner_groove_centres(bearing, _displacement(y, unknown, operating))
-    free = jax.lax.stop_gradient(_free_ball_equations(bearing, operating, centres, model, table))
+    free = without_gradient(_free_ball_equations(bearing, operating, centres, model, table))
     contributions, balls = _ring_and_ball_residuals(centres, positions, bearing, operating, model, None, free, table)
     return _scaled_ring_residual(jnp.sum(contributions, axis=0), y, args), balls / load_scale
 
@@ -683,13 +682,12 @@ def condensed_balls(displacement, positions, bearing: BallBearing, operating: Op
     Jacobian, which leaves out their weak angle dependence; the residuals are exact. With `exact`
     the Jacobian follows the constants' angle dependence too and each ball's block is solved as it
     stands (no shift): at a solution, `condensed_stiffness` is then the stiffness dF/dΔ with the
-    balls re-equilibrated (`stiffness_matrix`). The Jacobian
-    is block-arrow: ball j's residual and its share of the ring force depend on its inner groove
-    centre A_j and X_j alone, so 4 JVP tangents with the same unit on every ball (2 for A, 2 for X)
-    give every ball's 2×2 blocks, and the ring columns follow by the chain rule through the
-    groove centres' motion dA/dΔ (affine in Δ: a constant (Z, 2, 5)). The condensation is the block elimination
-    through the 5×5 Schur complement S = J_ΔΔ − Σ_j J_ΔXj J_XjXj⁻¹ J_XjΔ (Golub & Van Loan, Matrix
-    Computations, §3.2).
+    balls re-equilibrated (`stiffness_matrix`). The Jacobian is block-arrow: ball j's residual and
+    its share of the ring force depend on its inner groove centre A_j and X_j alone, so 4 JVP
+    tangents with the same unit on every ball (2 for A, 2 for X) give every ball's 2×2 blocks, and
+    the ring columns follow by the chain rule through the groove centres' motion dA/dΔ (affine in
+    Δ: a constant (Z, 2, 5)). The condensation is the block elimination through the 5×5 Schur
+    complement S = J_ΔΔ − Σ_j J_ΔXj J_XjXj⁻¹ J_XjΔ (Golub & Van Loan, Matrix Computations, §3.2).
     """
     count = bearing.ball_count
     centres = inner_groove_centres(bearing, displacement)
@@ -763,10 +761,9 @@ def _ring_solve(residual, start, args):
     in the same loop body as the joint stages, so the program holds one step, not a per-ball solve
     of its own. From `start_positions` without it (the balls left to the joint Newton, as a
     shaft's are), 82 of 200 loads spread as in benchmarks/ball_batch.py (aero-engine bearing,
-    1500 r/min) took 17 to 194 ring steps where the held stage leaves 15 to 22 (`Equilibrium.steps`
-    of single solves, which now count the held stage's steps too: 19 to 36; a first stage
-    wandering for its 100 steps, then discarded), and a vmapped batch runs as many steps as its
-    slowest case. At once
+    1500 r/min) took 17 to 194 ring steps where the held stage leaves 15 to 22 (single solves; a
+    first stage wandering for its 100 steps, then discarded), and a vmapped batch runs as many
+    steps as its slowest case. `Equilibrium.steps` counts the held stage's steps too. At once
     from the static solution, Newton's first steps can carry a light or radially loaded ring past
     the clearance, where contacts switch and the iteration wanders off (measured: 12 % of random
     angular-contact bearings at speed ended unconverged or on a spurious root, docs/theory.md
