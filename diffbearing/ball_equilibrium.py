@@ -59,9 +59,9 @@ speed effects on the 5 ring unknowns with the balls at the closed-form static sp
 the ring and ball unknowns together (5 + 2Z, the balls first solved per ball at the static ring
 position by the same step with the ring held), each step through the 5×5 Schur complement of the
 block-arrow Jacobian. Each step evaluates the Hertz constants once at the current contact angles
-and holds them in the Jacobian (their angle dependence is weak); the residuals are exact. Each solve evaluates the constants
-from a Chebyshev table of K(α) that it builds from the bearing (`constant_table`) and passes
-down as `table`. The implicit derivative of the solution uses the exact linearisation
+and holds them in the Jacobian (their angle dependence is weak); the residuals are exact. Each
+solve evaluates the constants from a Chebyshev table of K(α) that it builds from the bearing
+(`constant_table`) and passes down as `table`. The implicit derivative of the solution uses the exact linearisation
 (`newton.implicit_root`, least squares on the 5×5 Jacobian of `ring_force`); with speed effects
 ring and balls are one root (`_joint_residual`), differentiated as one: the balls eliminated
 from its linearisation through the 5×5 Schur complement, which least squares solves

@@ -160,6 +160,12 @@ def support_displacement(shaft_displacement, support):
     return local_displacement(transfer(support.position) @ shaft_displacement, support)
 
 
+def support_move(support):
+    """P_k G(z_k) (5, 5): dΔ_k/du, the bearing's inner-ring displacement per rigid-shaft displacement
+    at z = 0 (`support_displacement` is P_k G(z_k) u + (e_k + c_k) ẑ)."""
+    return turned(support)[:, None] * transfer(support.position)
+
+
 def _operating(support, speed):
     if isinstance(support, BallSupport):
         return Operating(inner_speed=speed, outer_speed=0.0, force=jnp.zeros(3), moment=jnp.zeros(2))
@@ -470,8 +476,7 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
         centres = (None,) * len(shaft.supports)
         residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
     else:  # the shaft and the balls together
-        structure = Structure(jnp.zeros((5, 5)), applied_load(shaft),
-                              tuple(turned(support)[:, None] * transfer(support.position) for support in shaft.supports))
+        structure = Structure(jnp.zeros((5, 5)), applied_load(shaft), tuple(map(support_move, shaft.supports)))
         y, centres, steps, residual = solve_jointly(start, shaft.supports, shaft.speed, tables, structure, unknown,
                                                     weight, load_scale)
     u = unknown * y
@@ -485,15 +490,14 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
 def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, ball_centres=None, tables=None):
     """5×5 system stiffness [N/m, N/rad; N·m/m, N·m/rad] at the shaft point z = `at` [m]: the
     Jacobian of the bearings' loads with respect to that point's displacement (exact), Σ_k G_kᵀ P_k
-    K_k P_k G_k with each bearing's own K_k (`support_stiffness`), since Δ_k = P_k G_k u + (e_k + c_k) ẑ.
+    K_k P_k G_k with each bearing's own K_k (`support_stiffness`; P_k G_k: `support_move`).
     `ball_centres`: the solve's balls (`ShaftEquilibrium.ball_centres`; else solved here);
     `tables`: the solve's (`ShaftEquilibrium.constant_tables`; else built here)."""
     tables = constant_tables(shaft) if tables is None else tables
     centres = (None,) * len(shaft.supports) if not ball_centres else ball_centres
     stiffness = jnp.zeros((5, 5))
     for support, table, balls in zip(shaft.supports, tables, centres):
-        move = turned(support)[:, None] * transfer(support.position)  # dΔ_k/du = P_k G_k
         own = support_stiffness(support_displacement(shaft_displacement, support), support, shaft.speed, table, balls)
-        stiffness = stiffness + move.T @ own @ move
+        stiffness = stiffness + support_move(support).T @ own @ support_move(support)
     back = transfer(-jnp.asarray(at, dtype=float))
     return back.T @ stiffness @ back

@@ -379,6 +379,15 @@ def programs(blocks) -> list[tuple[Block, ...]]:
 _COMPILED: dict = {}
 
 
+def program_key(blocks, settings: dict, inputs) -> str:
+    """What a compiled program of `blocks` depends on besides the numbers: the blocks, the
+    settings, and the structure, shapes and dtypes of its inputs (the key of `compiled` and of a
+    stored model, `stored_models.compile_stored`)."""
+    leaves, treedef = jax.tree.flatten(inputs)
+    return repr((tuple(b.name for b in blocks), sorted((k, sorted(v.items())) for k, v in settings.items()),
+                 str(treedef), tuple((jnp.shape(x), str(jnp.result_type(x))) for x in leaves)))
+
+
 def compiled(blocks, settings: dict, inputs: dict, progress: bool = False):
     """(a callable inputs → {output key: array} of `blocks`, compiled ahead of time for `inputs`;
     whether it was cached).
@@ -394,9 +403,7 @@ def compiled(blocks, settings: dict, inputs: dict, progress: bool = False):
     then its wall time (a scene's first run compiles for seconds to minutes; later ones load it).
     """
     use_compilation_cache()
-    leaves, treedef = jax.tree.flatten(inputs)
-    key = repr((tuple(b.name for b in blocks), sorted((k, sorted(v.items())) for k, v in settings.items()),
-                str(treedef), tuple((jnp.shape(x), str(jnp.result_type(x))) for x in leaves)))
+    key = program_key(blocks, settings, inputs)
     if key in _COMPILED:
         return _COMPILED[key], True
     executables, earlier = [], {}

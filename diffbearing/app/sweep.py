@@ -32,7 +32,7 @@ from jax.sharding import Mesh, NamedSharding, PartitionSpec
 from tqdm import tqdm
 
 from .compilation_cache import use_compilation_cache
-from .registry import compiler_options
+from .registry import compiler_options, program_key
 from .registry import evaluate as evaluate_blocks
 from .result import RunResult
 from .schema import convert, lookup
@@ -81,16 +81,6 @@ def check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
         inputs_from_values(values)
 
 
-def _stored_key(model, blocks, base: dict, first: dict, sequential: bool) -> str:
-    """The key a sweep's program is stored under (`stored_models.compile_stored`): its blocks and
-    settings, the scene's values that every point shares (traced into it as constants), and the
-    swept keys with the chunk's shapes."""
-    settings = sorted((k, sorted(v.items())) for k, v in model.settings.items())
-    swept = sorted((key, value.shape, str(value.dtype)) for key, value in first.items())
-    return repr(("sweep", model.scene.bearing_type, tuple(b.name for b in blocks), settings,
-                 sorted(base.items(), key=lambda item: item[0]), swept, sequential))
-
-
 def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     """Evaluate `model` (a model.Model) over the grid `axes`; returns a RunResult with batched values."""
     inputs_from_values = model.inputs_from_values
@@ -130,7 +120,10 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     options = compiler_options(blocks, model.settings) or None
     start_time = time.perf_counter()
     if sharding is None and processes == 1:  # stored between processes: a second run skips tracing
-        executable, _ = compile_stored(batch, first, _stored_key(model, blocks, base, first, sequential), options)
+        # the key: the program's (the chunk's swept keys and shapes), and the scene's values every point
+        # shares, which are traced into it as constants
+        key = repr(("sweep", program_key(blocks, model.settings, first), sorted(base.items()), sequential))
+        executable, _ = compile_stored(batch, first, key, options)
     else:
         executable = jax.jit(batch).lower(first).compile(options)
     compile_s = time.perf_counter() - start_time
