@@ -41,9 +41,9 @@ import numpy as np  # noqa: E402
 sys.path.insert(0, str(Path(__file__).parent))
 from timing import median_time  # noqa: E402
 
-from diffbearing.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix  # noqa: E402
-from diffbearing.params import Operating, ball_bearing  # noqa: E402
 from diffbearing import build_model, load_scene  # noqa: E402
+from diffbearing.bearings.ball.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix  # noqa: E402
+from diffbearing.params import Operating, ball_bearing  # noqa: E402
 
 RESULTS = Path(__file__).parent / "results"
 SPEED = 1500 * np.pi / 30

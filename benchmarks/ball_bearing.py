@@ -29,10 +29,9 @@ sys.path.insert(0, str(Path(__file__).parent))
 from scipy_ball_bearing import ClassicalBallBearing  # noqa: E402
 from timing import median_time  # noqa: E402
 
+from diffbearing import build_model, load_scene, run_sweep  # noqa: E402
 from diffbearing.app import registry  # noqa: E402
-from diffbearing.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix  # noqa: E402
-from diffbearing import build_model, load_scene  # noqa: E402
-from diffbearing import run_sweep  # noqa: E402
+from diffbearing.bearings.ball.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix  # noqa: E402
 
 RESULTS = Path(__file__).parent / "results"
 MODEL = BallModel(centrifugal=True, gyroscopic=True)

@@ -34,8 +34,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 sys.path.insert(0, str(Path(__file__).parent))
 from timing import median_time  # noqa: E402
 
-from diffbearing.cage_forces import ball_roles, cage_forces  # noqa: E402
-from diffbearing.cage_pocket import pocket_stiffness  # noqa: E402
+from diffbearing.cage.cage_forces import ball_roles, cage_forces  # noqa: E402
+from diffbearing.cage.cage_pocket import pocket_stiffness  # noqa: E402
 from diffbearing.params import Lubricant, Operating, ball_bearing, ball_cage  # noqa: E402
 
 RESULTS = Path(__file__).parent / "results"

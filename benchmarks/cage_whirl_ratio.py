@@ -35,10 +35,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 sys.path.insert(0, str(Path(__file__).parent))
 from timing import median_time  # noqa: E402
 
-from diffbearing import cage_dynamics  # noqa: E402
-from diffbearing.cage_dynamics import simulate_cage  # noqa: E402
-from diffbearing.cage_forces import epicyclic_cage_speed  # noqa: E402
-from diffbearing.cage_stability import cage_stability  # noqa: E402
+from diffbearing.cage import cage_dynamics  # noqa: E402
+from diffbearing.cage.cage_dynamics import simulate_cage  # noqa: E402
+from diffbearing.cage.cage_forces import epicyclic_cage_speed  # noqa: E402
+from diffbearing.cage.cage_stability import cage_stability  # noqa: E402
 from diffbearing.params import Lubricant, Operating, ball_bearing, ball_cage  # noqa: E402
 
 B7005 = ball_bearing(ball_diameter=5.556e-3, pitch_diameter=36e-3, balls=17, inner_groove_ratio=0.52,

@@ -123,8 +123,9 @@ def _table_rows() -> list[str]:
 
 
 def main() -> None:
-    from diffbearing.app.scene import examples
     from timing import machine
+
+    from diffbearing.app.scene import examples
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--examples", nargs="*", help="example names (default: every packaged example)")

@@ -20,7 +20,7 @@ import scipy.linalg
 
 def love_rectangle(x, y, a, b):
     """∫∫ dx'dy'/r over |x'| ≤ a, |y'| ≤ b seen from (x, y) (Love 1929): the closed form of
-    `diffbearing.influence.love_rectangle`, in NumPy so that the baseline runs without JAX."""
+    `diffbearing.contact.influence.love_rectangle`, in NumPy so that the baseline runs without JAX."""
     def primitive(u, v):
         return u * np.arcsinh(v / np.abs(u)) + v * np.arcsinh(u / np.abs(v))
 

@@ -40,12 +40,12 @@ import numpy as np  # noqa: E402
 from line_ehl import FLAT_LENGTH, LOAD, LUBRICANT, RADIUS, SPEED, formula_rows  # noqa: E402
 from timing import median_time  # noqa: E402
 
-from diffbearing.finite_line_ehl import finite_line_film  # noqa: E402
-from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
-from diffbearing.line_ehl import density_ratio, line_film  # noqa: E402
+from diffbearing.bearings.roller.roller_profile import roller_profile  # noqa: E402
+from diffbearing.film.finite_line_ehl import finite_line_film  # noqa: E402
+from diffbearing.film.finite_line_krylov import finite_line_film_krylov  # noqa: E402
+from diffbearing.film.line_ehl import density_ratio, line_film  # noqa: E402
+from diffbearing.film.starved_finite_line import starved_finite_line_film  # noqa: E402
 from diffbearing.newton_krylov import COMPILER_OPTIONS  # noqa: E402
-from diffbearing.roller_profile import roller_profile  # noqa: E402
-from diffbearing.starved_finite_line import starved_finite_line_film  # noqa: E402
 
 PROFILE = roller_profile("circular", length=14.7e-3, flat_length=FLAT_LENGTH, crown_radius=10e-3)
 ROLLER_LOAD = LOAD * FLAT_LENGTH

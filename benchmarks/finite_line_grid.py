@@ -33,9 +33,8 @@ import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from tqdm import tqdm  # noqa: E402
-
 from finite_line_ehl import OIL_LAYER, PAPER_MINIMUM, RESULTS, ROLLER_LOAD, finite_line_solver, timed  # noqa: E402
+from tqdm import tqdm  # noqa: E402
 
 ALONG_ROLLER = ((33, 32), (33, 64), (33, 128))  # (nx, ny) on the half domain
 ALONG_ROLLING = ((17, 64), (33, 64), (65, 64))

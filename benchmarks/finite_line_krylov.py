@@ -38,8 +38,8 @@ def one_case(nx, ny, load, layer_um, cache):
     from line_ehl import FLAT_LENGTH, LUBRICANT, RADIUS, SPEED
     from timing import compiled_with_time, machine, peak_rss_mib, xla_memory_mib
 
-    from diffbearing.finite_line_krylov import finite_line_film_krylov
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_krylov import finite_line_film_krylov
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=FLAT_LENGTH, crown_radius=10e-3)
     layer = layer_um * 1e-6 if layer_um > 0 else None

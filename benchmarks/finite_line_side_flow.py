@@ -35,12 +35,10 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from finite_line_ehl import FLAT_LENGTH, LUBRICANT, OIL_LAYER, PAPER_MINIMUM, PROFILE, RADIUS, RESULTS, SPEED  # noqa: E402
 from tqdm import tqdm  # noqa: E402
 
-from finite_line_ehl import (FLAT_LENGTH, LUBRICANT, OIL_LAYER, PAPER_MINIMUM, PROFILE, RADIUS,  # noqa: E402
-                             RESULTS, SPEED)
-
-from diffbearing.finite_line_ehl import finite_line_film  # noqa: E402
+from diffbearing.film.finite_line_ehl import finite_line_film  # noqa: E402
 
 GRID = (33, 48)  # half domain
 CLUSTERING = 8.0

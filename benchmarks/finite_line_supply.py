@@ -45,14 +45,13 @@ from scipy.optimize import brentq  # noqa: E402
 from tqdm import tqdm  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from finite_line_ehl import (FLAT_LENGTH, LUBRICANT, OIL_LAYER, PAPER_MINIMUM, PROFILE, RADIUS,  # noqa: E402
-                             RESULTS, SPEED)
+from finite_line_ehl import FLAT_LENGTH, LUBRICANT, OIL_LAYER, PAPER_MINIMUM, PROFILE, RADIUS, RESULTS, SPEED  # noqa: E402
 from finite_line_grid import CLUSTERED_LOAD_PATH, CLUSTERING  # noqa: E402
 from line_ehl import PAPER_CENTRAL  # noqa: E402
 
-from diffbearing.finite_line_ehl import finite_line_film  # noqa: E402
-from diffbearing.hertz import line_contact  # noqa: E402
-from diffbearing.line_ehl import density_ratio, line_film  # noqa: E402
+from diffbearing.contact.hertz import line_contact  # noqa: E402
+from diffbearing.film.finite_line_ehl import finite_line_film  # noqa: E402
+from diffbearing.film.line_ehl import density_ratio, line_film  # noqa: E402
 
 PAPER_CRITERION = (1.8e-6, 2.0e-6)  # Er > 1 % at the first layer, < 1 % at the second [m]
 CRITERION_LOAD = 1028.0  # [N]

@@ -32,7 +32,7 @@ from scipy.special import ellipe, ellipk  # noqa: E402
 sys.path.insert(0, str(Path(__file__).parent))
 from timing import median_time  # noqa: E402
 
-from diffbearing import hertz  # noqa: E402
+from diffbearing.contact import hertz  # noqa: E402
 
 RESULTS = Path(__file__).parent / "results"
 MODULUS = float(hertz.effective_modulus(208e9, 0.3, 208e9, 0.3))

@@ -33,10 +33,10 @@ import numpy as np  # noqa: E402
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from timing import median_time  # noqa: E402
 
-from diffbearing.app.adapters.film import LINE_STARVATION_SHARPNESS  # noqa: E402
-from diffbearing.film_formulas import moes_line_central, pan_hamrock_line, starved_film  # noqa: E402
-from diffbearing.hertz import line_contact  # noqa: E402
-from diffbearing.line_ehl import density_ratio, line_film, moes_load_parameter  # noqa: E402
+from diffbearing.app.adapters.effects.film import LINE_STARVATION_SHARPNESS  # noqa: E402
+from diffbearing.contact.hertz import line_contact  # noqa: E402
+from diffbearing.film.film_formulas import moes_line_central, pan_hamrock_line, starved_film  # noqa: E402
+from diffbearing.film.line_ehl import density_ratio, line_film, moes_load_parameter  # noqa: E402
 
 RADIUS = 1 / (1 / 12.7e-3 - 1 / 66e-3)
 FLAT_LENGTH = 12.7e-3

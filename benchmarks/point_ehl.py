@@ -48,9 +48,9 @@ def one_case(index, nx):
     jax.config.update("jax_enable_x64", True)
     from timing import compiled_with_time, peak_rss_mib
 
-    from diffbearing.film_formulas import hamrock_dowson_point
-    from diffbearing.hertz import point_contact
-    from diffbearing.point_ehl import point_film
+    from diffbearing.contact.hertz import point_contact
+    from diffbearing.film.film_formulas import hamrock_dowson_point
+    from diffbearing.film.point_ehl import point_film
 
     _, load, rx, ry, speed = CASES[index]
     compiled, compile_time = compiled_with_time(

@@ -43,11 +43,17 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from scipy_roller_bearing import ClassicalRollerBearing  # noqa: E402
 from timing import compiled_with_time, machine, median_time, peak_rss_mib, traced_peak_mib, xla_memory_mib  # noqa: E402
 
+from diffbearing.bearings.roller.roller_equilibrium import (  # noqa: E402
+    RollerModel,
+    RollerOperating,
+    roller_raceways,
+    roller_results,
+    roller_stiffness_matrix,
+    solve_roller_equilibrium,
+)
+from diffbearing.bearings.roller.roller_geometry import roller_bearing  # noqa: E402
+from diffbearing.bearings.roller.roller_profile import roller_profile  # noqa: E402
 from diffbearing.params import Material  # noqa: E402
-from diffbearing.roller_equilibrium import (RollerModel, RollerOperating, roller_raceways, roller_results,  # noqa: E402
-                                            roller_stiffness_matrix, solve_roller_equilibrium)
-from diffbearing.roller_geometry import roller_bearing  # noqa: E402
-from diffbearing.roller_profile import roller_profile  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 GCR15 = Material(207e9, 0.29, 7830.0)

@@ -36,11 +36,11 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from dense_roller_contact import solve_dense_active_set  # noqa: E402
 from timing import median_time  # noqa: E402
 
-from diffbearing import hertz  # noqa: E402
+from diffbearing.bearings.roller.roller_contact import contact_grid, roller_contact  # noqa: E402
+from diffbearing.bearings.roller.roller_geometry import RollerLoading, initial_gap, roller_bearing, roller_modulus  # noqa: E402
+from diffbearing.bearings.roller.roller_profile import roller_profile  # noqa: E402
+from diffbearing.contact import hertz  # noqa: E402
 from diffbearing.params import Material  # noqa: E402
-from diffbearing.roller_contact import contact_grid, roller_contact  # noqa: E402
-from diffbearing.roller_geometry import RollerLoading, initial_gap, roller_bearing, roller_modulus  # noqa: E402
-from diffbearing.roller_profile import roller_profile  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 GCR15 = Material(207e9, 0.29, 7830.0)

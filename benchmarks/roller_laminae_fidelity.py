@@ -36,9 +36,15 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from roller_bearing import tapered  # noqa: E402
 from timing import compiled_with_time, machine, median_time  # noqa: E402
 
-from diffbearing.roller_contact import roller_contact  # noqa: E402
-from diffbearing.roller_equilibrium import (RollerModel, RollerOperating, roller_contact_loadings,  # noqa: E402
-                                            roller_results, roller_stiffness_matrix, solve_roller_equilibrium)
+from diffbearing.bearings.roller.roller_contact import roller_contact  # noqa: E402
+from diffbearing.bearings.roller.roller_equilibrium import (  # noqa: E402
+    RollerModel,
+    RollerOperating,
+    roller_contact_loadings,
+    roller_results,
+    roller_stiffness_matrix,
+    solve_roller_equilibrium,
+)
 
 RESULTS = Path(__file__).resolve().parent / "results"
 GRIDS = [(16, 128), (32, 256), (32, 512), (64, 1024), (128, 2048)]

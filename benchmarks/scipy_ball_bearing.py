@@ -1,6 +1,6 @@
 """The classical way, for comparison: the same quasi-static equations in NumPy/SciPy.
 
-Same physics as diffbearing.ball_equilibrium (Jones–Harris, exact Hertz constants at each contact
+Same physics as diffbearing.bearings.ball.ball_equilibrium (Jones–Harris, exact Hertz constants at each contact
 angle, outer-raceway control, centrifugal force and gyroscopic moment), solved the usual way:
 `scipy.optimize.root` (MINPACK hybr): first the static problem on the 5 ring unknowns (balls on
 the line of groove centres) from a plain guess, then all 5 + 2Z unknowns from there (a cold start on

@@ -1,6 +1,6 @@
 """The classical way, for comparison: the roller-bearing lamina equations in NumPy/SciPy.
 
-Same equations as diffbearing.roller_equilibrium (its module docstring), written again in NumPy:
+Same equations as diffbearing.bearings.roller.roller_equilibrium (its module docstring), written again in NumPy:
 ISO/TS 16281 laminae q = c (E'/E'_steel) l^{-1/9} w max(δ, 0)^{10/9} on each contact, a rigid rib
 carrying the roller along its axis, the roller free across its axis (u) and in tilt (φ), the gap
 P_d/4 + z(y_k) with the crown drop z written here for the circular and Johns–Gohar profiles. Solved

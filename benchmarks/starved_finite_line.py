@@ -30,10 +30,10 @@ from timing import machine  # noqa: E402
 
 from diffbearing.app.scene import load_scene  # noqa: E402
 from diffbearing.app.stored_models import release_memory  # noqa: E402
-from diffbearing.finite_line_krylov import finite_line_film_krylov  # noqa: E402
+from diffbearing.bearings.roller.roller_profile import roller_profile, with_raceway_edge  # noqa: E402
+from diffbearing.film.finite_line_krylov import finite_line_film_krylov  # noqa: E402
+from diffbearing.film.starved_finite_line import starved_finite_line_film  # noqa: E402
 from diffbearing.newton_krylov import COMPILER_OPTIONS  # noqa: E402
-from diffbearing.roller_profile import roller_profile, with_raceway_edge  # noqa: E402
-from diffbearing.starved_finite_line import starved_finite_line_film  # noqa: E402
 
 SCENE = load_scene("starved_roller").values  # the public scene: its roller and oil layer
 PAPER_MINIMUM = {1028.0: 0.319, 1607.0: 0.215, 2471.0: 0.159}  # µm, starved by 0.8 µm (physics.md, seed 003)

@@ -28,10 +28,10 @@ jax.config.update("jax_enable_x64", True)
 
 from timing import compiled_with_time, machine, peak_rss_mib  # noqa: E402
 
-from diffbearing.film_formulas import starved_film  # noqa: E402
-from diffbearing.line_ehl import density_ratio  # noqa: E402
-from diffbearing.point_ehl import point_film  # noqa: E402
-from diffbearing.starved_point_ehl import starved_point_film  # noqa: E402
+from diffbearing.film.film_formulas import starved_film  # noqa: E402
+from diffbearing.film.line_ehl import density_ratio  # noqa: E402
+from diffbearing.film.point_ehl import point_film  # noqa: E402
+from diffbearing.film.starved_point_ehl import starved_point_film  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 OIL = dict(viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)

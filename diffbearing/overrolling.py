@@ -28,9 +28,9 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from . import kinematics
-from .roller_equilibrium import directions
-from .roller_geometry import roller_diameter
+from .bearings.ball import kinematics
+from .bearings.roller.roller_equilibrium import directions
+from .bearings.roller.roller_geometry import roller_diameter
 
 
 class OverrollingFrequencies(eqx.Module):

@@ -90,7 +90,7 @@ def test_the_graph_holds_function_level_imports():
     `main`, the schema imports the adapters package with `from . import adapters`."""
     assert "diffbearing.app.model" in GRAPH["diffbearing.app.cli"]
     assert "diffbearing.app.adapters" in GRAPH["diffbearing.app.schema"]
-    assert {"diffbearing.elliptic", "diffbearing.numerics"} <= GRAPH["diffbearing.hertz"]
+    assert {"diffbearing.contact.elliptic", "diffbearing.numerics"} <= GRAPH["diffbearing.contact.hertz"]
 
 
 TOY = Adapter(

@@ -5,10 +5,18 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.ball_equilibrium import (BallModel, ball_results, constant_table, ring_force, solve_equilibrium,
-                                          solve_with_balls, stiffness_at_balls, stiffness_matrix)
-from diffbearing.params import Operating, ball_bearing
 from diffbearing import build_model, load_scene
+from diffbearing.bearings.ball.ball_equilibrium import (
+    BallModel,
+    ball_results,
+    constant_table,
+    ring_force,
+    solve_equilibrium,
+    solve_with_balls,
+    stiffness_at_balls,
+    stiffness_matrix,
+)
+from diffbearing.params import Operating, ball_bearing
 
 from .helpers import assert_jvp_matches_central_difference, central_difference_jvp
 
@@ -317,7 +325,7 @@ def test_static_model_agrees_with_speed_model_at_standstill(aero_bearing):
 def test_constant_table_reproduces_exact_hertz_constants(make):
     """The Chebyshev table of K_i(α), K_o(α) matches the exact solve to 1e-13 over −90°…90°
     (D_w/d_m = 0.28 for the 6411E, 0.11 for the aero-engine bearing), and so does its derivative (1e-9)."""
-    from diffbearing.raceway_contact import contact_constant_table, contact_constants, table_constants
+    from diffbearing.bearings.ball.raceway_contact import contact_constant_table, contact_constants, table_constants
 
     bearing = make()
     table = contact_constant_table(bearing)
@@ -335,7 +343,7 @@ def test_constant_table_derivative_matches_central_difference(aero_bearing):
     of each side's largest coefficient (the higher coefficients are rounding-sized)."""
     import equinox as eqx
 
-    from diffbearing.raceway_contact import contact_constant_table
+    from diffbearing.bearings.ball.raceway_contact import contact_constant_table
 
     bearing = aero_bearing["bearing"]
     geometry = jnp.array([bearing.inner_groove_ratio, bearing.outer_groove_ratio, bearing.ball_diameter])
@@ -510,7 +518,7 @@ def test_negative_clearance_squeezes_every_ball_by_half_the_interference():
     carries K_n(0) (5 µm)^{3/2} (Hertz, both contacts in series at α = 0), to 1e-10; the radial
     stiffness is positive where a zero-clearance bearing has none; d Q/d G_r against a central
     difference."""
-    from diffbearing.ball_equilibrium import free_contact_constant
+    from diffbearing.bearings.ball.ball_equilibrium import free_contact_constant
     from diffbearing.params import radial_clearance
 
     def preloaded(clearance):

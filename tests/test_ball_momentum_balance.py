@@ -19,11 +19,19 @@ import jax
 import numpy as np
 import pytest
 
-from diffbearing.ball_equilibrium import (BallModel, ball_azimuths, ball_state, constant_table, contact_forces,
-                                          equilibrium_positions, inner_groove_centres,
-                                          inner_groove_radius_of_centres, solve_equilibrium)
-from diffbearing.params import Operating, ball_bearing
 from diffbearing import build_model, load_scene
+from diffbearing.bearings.ball.ball_equilibrium import (
+    BallModel,
+    ball_azimuths,
+    ball_state,
+    constant_table,
+    contact_forces,
+    equilibrium_positions,
+    inner_groove_centres,
+    inner_groove_radius_of_centres,
+    solve_equilibrium,
+)
+from diffbearing.params import Operating, ball_bearing
 
 RPM = np.pi / 30
 TOLERANCE = 1e-9

@@ -5,7 +5,7 @@ the errors a user meets."""
 import numpy as np
 import pytest
 
-from diffbearing.bearing_fits import housing_deviations, housing_interference, shaft_deviations, shaft_interference
+from diffbearing.systems.bearing_fits import housing_deviations, housing_interference, shaft_deviations, shaft_interference
 
 
 @pytest.mark.parametrize("tolerance, diameter, expected", [

@@ -7,9 +7,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from diffbearing import build_model, groove_chamfer, load_scene, run_model
+from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
-from diffbearing.bearing_set import preload_offset
+from diffbearing.bearings.ball import groove_chamfer
+from diffbearing.systems.bearing_set import preload_offset
 
 from .helpers import example_scene
 
@@ -107,7 +108,7 @@ def test_set_at_its_operating_clearance():
     it changes nothing (exact); an inner ring 10 K hotter than the outer closes the clearance and raises the
     preload, and each bearing then carries what the single bearing carries at the running contact
     angle, pushed by the matched offset plus the moved reference (f_i + f_o − 1) D_w (sin α₀ − sin α₀')."""
-    from diffbearing.ball_equilibrium import BallModel, ring_force
+    from diffbearing.bearings.ball.ball_equilibrium import BallModel, ring_force
     from diffbearing.params import Operating
 
     at_rest = ['operating.force=["0 N", "0 N", "0 N"]', 'operating.inner_speed="0 rpm"']
@@ -174,7 +175,7 @@ def test_pair_skf_friction_is_each_bearings_at_its_load():
     """effects.friction = "skf" on the DB pair (8000 r/min, speed effects off, VG 32 grease) under 1.2 kN
     axial: each bearing's SKF moment is the physics function's at that bearing's solved load (1e-12),
     the set's torque their sum."""
-    from diffbearing import skf_friction
+    from diffbearing.friction import skf_friction
 
     pair = run(['operating.force=["0 N", "0 N", "1.2 kN"]', "effects.friction=skf", "bearing.bore=70 mm",
                 "bearing.outer_diameter=110 mm", "lubricant.preset=iso_vg_32", "lubricant.supply=grease"])
@@ -210,7 +211,7 @@ def test_an_unconverged_set_says_why(ratio, missing, reason):
     """The set's check names the reason a solve did not converge (its balls lifted by their
     centrifugal force, a tandem pair short of axial load), or none; and the tandem pair's missing
     axial load is 1.25 (F_r + 2|M|/s) tan α₀ − F_z: 1.25 (300 + 2·6/0.03) tan 30° − 200 = 305.2 N."""
-    from diffbearing.app.adapters.bearing_set import _checks, tandem_missing_axial_load
+    from diffbearing.app.adapters.systems.bearing_set import _checks, tandem_missing_axial_load
     from diffbearing.params import ball_bearing
 
     values = {"set.validity.approach_ratio": 1e-3, "set.validity.contact_angle": 0.5,

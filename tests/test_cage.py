@@ -10,9 +10,9 @@ import pytest
 from scipy.integrate import quad
 
 from diffbearing.app import cli
-from diffbearing.cage_forces import cage_forces
-from diffbearing.cage_lands import land_force
-from diffbearing.cage_pocket import circumferential_force, seat_ball
+from diffbearing.cage.cage_forces import cage_forces
+from diffbearing.cage.cage_lands import land_force
+from diffbearing.cage.cage_pocket import circumferential_force, seat_ball
 from diffbearing.params import Lubricant, Operating, ball_bearing, ball_cage
 
 from .helpers import assert_jvp_matches_central_difference, example_scene

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from diffbearing.app import cli
-from diffbearing.cage_dynamics import DynamicsSettings, orbit_measures, simulate_cage
-from diffbearing.cage_lands import land_force, squeeze_film_force
-from diffbearing.cage_stability import cage_stability
+from diffbearing.cage.cage_dynamics import DynamicsSettings, orbit_measures, simulate_cage
+from diffbearing.cage.cage_lands import land_force, squeeze_film_force
+from diffbearing.cage.cage_stability import cage_stability
 from diffbearing.params import Operating, ball_cage
 
 from .helpers import assert_jvp_matches_central_difference, central_difference_jvp, example_scene
@@ -168,7 +168,7 @@ def test_stability_objective_gradient_matches_central_difference(stability_decay
 def test_stability_at_the_equilibrium_is_a_force_balance():
     """At c* the quasi-static resultant vanishes (to the Newton tolerance of 1e-10 C) and the
     equilibrium is stable at the scene's speed (σ > 0), the slowest mode real or complex."""
-    from diffbearing.cage_forces import cage_forces
+    from diffbearing.cage.cage_forces import cage_forces
 
     cage, operating = cage_paper_scene(20000.0)
 

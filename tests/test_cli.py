@@ -10,9 +10,9 @@ import sys
 import numpy as np
 import pytest
 
+from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli, registry, stored_models
 from diffbearing.app.compilation_cache import compilation_cache_folder
-from diffbearing import build_model, load_scene, run_model
 
 from .helpers import BEARING_6411E, example_scene
 

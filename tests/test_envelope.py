@@ -6,9 +6,7 @@ from pathlib import Path
 import pytest
 
 import diffbearing.scenes
-
 from diffbearing import build_model, load_scene
-
 
 SCENES = Path(diffbearing.scenes.__file__).parent
 
@@ -172,8 +170,8 @@ def test_shoulder_diameters_check_each_contact_ellipse(tmp_path, capsys):
 
     import numpy as np
 
-    from diffbearing import groove_chamfer
     from diffbearing.app import cli
+    from diffbearing.bearings.ball import groove_chamfer
 
     def run(inner, outer, *more):
         code = cli.main(["run", "gearbox_6411_ratings", "--set", f"bearing.inner_shoulder_diameter={inner}",

@@ -35,23 +35,33 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import ball_equilibrium, ball_validity, build_model, life, load_scene
-from diffbearing.bearing_set import bearing_set, preload_offset
-from diffbearing.app.adapters.ball import centrifugal_ratio, low_shoulder_angle, missing_axial_load
-from diffbearing.app.adapters.bearing_set import centrifugal_ratio as set_centrifugal_ratio
-from diffbearing.app.adapters.bearing_set import tandem_missing_axial_load
-from diffbearing.app.adapters.roller_bearing import missing_axial_load as roller_missing_axial_load
+from diffbearing import build_model, load_scene
+from diffbearing.app.adapters.bearings.ball import centrifugal_ratio, low_shoulder_angle, missing_axial_load
+from diffbearing.app.adapters.systems.bearing_set import centrifugal_ratio as set_centrifugal_ratio
+from diffbearing.app.adapters.systems.bearing_set import tandem_missing_axial_load
+from diffbearing.app.adapters.bearings.roller_bearing import missing_axial_load as roller_missing_axial_load
 from diffbearing.app.registry import all_keys
 from diffbearing.app.scene import read_document
-from diffbearing.minimum_load import BALL_MINIMUM_LOAD_RATIO, ROLLER_MINIMUM_LOAD_RATIO
+from diffbearing.bearings.ball import ball_equilibrium, ball_validity
+from diffbearing.bearings.roller.roller_equilibrium import (
+    MAX_APPROACH_FRACTION,
+    RESIDUAL_TOLERANCE,
+    RollerModel,
+    RollerOperating,
+    roller_centrifugal_force,
+    roller_raceways,
+    roller_results,
+    roller_stiffness_matrix,
+    solve_roller_equilibrium,
+)
+from diffbearing.bearings.roller.roller_geometry import roller_bearing
+from diffbearing.bearings.roller.roller_profile import roller_profile
 from diffbearing.params import Operating, ball_bearing
-from diffbearing.roller_equilibrium import (MAX_APPROACH_FRACTION, RESIDUAL_TOLERANCE, RollerModel, RollerOperating,
-                                            roller_centrifugal_force, roller_raceways, roller_results,
-                                            roller_stiffness_matrix, solve_roller_equilibrium)
-from diffbearing.roller_geometry import roller_bearing
-from diffbearing.roller_life import roller_dynamic_load_rating, roller_equivalent_dynamic_load
-from diffbearing.roller_profile import roller_profile
-from diffbearing.shaft_equilibrium import Shaft, ShaftLoads, shaft_stiffness, solve_shaft
+from diffbearing.ratings import life
+from diffbearing.ratings.minimum_load import BALL_MINIMUM_LOAD_RATIO, ROLLER_MINIMUM_LOAD_RATIO
+from diffbearing.ratings.roller_life import roller_dynamic_load_rating, roller_equivalent_dynamic_load
+from diffbearing.systems.bearing_set import bearing_set, preload_offset
+from diffbearing.systems.shaft_equilibrium import Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 
 SEED = int(os.environ.get("DIFFBEARING_SEED", "20261127"))
 SPEED_MODEL = ball_equilibrium.BallModel(centrifugal=True, gyroscopic=True)

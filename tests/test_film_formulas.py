@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from diffbearing.app import cli
-from diffbearing.film_formulas import dowson_higginson_line_minimum, hamrock_dowson_point, pan_hamrock_line
+from diffbearing.film.film_formulas import dowson_higginson_line_minimum, hamrock_dowson_point, pan_hamrock_line
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 
@@ -133,7 +133,7 @@ def test_ball_film_grows_with_speed_and_needs_a_lubricant(capsys):
 
 # --- numerical line contact (1-D) -------------------------------------------------------------
 
-from diffbearing.line_ehl import line_film, moes_load_parameter  # noqa: E402
+from diffbearing.film.line_ehl import line_film, moes_load_parameter  # noqa: E402
 
 STARVED_EHL_LINE = dict(radius=STARVED_EHL["radius"], viscosity=0.08, pressure_viscosity=2.2e-8, effective_modulus=2.26e11)
 

@@ -7,12 +7,12 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.finite_line_ehl import finite_line_film
-from diffbearing.finite_line_krylov import Stage, UniformLevel, finite_line_film_krylov, interpolate_level, krylov_levels
-from diffbearing.influence import love_rectangle
-from diffbearing.line_ehl import FluidParameters, moes_load_parameter
-from diffbearing.roller_profile import roller_profile
-
+from diffbearing.bearings.roller.roller_profile import roller_profile
+from diffbearing.contact.influence import love_rectangle
+from diffbearing.film.finite_line_ehl import finite_line_film
+from diffbearing.film.finite_line_krylov import finite_line_film_krylov
+from diffbearing.film.line_ehl import FluidParameters, moes_load_parameter
+from diffbearing.film.nested_krylov import Stage, UniformLevel, interpolate_level, krylov_levels
 
 from .helpers import assert_jvp_matches_central_difference
 from .test_film_formulas import STARVED_EHL_LINE, starved_ehl_entrainment_speed

@@ -8,7 +8,9 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import build_model, friction_torque, load_scene, run_model, static_safety
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.friction import friction_torque
+from diffbearing.ratings import static_safety
 
 from .helpers import BEARING_6208, assert_jvp_matches_central_difference, example_scene
 

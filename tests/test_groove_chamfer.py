@@ -4,7 +4,7 @@ ellipse."""
 import jax
 import numpy as np
 
-from diffbearing import groove_chamfer
+from diffbearing.bearings.ball import groove_chamfer
 
 INNER_GROOVE_RADIUS = 13.9e-3
 

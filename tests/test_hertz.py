@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 from scipy.special import ellipe, ellipk
 
-from diffbearing import hertz
-from diffbearing.elliptic import complete_elliptic_integrals, elliptic_integrals_and_difference
+from diffbearing.bearings.ball.raceway_contact import ball_raceway_modulus, inner_curvature
+from diffbearing.contact import hertz
+from diffbearing.contact.elliptic import complete_elliptic_integrals, elliptic_integrals_and_difference
 from diffbearing.params import BEARING_STEEL, ball_bearing
-from diffbearing.raceway_contact import ball_raceway_modulus, inner_curvature
 
 from .helpers import assert_jvp_matches_central_difference
 

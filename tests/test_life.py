@@ -5,9 +5,9 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import life
-from diffbearing.ball_equilibrium import BallModel, ball_results, solve_equilibrium
+from diffbearing.bearings.ball.ball_equilibrium import BallModel, ball_results, solve_equilibrium
 from diffbearing.params import Operating, ball_bearing
+from diffbearing.ratings import life
 
 from .helpers import assert_jvp_matches_central_difference
 

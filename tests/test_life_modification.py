@@ -6,8 +6,9 @@ import jax
 import numpy as np
 import pytest
 
-from diffbearing import build_model, life_modification, load_scene, run_model
-from diffbearing.viscosity_temperature import walther_viscosity
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.film.viscosity_temperature import walther_viscosity
+from diffbearing.ratings import life_modification
 
 from .helpers import BEARING_6411E, central_difference_jvp, example_scene
 

@@ -3,7 +3,7 @@
 import jax
 import numpy as np
 
-from diffbearing import load_distribution as ld
+from diffbearing.ratings import load_distribution as ld
 
 from .helpers import assert_jvp_matches_central_difference
 

@@ -7,12 +7,19 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
-from .helpers import assert_jvp_matches_central_difference
 
-from diffbearing import bearing_fits
-from diffbearing.operating_clearance import (Mounting, fit_pressure, inner_surface_shrinkage,
-                                             operating_clearance_change, outer_surface_growth, spin_growth)
 from diffbearing.params import BEARING_STEEL, Material
+from diffbearing.systems import bearing_fits
+from diffbearing.systems.operating_clearance import (
+    Mounting,
+    fit_pressure,
+    inner_surface_shrinkage,
+    operating_clearance_change,
+    outer_surface_growth,
+    spin_growth,
+)
+
+from .helpers import assert_jvp_matches_central_difference
 
 jax.config.update("jax_enable_x64", True)
 

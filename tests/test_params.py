@@ -5,8 +5,16 @@ import math
 import numpy as np
 import pytest
 
-from diffbearing.params import (BEARING_STEEL, Lubricant, Material, Operating, ball_bearing, iso_vg_oil,
-                                radial_clearance, wooster_pressure_viscosity)
+from diffbearing.params import (
+    BEARING_STEEL,
+    Lubricant,
+    Material,
+    Operating,
+    ball_bearing,
+    iso_vg_oil,
+    radial_clearance,
+    wooster_pressure_viscosity,
+)
 
 GOOD = dict(ball_diameter=26.9875e-3, pitch_diameter=97.5e-3, balls=7, kind="deep_groove_ball",
             inner_groove_radius=13.9e-3, outer_groove_radius=14.17e-3, radial_clearance=0.028e-3)

@@ -5,9 +5,9 @@ import jax
 import jax.numpy as jnp
 import pytest
 
-from diffbearing.film_formulas import hamrock_dowson_point
-from diffbearing.hertz import point_contact
-from diffbearing.point_ehl import point_film
+from diffbearing.contact.hertz import point_contact
+from diffbearing.film.film_formulas import hamrock_dowson_point
+from diffbearing.film.point_ehl import point_film
 
 from .helpers import assert_jvp_matches_central_difference
 
@@ -134,12 +134,12 @@ def test_a_heavily_loaded_deep_groove_bearing_converges_at_both_raceways():
     4.43 kN, at the inner (p₀ 3.08 GPa, κ 9.3) and the outer raceway (2.57 GPa, κ 7.3), u = 6.25
     m/s, on 65 × 32. The coarsest grid, 33 × 16, is too coarse for this film: its discrete
     solution closes (h_c < 0), and the finer grid starts anew from the Hertz start
-    (`finite_line_krylov.solve_nested`'s `start_anew`): both converge with positive films. The
+    (`nested_krylov.solve_nested`'s `start_anew`): both converge with positive films. The
     coarser grid's central film the result keeps is that of 33 × 16 solved alone (1e-9), so the
     grid change (`point_ehl.grid_change`) is above the report's warning bound; the report's
     check warns on it, naming the film and `fidelity.grid`, and not on an unloaded raceway."""
-    from diffbearing.app.adapters.film import GRID_CHANGE_WARNING, _point_checks
-    from diffbearing.point_ehl import grid_change
+    from diffbearing.app.adapters.effects.film import GRID_CHANGE_WARNING, _point_checks
+    from diffbearing.film.point_ehl import grid_change
 
     ball, pitch = 12.7e-3, 65e-3
     groove = 0.52 * ball / (2 * 0.52 - 1)

@@ -6,9 +6,10 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import build_model, life, life_modification, load_scene, radial_load_factors, run_model
+from diffbearing import build_model, load_scene, run_model
 from diffbearing.params import ball_bearing
-from diffbearing.radial_load_factors import equivalent_dynamic_load, load_factors, relative_axial_load
+from diffbearing.ratings import life, life_modification, radial_load_factors
+from diffbearing.ratings.radial_load_factors import equivalent_dynamic_load, load_factors, relative_axial_load
 
 DEG = np.pi / 180
 

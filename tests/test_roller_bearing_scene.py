@@ -204,7 +204,7 @@ def test_a_tapered_bearing_short_of_its_axial_load_at_speed_says_by_how_much(tmp
     F_r tan α_o + Z F_c sin α_o cos α_m / cos θ it needs at this speed. No equilibrium exists: exit 3,
     one line with the shortfall (`tapered_axial_load_needed` less 120 N, to the printed digits),
     every output finite."""
-    from diffbearing.roller_equilibrium import RollerModel, tapered_axial_load_needed
+    from diffbearing.bearings.roller.roller_equilibrium import RollerModel, tapered_axial_load_needed
 
     overrides = ('operating.force=["300 N", "0 N", "120 N"]', 'operating.inner_speed="9000 r/min"',
                  "effects.centrifugal=true")

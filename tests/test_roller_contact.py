@@ -10,13 +10,13 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from diffbearing import hertz
-from diffbearing.influence import deflection, influence_coefficients, love_rectangle
-from diffbearing.params import Material
-from diffbearing.roller_contact import roller_contact
-from diffbearing.roller_geometry import RollerLoading, roller_bearing, roller_modulus
-from diffbearing.roller_profile import roller_profile
 from diffbearing import build_model, load_scene, run_model
+from diffbearing.bearings.roller.roller_contact import roller_contact
+from diffbearing.bearings.roller.roller_geometry import RollerLoading, roller_bearing, roller_modulus
+from diffbearing.bearings.roller.roller_profile import roller_profile
+from diffbearing.contact import hertz
+from diffbearing.contact.influence import deflection, influence_coefficients, love_rectangle
+from diffbearing.params import Material
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 
@@ -330,7 +330,7 @@ def test_raceway_edge_adds_its_curvature_to_the_crown():
     (against the closed form at four points), and the drop's derivative with respect to R_e
     matches a central difference (the starved-roller example's
     10 mm crown, 12.7 mm flat, 100 mm edge)."""
-    from diffbearing.roller_profile import crown_drop, with_raceway_edge
+    from diffbearing.bearings.roller.roller_profile import crown_drop, with_raceway_edge
 
     crown = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     y = jnp.array([0.0, 6.0e-3, 6.6e-3, 7.3e-3])

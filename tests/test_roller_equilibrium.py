@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from diffbearing import roller_equilibrium as re
-from diffbearing.roller_geometry import roller_bearing
-from diffbearing.roller_profile import roller_profile
+from diffbearing.bearings.roller import roller_equilibrium as re
+from diffbearing.bearings.roller.roller_geometry import roller_bearing
+from diffbearing.bearings.roller.roller_profile import roller_profile
 
 from .helpers import assert_jvp_matches_central_difference, central_difference_jvp
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from diffbearing import roller_life
+from diffbearing.ratings import roller_life
 
 from .helpers import assert_jvp_matches_central_difference
 

@@ -6,9 +6,15 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.operating_clearance import SEAT_MATERIALS
-from diffbearing.shaft_beam import (ShaftSections, beam_mesh, node_positions, section_properties, shear_coefficient,
-                                    stiffness_matrix)
+from diffbearing.systems.operating_clearance import SEAT_MATERIALS
+from diffbearing.systems.shaft_beam import (
+    ShaftSections,
+    beam_mesh,
+    node_positions,
+    section_properties,
+    shear_coefficient,
+    stiffness_matrix,
+)
 
 STEEL = SEAT_MATERIALS["steel"][0]
 E, NU = float(STEEL.elastic_modulus), float(STEEL.poisson_ratio)

@@ -8,14 +8,23 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import roller_equilibrium as re
-from diffbearing.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix
-from diffbearing.bearing_set import bearing_set, preload_force, preload_offset
+from diffbearing.bearings.ball.ball_equilibrium import BallModel, solve_equilibrium, stiffness_matrix
+from diffbearing.bearings.roller import roller_equilibrium as re
+from diffbearing.bearings.roller.roller_geometry import roller_bearing
+from diffbearing.bearings.roller.roller_profile import roller_profile
 from diffbearing.params import Operating, ball_bearing
-from diffbearing.roller_geometry import roller_bearing
-from diffbearing.roller_profile import roller_profile
-from diffbearing.shaft_equilibrium import (BallSupport, RollerSupport, Shaft, ShaftLoads, shaft_force, shaft_stiffness,
-                                           solve_shaft, support_displacement, transfer)
+from diffbearing.systems.bearing_set import bearing_set, preload_force, preload_offset
+from diffbearing.systems.shaft_equilibrium import (
+    BallSupport,
+    RollerSupport,
+    Shaft,
+    ShaftLoads,
+    shaft_force,
+    shaft_stiffness,
+    solve_shaft,
+    support_displacement,
+    transfer,
+)
 
 from .helpers import assert_jvp_matches_central_difference
 
@@ -95,7 +104,7 @@ def test_preload_force_inverts_preload_offset(offset):
 
 def test_system_life_derivative():
     """d L_sys / d L_k of (Σ L^(−10/9))^(−9/10) against a central difference."""
-    from diffbearing.life import system_life
+    from diffbearing.ratings.life import system_life
 
     assert_jvp_matches_central_difference(system_life, jnp.array([300.0, 7000.0]), jnp.array([1.0, -2.0]), 1e-3,
                                           rtol=1e-8)
@@ -257,8 +266,8 @@ def test_bad_input_is_refused():
 def test_a_matched_pair_shares_one_table_of_hertz_constants():
     """The two bearings of a set hold the same bearing and model: one table, built once, equal to
     the bearing's own; a different bearing (or model) gets its own table."""
-    from diffbearing.ball_equilibrium import constant_table
-    from diffbearing.shaft_equilibrium import constant_tables
+    from diffbearing.bearings.ball.ball_equilibrium import constant_table
+    from diffbearing.systems.shaft_equilibrium import constant_tables
 
     first, second = constant_tables(pair(0.0))
     assert first is second

@@ -8,9 +8,9 @@ import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
-from diffbearing.app.adapters.shaft import PERMISSIBLE_MISALIGNMENT, _supports, misalignment_warnings
-from diffbearing.flexible_shaft import flexible_shaft, solve_flexible_shaft
-from diffbearing.shaft_equilibrium import Shaft
+from diffbearing.app.adapters.systems.shaft import PERMISSIBLE_MISALIGNMENT, _supports, misalignment_warnings
+from diffbearing.systems.flexible_shaft import flexible_shaft, solve_flexible_shaft
+from diffbearing.systems.shaft_equilibrium import Shaft
 
 from .helpers import BEARING_6411E
 

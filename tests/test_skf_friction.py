@@ -7,7 +7,9 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import build_model, friction_torque, load_scene, run_model, skf_friction, static_safety
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.friction import friction_torque, skf_friction
+from diffbearing.ratings import static_safety
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 

@@ -5,8 +5,8 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.film_formulas import moes_line_central, starved_film
-from diffbearing.line_ehl import density_ratio, line_film, moes_load_parameter
+from diffbearing.film.film_formulas import moes_line_central, starved_film
+from diffbearing.film.line_ehl import density_ratio, line_film, moes_load_parameter
 
 from .helpers import assert_jvp_matches_central_difference
 from .test_film_formulas import STARVED_EHL_LINE, STARVED_EHL_LOAD_PER_LENGTH, starved_ehl_entrainment_speed
@@ -128,8 +128,8 @@ def test_formula_derivatives_match_central_differences():
 def test_finite_line_derivatives_match_central_differences():
     """Implicit derivative (lax.custom_root) of the 2-D central and minimum film with respect to
     load, speed and viscosity, forward and reverse, on a small 17 × 16 grid (it converges there)."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
@@ -148,8 +148,8 @@ def test_finite_line_derivatives_match_central_differences():
 def starved_finite_line():
     """The starved-EHL paper's starved 2-D film on a 25 × 16 grid: (W [kN], h_oil [µm], speed factor) →
     (h_c [µm], h_min [µm], converged)."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
@@ -199,8 +199,8 @@ def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_laye
     (`local_and_elastic_jacobian`), equals jax.jacfwd of the residual to round-off (an exact
     identity), at a perturbed start on a 17 × 9 grid, flooded and starved (meniscus unknowns),
     the meniscus balance with and without the side inflow (which couples it to the neighbours)."""
-    from diffbearing import finite_line_ehl
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film import finite_line_ehl
 
     newton, differences = finite_line_ehl.newton, []
 
@@ -224,8 +224,8 @@ def test_finite_line_jacobian_assembly_equals_forward_mode(monkeypatch, oil_laye
 def test_finite_line_load_path_outside_its_range_raises(load_path):
     """A load continuation path that is not increasing fractions in (0, 1] ending at 1 is a
     ValueError naming `load_path`, raised before any solve."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     with pytest.raises(ValueError, match="load_path"):
@@ -238,8 +238,8 @@ def test_finite_line_warm_start_reaches_the_cold_solution_and_carries_no_derivat
     """A Newton started from a neighbouring solution (`start=`, 17 × 16, starved at 0.85 µm, solved
     at 0.8 µm) converges to the solution from the 1-D start, films and menisci to 1e-8, and gives
     the same ∂h_min/∂h_oil (the start is not differentiated; the derivative is the implicit one)."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 
@@ -273,8 +273,8 @@ def test_finite_line_converges_flooded_from_the_coarse_grid_at_the_papers_heavie
     film within 6 % of Pan and Hamrock's line-contact formula at the load per flat length (the
     middle of the roller is nearly an infinite line: −3.2 % at 1028 N, +2.0 % at 1607 N, +5.0 %
     at 2471 N on this grid)."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.film_formulas import pan_hamrock_line
+    from diffbearing.film.film_formulas import pan_hamrock_line
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     from .test_starved_finite_line import PAPERS_PROFILE
 
@@ -292,7 +292,7 @@ def test_clustered_axial_cells_span_the_half_roller_and_halve_on_refinement():
     on the starved-EHL paper's half roller (flat end 6.35 mm, roller end 7.35 mm): the edges run from 0 to the
     roller end and increase; the smallest cell touches the flat's end; and one map serves every
     count, so every other edge of 2n cells is an edge of n cells (refining halves every cell)."""
-    from diffbearing.finite_line_ehl import axial_cells
+    from diffbearing.film.finite_line_ehl import axial_cells
 
     flat_end, roller_end = 6.35e-3, 7.35e-3
     coarse, fine = (np.asarray(axial_cells(count, flat_end, roller_end, 8.0)) for count in (32, 64))
@@ -307,8 +307,8 @@ def test_clustered_axial_cells_span_the_half_roller_and_halve_on_refinement():
 def test_finite_line_axial_clustering_outside_its_range_raises(clustering):
     """A clustering β < 0 would put zero-width cells on the roller (0 means uniform cells):
     ValueError naming axial_clustering, before any solve."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     with pytest.raises(ValueError, match="axial_clustering"):
@@ -320,8 +320,8 @@ def test_finite_line_axial_clustering_outside_its_range_raises(clustering):
 def test_finite_line_side_inflow_outside_its_range_raises(side_inflow):
     """The fraction of the side inflow in the meniscus balance lies in [0, 1]: ValueError naming
     side_inflow, before any solve."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
     with pytest.raises(ValueError, match="side_inflow"):
@@ -336,8 +336,8 @@ def test_mass_conserving_meniscus_balance_keeps_mid_length_and_its_derivatives_a
     mid-length, where side flow is nil on a 14.7 mm roller with b = 0.12 mm, equals the column
     model's to 0.01 %; the derivatives of central and minimum film with respect to load and oil
     layer match central differences, forward and reverse."""
-    from diffbearing.finite_line_ehl import finite_line_film
-    from diffbearing.roller_profile import roller_profile
+    from diffbearing.bearings.roller.roller_profile import roller_profile
+    from diffbearing.film.finite_line_ehl import finite_line_film
 
     profile = roller_profile("circular", length=14.7e-3, flat_length=12.7e-3, crown_radius=10e-3)
 

@@ -7,12 +7,12 @@ import jax.numpy as jnp
 import pytest
 
 from diffbearing.app import cli
-from diffbearing.roller_profile import with_raceway_edge
-from diffbearing.starved_finite_line import starved_finite_line_film
+from diffbearing.bearings.roller.roller_profile import with_raceway_edge
+from diffbearing.film.starved_finite_line import starved_finite_line_film
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
-from .test_finite_line_krylov import PROFILE, _solve
 from .test_film_formulas import STARVED_EHL_LINE, starved_ehl_entrainment_speed
+from .test_finite_line_krylov import PROFILE, _solve
 
 GRID = (65, 32)  # the march grid itself (33 × 32 dense, 65 × 32 Newton–Krylov for the flooded start)
 

@@ -9,11 +9,10 @@ import jax.numpy as jnp
 import pytest
 
 from diffbearing.app import cli
-
-from diffbearing.film_formulas import starved_film
-from diffbearing.line_ehl import density_ratio
-from diffbearing.point_ehl import point_film
-from diffbearing.starved_point_ehl import starved_point_film
+from diffbearing.film.film_formulas import starved_film
+from diffbearing.film.line_ehl import density_ratio
+from diffbearing.film.point_ehl import point_film
+from diffbearing.film.starved_point_ehl import starved_point_film
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 

@@ -6,9 +6,20 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing import Material, Operating, ball_bearing, ball_results, build_model, hertz, load_scene, run_model
-from diffbearing import raceway_contact, solve_equilibrium, static_safety
-from diffbearing.app.adapters.ball import ball_model
+from diffbearing import (
+    Material,
+    Operating,
+    ball_bearing,
+    ball_results,
+    build_model,
+    load_scene,
+    run_model,
+    solve_equilibrium,
+)
+from diffbearing.app.adapters.bearings.ball import ball_model
+from diffbearing.bearings.ball import raceway_contact
+from diffbearing.contact import hertz
+from diffbearing.ratings import static_safety
 
 from .helpers import assert_jvp_matches_central_difference, example_scene
 

@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from diffbearing.app import cli, stored_models
 from diffbearing import build_model, load_scene, run_model
+from diffbearing.app import cli, stored_models
 
 from .helpers import BEARING_6411E, example_scene
 

@@ -26,7 +26,6 @@ import sys
 from pathlib import Path
 
 
-
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="diffbearing", description="Differentiable rolling-bearing model (JAX).")
     commands = parser.add_subparsers(dest="command", required=True)

@@ -34,7 +34,7 @@ import numpy as np
 from .compilation_cache import use_compilation_cache
 from .stored_models import compile_stored, release_memory
 
-# The bearing type of a scene with [[bearings]]: a shaft on several bearings (adapters/shaft.py).
+# The bearing type of a scene with [[bearings]]: a shaft on several bearings (adapters/systems/shaft.py).
 SHAFT_TYPE = "shaft"
 SHAFT = (SHAFT_TYPE,)
 

@@ -4,7 +4,7 @@ A scene is TOML. A quantity is a unit string ("28 mm", "1500 rpm") or a bare SI 
 a scene may hold are those the adapters declare; an unknown key, a wrong dimension or a missing
 required key raises ValueError naming the dotted key. `validate` returns a copy with every
 quantity in SI. A scene with `[[bearings]]` tables and no `bearing.type` is a shaft on several
-bearings: its type is "shaft" (adapters/shaft.py).
+bearings: its type is "shaft" (adapters/systems/shaft.py).
 """
 
 import difflib
@@ -12,6 +12,7 @@ import difflib
 from . import adapters  # noqa: F401  (registers the built-in adapters)
 from .registry import ADAPTERS, SHAFT_TYPE, Key, adapters_for, all_keys
 from .units import to_si
+
 
 def bearing_types() -> tuple[str, ...]:
     """The bearing types some registered adapter models."""
@@ -98,7 +99,7 @@ def validate(document: dict) -> dict[str, object]:
         else:
             flat[table] = convert(table, content)
     if "bearing.type" not in flat and "bearings" in flat:
-        flat["bearing.type"] = SHAFT_TYPE  # [[bearings]]: a shaft on several bearings (adapters/shaft.py)
+        flat["bearing.type"] = SHAFT_TYPE  # [[bearings]]: a shaft on several bearings (adapters/systems/shaft.py)
     if "bearing.type" not in flat:
         raise ValueError("missing required key 'bearing.type'")
     required_keys = [key for adapter in adapters_for(flat["bearing.type"])

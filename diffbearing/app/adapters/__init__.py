@@ -1,11 +1,12 @@
-"""The adapters: one module per effect family, the only place that ties physics to scenes.
+"""The adapters: one module per bearing type (`bearings/`), per mounting (`systems/`) and per effect
+family (`effects/`), plus the scene's materials and lubricant: the only place that ties physics to scenes.
 
 Each module builds one `registry.Adapter` and registers it. How to add an effect (say, friction
 torque), touching its physics module, its adapter and nothing else (plus tests and docs):
 
-1. Write the physics as pure JAX functions of parameter pytrees in `diffbearing/<idea>.py`
+1. Write the physics as pure JAX functions of parameter pytrees in `diffbearing/<family>/<idea>.py`
    (SI inside, docstrings with units and the equation's source). It imports nothing from `app`.
-2. Add `diffbearing/app/adapters/<family>.py`:
+2. Add `diffbearing/app/adapters/effects/<family>.py`:
    - `keys`: every scene key the effect reads, {"table.name": Key(...)}, with its
      `effects.<name>` switch (a boolean or a choice) and any `fidelity.<name>` keys (with
      `read_by` naming the blocks that read them);
@@ -18,11 +19,16 @@ torque), touching its physics module, its adapter and nothing else (plus tests a
      numerical solve (compiled apart from the other blocks), with `compiler_options` where
      XLA's defaults do not suit it;
    - `report` / `sweep_columns` for lines beyond the generic output tables.
-3. Import the module below (the order here is the order of report sections).
+3. Import the module below (the order here is the order of registration: of report sections,
+   of the reference's tables and of blocks that do not depend on each other).
 4. Regenerate the key and output reference: `python -m diffbearing.app.reference > docs/reference.md`.
 """
 
-from . import (  # noqa: F401  (each registers its adapter)
-    materials, lubricant, mounting, ball, bearing_set, shaft, life, roller, roller_bearing, film, cage, frequencies, safety,
-    friction,
-)
+# each import registers its adapter; the statements keep one order across the sub-packages
+from . import materials, lubricant  # noqa: F401
+from .systems import mounting  # noqa: F401
+from .bearings import ball  # noqa: F401
+from .systems import bearing_set, shaft  # noqa: F401
+from .effects import life  # noqa: F401
+from .bearings import roller, roller_bearing  # noqa: F401
+from .effects import film, cage, frequencies, safety, friction  # noqa: F401

@@ -1,10 +1,18 @@
 """The lubricant ([lubricant] table: preset, explicit viscosity, or the viscosities at 40 °C and
 100 °C with an operating temperature) and the surfaces' roughness."""
 
-from ...params import (BALL_BEARING_KINDS, ISO_VG_VISCOSITY_100, LUBRICANTS, MINERAL_OIL_DENSITY, Lubricant, _as_float,
-                       check_range, wooster_pressure_viscosity)
-from ...roller_geometry import ROLLER_KINDS
-from ...viscosity_temperature import REFERENCE_TEMPERATURES, walther_viscosity
+from ...bearings.roller.roller_geometry import ROLLER_KINDS
+from ...film.viscosity_temperature import REFERENCE_TEMPERATURES, walther_viscosity
+from ...params import (
+    BALL_BEARING_KINDS,
+    ISO_VG_VISCOSITY_100,
+    LUBRICANTS,
+    MINERAL_OIL_DENSITY,
+    Lubricant,
+    _as_float,
+    check_range,
+    wooster_pressure_viscosity,
+)
 from ..registry import SHAFT, Adapter, InputBuilder, Key, quantity, register
 
 

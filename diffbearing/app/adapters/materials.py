@@ -1,7 +1,7 @@
 """Materials of rings, balls and rollers: the [material] table (presets or explicit constants)."""
 
+from ...bearings.roller.roller_geometry import ROLLER_KINDS
 from ...params import BALL_BEARING_KINDS, BEARING_STEEL, MATERIALS, Material
-from ...roller_geometry import ROLLER_KINDS
 from ..registry import Adapter, Key, quantity, register
 
 PRESETS = tuple(MATERIALS)

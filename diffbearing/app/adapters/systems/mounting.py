@@ -1,0 +1,226 @@
+"""Bearings as mounted (effect `mounting`, [mounting] table): the operating clearance left by the
+fits, the temperatures and the rings' speed (`operating_clearance`), which the equilibrium then
+uses in place of the bearing's own clearance (negative: a preloaded bearing)."""
+
+import jax
+
+from ....bearings.roller.roller_geometry import ROLLER_KINDS
+from ....params import BALL_BEARING_KINDS, check_range, radial_clearance
+from ....systems import bearing_fits
+from ....systems.operating_clearance import (
+    RING_EXPANSION,
+    SEAT_MATERIALS,
+    Mounting,
+    OperatingClearance,
+    operating_clearance_change,
+)
+from ...registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ..materials import material
+
+TEMPERATURES = ("inner_ring", "outer_ring", "shaft", "housing")
+ROUGHNESSES = ("shaft", "inner_ring", "outer_ring", "housing")  # Rz of the shaft seat, ring bore, ring outside, housing bore
+EFFECT_ON = "effects.mounting"
+# The envelope of the fit and temperature model (docs/theory.md §Envelopes): linear expansion and
+# elastic rings hold for through-hardened bearing steel from −60 °C to +250 °C (its dimensional
+# stabilisation classes end at 250 °C, SN at 120 °C); an interference above 1 % of the fit diameter
+# lies beyond every ISO 286 fit and the rings' elastic range; expansion coefficients of engineering
+# metals and filled polymers lie in (0, 1e-4) 1/K.
+TEMPERATURE_RANGE = (213.15, 523.15)  # K
+INTERFERENCE_SHARE = 0.01  # of the fit diameter
+EXPANSION_LIMIT = 1e-4  # 1/K
+OPERATING_CLEARANCE_FLOOR = 0.01  # of d_m: −G_r above that is outside the preloaded bearing's model
+WHOLE_BEARING = ("operating.force",)  # a whole roller bearing's layout (as adapters/roller_bearing.py)
+
+
+def _mounting(v, built) -> dict:
+    """The change of clearance (`OperatingClearance`) of the scene's [mounting] table, or None
+    without `effects.mounting`: computed once here, added to the clearance by the bearing's own
+    builder and reported by the blocks below."""
+    if v.get(EFFECT_ON, False) is not True:
+        return {"mounting": None}
+    if v["bearing.type"] == "tapered_roller":
+        raise ValueError("effects.mounting: ball and cylindrical roller bearings (a tapered roller bearing's clearance "
+                         "is its axial setting)")
+    if "bearing.bore" not in v or "bearing.outer_diameter" not in v:
+        raise ValueError("effects.mounting needs bearing.bore and bearing.outer_diameter (the rings' thickness "
+                         "for the fits)")
+    _check_envelope(v)
+    shaft, shaft_expansion = SEAT_MATERIALS[v.get("mounting.shaft_material", "steel")]
+    housing, housing_expansion = SEAT_MATERIALS[v.get("mounting.housing_material", "steel")]
+    reference = v.get("mounting.reference_temperature", 293.15)
+    mounting = Mounting(
+        shaft_interference=_interference(v, "shaft", "bearing.bore", bearing_fits.shaft_interference),
+        housing_interference=_interference(v, "housing", "bearing.outer_diameter", bearing_fits.housing_interference),
+        shaft_bore=v.get("mounting.shaft_bore", 0.0),
+        housing_outer_diameter=v.get("mounting.housing_outer_diameter"),
+        roughness=tuple(v.get(f"mounting.{part}_roughness", 0.0) for part in ROUGHNESSES),
+        **{f"{part}_temperature": v.get(f"mounting.{part}_temperature", reference) for part in TEMPERATURES},
+        reference_temperature=reference,
+        ring_expansion=RING_EXPANSION, element_expansion=RING_EXPANSION,
+        shaft_expansion=v.get("mounting.shaft_expansion", shaft_expansion),
+        housing_expansion=v.get("mounting.housing_expansion", housing_expansion),
+        shaft=shaft, housing=housing,
+    )
+    # the rings run from the bore to d_m − D and from d_m + D to the outside (D the ball, or the
+    # cylindrical roller, diameter)
+    pitch = v["bearing.pitch_diameter"]
+    element = v["bearing.ball_diameter"] if v["bearing.type"] in BALL_BEARING_KINDS else v["bearing.roller_diameter"]
+    return {"mounting": operating_clearance_change(
+        mounting, v["bearing.bore"], pitch - element, pitch + element, v["bearing.outer_diameter"], element,
+        material(v), v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))}
+
+
+def _check_envelope(v) -> None:
+    """The [mounting] table inside the model's envelope (the constants above); ValueError names the key."""
+    for name in ("reference", *TEMPERATURES):
+        check_range(f"mounting.{name}_temperature", v.get(f"mounting.{name}_temperature"), low=TEMPERATURE_RANGE[0],
+                    high=TEMPERATURE_RANGE[1], low_open=False, high_open=False, unit=" K", why="−60 °C to 250 °C")
+    for name in ("shaft_expansion", "housing_expansion"):
+        check_range(f"mounting.{name}", v.get(f"mounting.{name}"), low=0.0, high=EXPANSION_LIMIT, unit=" 1/K")
+    for seat, diameter in (("shaft", "bearing.bore"), ("housing", "bearing.outer_diameter")):
+        limit = INTERFERENCE_SHARE * v[diameter]
+        check_range(f"mounting.{seat}_interference", v.get(f"mounting.{seat}_interference"), low=-limit, high=limit,
+                    low_open=False, high_open=False, unit=" m", why=f"±1 % of {diameter}")
+    check_range("mounting.shaft_bore", v.get("mounting.shaft_bore"), low=0.0, high=v["bearing.bore"], low_open=False,
+                unit=" m", why="a hollow shaft's bore inside bearing.bore")
+    check_range("mounting.housing_outer_diameter", v.get("mounting.housing_outer_diameter"),
+                low=v["bearing.outer_diameter"], unit=" m", why="a housing around bearing.outer_diameter")
+
+
+def operating_clearance(own, change: OperatingClearance, pitch, v):
+    """The operating diametral clearance [m]: the bearing's own `own` changed by its mounting. Where it
+    falls below −1 % of d_m (`pitch` [m]), ValueError names the scene key behind the largest closing
+    contribution (the fit's interference or class, the temperatures, the speed) rather than the
+    bearing's clearance, which the user did not set wrong."""
+    running = own + change.change
+    if not any(isinstance(x, jax.core.Tracer) for x in (running, pitch)):  # a sweep's corners were checked
+        floor = -OPERATING_CLEARANCE_FLOOR * float(pitch)
+        if float(running) < floor:
+            given = lambda seat: f"mounting.{seat}_tolerance" if f"mounting.{seat}_tolerance" in v \
+                else f"mounting.{seat}_interference"
+            culprits = {"shaft_fit": given("shaft"), "housing_fit": given("housing"),
+                        "thermal": "mounting.inner_ring_temperature",
+                        "centrifugal": "operating.inner_speed"}
+            largest = min(culprits, key=lambda name: float(getattr(change, name)))
+            raise ValueError(f"{culprits[largest]}: the mounting closes the clearance to {float(running) * 1e6:.4g} µm "
+                             f"({largest.replace('_', ' ')} {float(getattr(change, largest)) * 1e6:.4g} µm), below the "
+                             f"model's floor of −1 % of d_m ({floor * 1e6:.4g} µm)")
+    return running
+
+
+def _interference(v, seat: str, diameter: str, from_class):
+    """The scene's diametral interference of the `seat` ("shaft", "housing") [m]: given, or from
+    its ISO 286 class at `mounting.fit_value` (`bearing_fits`), or 0."""
+    given, tolerance = f"mounting.{seat}_interference", f"mounting.{seat}_tolerance"
+    if given in v and tolerance in v:
+        raise ValueError(f"[mounting]: give {given} or {tolerance}, not both")
+    if tolerance in v:
+        return from_class(v[tolerance], v[diameter], v.get("mounting.fit_value", "probable"))
+    return v.get(given, 0.0)
+
+
+def _outputs(change: OperatingClearance, running) -> dict:
+    return {
+        "mounting.clearance_change": change.change,
+        "mounting.operating_clearance": running,
+        "mounting.bearing_clearance": running - change.change,
+        "mounting.shaft_fit": change.shaft_fit,
+        "mounting.housing_fit": change.housing_fit,
+        "mounting.thermal": change.thermal,
+        "mounting.centrifugal": change.centrifugal,
+        "mounting.fit_pressure_inner": change.fit_pressure_inner,
+        "mounting.fit_pressure_outer": change.fit_pressure_outer,
+        "mounting.hoop_stress_inner": change.hoop_stress_inner,
+        "mounting.effective_shaft_interference": change.shaft_interference,
+        "mounting.effective_housing_interference": change.housing_interference,
+    }
+
+
+def _ball_outputs(inputs: dict, settings: dict, results: dict) -> dict:
+    return _outputs(inputs["mounting"], radial_clearance(inputs["bearing"]))
+
+
+def _roller_outputs(inputs: dict, settings: dict, results: dict) -> dict:
+    return _outputs(inputs["mounting"], inputs["raceways"].diametral_clearance)
+
+
+def _checks(values: dict) -> tuple[list[str], list[str]]:
+    running = float(values["mounting.operating_clearance"])
+    return [], ([f"the operating clearance is {running * 1e6:.3g} µm: the fits and temperatures leave no clearance "
+                 f"(the bearing runs preloaded)"] if running <= 0.0 else [])
+
+
+OUTPUTS = (
+    Output("mounting.clearance_change", "m", "um", "change of the diametral clearance by the mounting"),
+    Output("mounting.operating_clearance", "m", "um", "operating diametral clearance (the equilibrium's)"),
+    Output("mounting.bearing_clearance", "m", "um", "the bearing's diametral clearance before mounting"),
+    Output("mounting.shaft_fit", "m", "um", "clearance change by the shaft fit"),
+    Output("mounting.housing_fit", "m", "um", "clearance change by the housing fit"),
+    Output("mounting.thermal", "m", "um", "clearance change by the temperatures"),
+    Output("mounting.centrifugal", "m", "um", "clearance change by the rings' speed"),
+    Output("mounting.fit_pressure_inner", "Pa", "MPa", "fit pressure, inner ring on the shaft"),
+    Output("mounting.fit_pressure_outer", "Pa", "MPa", "fit pressure, outer ring in the housing"),
+    Output("mounting.hoop_stress_inner", "Pa", "MPa", "hoop stress at the inner ring's bore"),
+    Output("mounting.effective_shaft_interference", "m", "um", "effective shaft interference (smoothed, at temperature)"),
+    Output("mounting.effective_housing_interference", "m", "um", "effective housing interference (smoothed, at temperature)"),
+)
+
+
+ADAPTER = register(Adapter(
+    name="mounting",
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    keys={
+        EFFECT_ON: Key("boolean", doc="operating clearance from the [mounting] table"),
+        "bearing.bore": quantity("length"),
+        "bearing.outer_diameter": quantity("length"),
+        "mounting.shaft_interference": quantity("length", "diametral interference of the inner ring on the shaft "
+                                                          "(negative: a loose fit)"),
+        "mounting.housing_interference": quantity("length", "diametral interference of the outer ring in the housing "
+                                                            "(negative: a loose fit)"),
+        "mounting.shaft_tolerance": Key("text", doc="ISO 286 class of the shaft seat (g, h, j, js, k, m, n, p; grades 5–7), "
+                                                    "instead of shaft_interference; with the ring's ISO 492 Normal bore"),
+        "mounting.housing_tolerance": Key("text", doc="ISO 286 class of the housing seat (G, H, J, JS, K, M, N, P; grades 6, "
+                                                      "7), instead of housing_interference; with the ring's ISO 492 "
+                                                      "Normal outside"),
+        "mounting.fit_value": Key("choice", choices=bearing_fits.FIT_VALUES,
+                                  doc="which interference of the classes: probable (the mean, default), max or min"),
+        "mounting.shaft_bore": quantity("length", "bore of a hollow shaft (default 0: solid)"),
+        "mounting.housing_outer_diameter": quantity("length", "outside diameter of the housing (default: a large "
+                                                              "housing)"),
+        **{f"mounting.{part}_roughness": quantity("length", f"Rz of the {part.replace('_', ' ')} fit surface: the fit "
+                                                            "loses 0.4 Rz per surface on the radius (DIN 7190)")
+           for part in ROUGHNESSES},
+        **{f"mounting.{part}_temperature": quantity("temperature", f"{part.replace('_', ' ')} temperature (default: "
+                                                                  "the reference)") for part in TEMPERATURES},
+        "mounting.reference_temperature": quantity("temperature", "temperature of the fits and clearance as given "
+                                                                  "(default 20 °C)"),
+        "mounting.shaft_material": Key("choice", choices=tuple(SEAT_MATERIALS), doc="default steel"),
+        "mounting.housing_material": Key("choice", choices=tuple(SEAT_MATERIALS), doc="default steel"),
+        "mounting.shaft_expansion": quantity("thermal_expansion", "linear expansion coefficient (default: the "
+                                                                  "material's)"),
+        "mounting.housing_expansion": quantity("thermal_expansion", "linear expansion coefficient (default: the "
+                                                                    "material's)"),
+    },
+    inputs=(InputBuilder(("mounting",), BALL_BEARING_KINDS + ROLLER_KINDS, _mounting),),
+    blocks=(Block(
+        name="mounting",
+        bearing_types=BALL_BEARING_KINDS,
+        enabled_by=("mounting", True),
+        requires=(),
+        inputs=("bearing", "mounting"),
+        outputs=OUTPUTS,
+        compute=_ball_outputs,
+        checks=_checks,
+    ), Block(
+        name="roller_mounting",
+        bearing_types=ROLLER_KINDS,
+        enabled_by=("mounting", True),
+        requires=(),
+        inputs=("raceways", "mounting"),
+        outputs=OUTPUTS,
+        compute=_roller_outputs,
+        checks=_checks,
+        scene_keys=WHOLE_BEARING,
+    )),
+))
+

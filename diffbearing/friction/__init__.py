@@ -1,0 +1,1 @@
+"""Friction torque: the load-dependent (Palmgren) and the SKF four-source models."""

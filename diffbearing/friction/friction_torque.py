@@ -1,0 +1,74 @@
+"""Friction torque and power loss of a rolling bearing: Palmgren's load-dependent and viscous
+moments (Harris & Kotzalas vol. 1, ch. 8 "Friction"; Schaeffler HR 1, "Friction and increases in
+temperature", whose constants are used; the Timken Engineering Manual, Table 114).
+
+    M = M₀ + M₁
+    M₀ = 10⁻⁷ f₀ (ν n)^{2/3} d_m³      for ν n ≥ 2000,   M₀ = 160·10⁻⁷ f₀ d_m³ below   [N·mm]
+    M₁ = f₁ P₁ d_m                                                                  [N·mm]
+
+with ν the kinematic viscosity at the operating temperature [mm²/s] (a grease's base oil), n the
+speed [r/min], d_m the pitch diameter [mm]. f₀ depends on the bearing series and lubrication (HR 1:
+oil bath or recirculating oil, and grease or oil mist); f₁ = a (P₀/C₀)^b for ball bearings (P₀, C₀
+of ISO 76) and a constant for roller bearings; P₁ per HR 1: 3.3 F_a − 0.1 F_r (deep groove),
+F_a − 0.1 F_r (single-row angular contact), 2 Y F_a (tapered, Y of ISO 281 = 0.4 cot α), F_r
+(cylindrical), and never below F_r. Power loss N = M ω.
+
+The default constants (`PALMGREN_CONSTANTS`) are HR 1's for the 62 series of deep-groove ball
+bearings, the 72-B series of angular-contact ball bearings, the 2..-E series of cylindrical and the
+302 series of tapered roller bearings; Timken's Table 114 (the ISO 15312 reference conditions,
+P₀ = 0.05 C₀, oil) gives the same for the deep-groove and cylindrical series (tests) and a lower
+f₁ for angular-contact ones (0.00025 against 0.00037).
+"""
+
+import jax.numpy as jnp
+
+from ..numerics import positive_power
+from ..ratings.roller_life import axial_load_factor
+
+# bearing kind → (f₀ grease or oil mist, f₀ oil bath or recirculating oil, a, b) with f₁ = a (P₀/C₀)^b
+PALMGREN_CONSTANTS = {
+    "deep_groove_ball": (1.3, 2.0, 0.0009, 0.5),
+    "angular_contact_ball": (1.3, 2.0, 0.001, 0.33),
+    "cylindrical_roller": (1.3, 2.0, 0.0003, 0.0),
+    "tapered_roller": (2.0, 3.0, 0.0004, 0.0),
+}
+LOW_SPEED_LIMIT = 2000.0  # ν n [mm²/s · r/min] below which M₀ is constant
+
+
+def speed_factor(coefficient, exponent, static_load, static_rating):
+    """f₁ = a (P₀/C₀)^b [-] from the equivalent static load P₀ and the static rating C₀ [N]."""
+    return coefficient * positive_power(static_load / static_rating, exponent) if exponent else coefficient
+
+
+def viscous_torque(f0, kinematic_viscosity, speed, pitch_diameter):
+    """Palmgren's viscous moment M₀ [N·m] from f₀ [-], ν [m²/s], the relative ring speed [rad/s] and
+    d_m [m] (module docstring; the formula in its catalogue units, N·mm, mm²/s, r/min, mm)."""
+    product = kinematic_viscosity * 1e6 * jnp.abs(speed) * 30.0 / jnp.pi
+    dm3 = (pitch_diameter * 1e3) ** 3
+    fast = 1e-7 * f0 * positive_power(product, 2.0 / 3.0) * dm3
+    return jnp.where(product >= LOW_SPEED_LIMIT, fast, 160e-7 * f0 * dm3) * 1e-3
+
+
+def friction_load(kind: str, radial, axial, contact_angle=0.0):
+    """P₁ [N] of HR 1 for F_r, F_a [N] (module docstring); `contact_angle` [rad] of a tapered bearing."""
+    if kind == "deep_groove_ball":
+        load = 3.3 * axial - 0.1 * radial
+    elif kind == "angular_contact_ball":
+        load = axial - 0.1 * radial
+    elif kind == "tapered_roller":
+        load = 2.0 * axial_load_factor(contact_angle) * axial
+    elif kind == "cylindrical_roller":
+        load = radial
+    else:
+        raise ValueError(f"kind must be one of {tuple(PALMGREN_CONSTANTS)}, got {kind!r}")
+    return jnp.maximum(load, radial)
+
+
+def load_torque(f1, load, pitch_diameter):
+    """Palmgren's load-dependent moment M₁ = f₁ P₁ d_m [N·m] (P₁ [N], d_m [m])."""
+    return f1 * load * pitch_diameter
+
+
+def friction_power(torque, speed):
+    """Power loss [W] of the friction torque [N·m] at the relative ring speed [rad/s]."""
+    return torque * jnp.abs(speed)

@@ -1,0 +1,98 @@
+"""Bearing fatigue life: ISO 281:2007 basic rating, ISO/TS 16281:2008 reference rating life.
+
+* `basic_dynamic_load_rating` — ISO 281 eq. (2) with f_c from Table 2 (single-row radial contact
+  groove and angular contact groove ball bearings), b_m = 1.3:
+      C_r = b_m f_c (i cos α)^0.7 Z^{2/3} D_w^1.8          (D_w ≤ 25.4 mm)
+      C_r = 3.647 b_m f_c (i cos α)^0.7 Z^{2/3} D_w^1.4    (D_w > 25.4 mm),   D_w in mm, C_r in N,
+  α the nominal contact angle (0 for deep-groove bearings).
+* `equivalent_dynamic_load` and `basic_rating_life` — ISO 281 eqs. (3)–(4), Table 3 (`radial_load_factors`):
+  P = X F_r + Y F_a, L10 = (C_r/P)³ [10⁶ revolutions]; up to α = 15° e and Y follow the relative axial
+  load f₀ i F_a/C₀r = F_a/(Z D_w² cos α) [N, mm] (C₀r = f₀ i Z D_w² cos α by ISO 76), above it they are
+  constants.
+* `reference_rating_life` — ISO/TS 16281 eqs. (19)–(29): raceway ratings Q_ci, Q_ce from C_r, the
+  equivalent ball loads of the rotating inner ring (cubic mean) and the fixed outer ring (10/3 mean)
+  from the computed load distribution, and L10r = ((Q_ci/Q_ei)^{-10/3} + (Q_ce/Q_ee)^{-10/3})^{-9/10}.
+All pure JAX (piecewise-linear table interpolation), differentiable almost everywhere.
+"""
+
+import jax.numpy as jnp
+import numpy as np
+
+from ..params import BallBearing
+from . import radial_load_factors
+
+# ISO 281:2007 Table 2, first column: D_w cos α / D_pw → f_c.
+FC_RATIO = np.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.10, 0.12, 0.14, 0.16, 0.18,
+                      0.20, 0.22, 0.24, 0.26, 0.28, 0.30, 0.32, 0.34, 0.36, 0.38, 0.40])
+FC_VALUE = np.array([29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6, 59.9,
+                      59.9, 59.6, 59.0, 58.2, 57.1, 56.0, 54.6, 53.2, 51.7, 50.0, 48.4])
+BM_BALL = 1.3
+
+def nominal_contact_angle(bearing: BallBearing):
+    """α for the ratings [rad]: 0 for deep-groove (radial contact) bearings, α₀ otherwise."""
+    return 0.0 if bearing.kind == "deep_groove_ball" else bearing.free_contact_angle
+
+
+def basic_dynamic_load_rating(bearing: BallBearing):
+    """ISO 281 basic dynamic radial load rating C_r [N] of a single-row ball bearing from its geometry."""
+    angle = nominal_contact_angle(bearing)
+    ball_mm = bearing.ball_diameter * 1e3
+    ratio = bearing.ball_diameter * jnp.cos(angle) / bearing.pitch_diameter
+    fc = jnp.interp(ratio, FC_RATIO, FC_VALUE)
+    common = BM_BALL * fc * jnp.cos(angle) ** 0.7 * bearing.ball_count ** (2.0 / 3.0)
+    return jnp.where(ball_mm <= 25.4, common * ball_mm**1.8, common * 3.647 * ball_mm**1.4)
+
+
+def equivalent_dynamic_load(bearing: BallBearing, force):
+    """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row ball bearing for
+    force [Fx, Fy, Fz] [N]: Table 3 at its nominal contact angle (`nominal_contact_angle`; 0°…45°, NaN
+    beyond) and relative axial load F_a/(Z D_w² cos α) (`radial_load_factors`)."""
+    radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
+    axial = jnp.abs(force[2])
+    angle = nominal_contact_angle(bearing)
+    relative = radial_load_factors.relative_axial_load(axial, bearing.ball_count, bearing.ball_diameter, angle)
+    return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative)
+
+
+def basic_rating_life(rating, equivalent_load):
+    """ISO 281 basic rating life L10 = (C/P)³ [10⁶ revolutions] of a ball bearing."""
+    return (rating / equivalent_load) ** 3
+
+
+def raceway_ratings(bearing: BallBearing, rating):
+    """ISO/TS 16281 eqs. (19)–(20): ball loads Q_ci, Q_ce [N] for a raceway life of 10⁶ revolutions."""
+    angle = nominal_contact_angle(bearing)
+    gamma = bearing.ball_diameter * jnp.cos(angle) / bearing.pitch_diameter
+    ri = bearing.inner_groove_ratio * bearing.ball_diameter
+    ro = bearing.outer_groove_ratio * bearing.ball_diameter
+    dw = bearing.ball_diameter
+    conformity = (ri / ro * (2.0 * ro - dw) / (2.0 * ri - dw)) ** 0.41
+    ratio = 1.044 * ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * conformity
+    base = rating / (bearing.ball_count * jnp.cos(angle))
+    inner = base / 0.407 * (1.0 + ratio ** (10.0 / 3.0)) ** 0.3
+    outer = base / 0.389 * (1.0 + ratio ** (-10.0 / 3.0)) ** 0.3
+    return inner, outer
+
+
+def reference_rating_life(bearing: BallBearing, rating, inner_loads, outer_loads):
+    """ISO/TS 16281 basic reference rating life L10r [10⁶ revolutions], inner ring rotating.
+
+    Q_ei = (Σ Q_i³ / Z)^{1/3} (rotating ring), Q_ee = (Σ Q_o^{10/3} / Z)^{3/10} (fixed ring),
+    L10r = ((Q_ci/Q_ei)^{-10/3} + (Q_ce/Q_ee)^{-10/3})^{-9/10}. Inner and outer loads differ at speed.
+    """
+    z = bearing.ball_count
+    equivalent_inner = (jnp.sum(inner_loads**3) / z) ** (1.0 / 3.0)
+    equivalent_outer = (jnp.sum(outer_loads ** (10.0 / 3.0)) / z) ** 0.3
+    rating_inner, rating_outer = raceway_ratings(bearing, rating)
+    damage = (equivalent_inner / rating_inner) ** (10.0 / 3.0) + (equivalent_outer / rating_outer) ** (10.0 / 3.0)
+    return damage ** (-0.9)
+
+
+SYSTEM_WEIBULL_SLOPE = 10.0 / 9.0  # e of ball bearings (Lundberg–Palmgren; ISO/TS 16281's raceway combination)
+
+
+def system_life(lives, slope=SYSTEM_WEIBULL_SLOPE):
+    """L10 of bearings that all must survive [the lives' unit]: L = (Σ_k L_k^{−e})^{−1/e}
+    (Lundberg & Palmgren's product of survival probabilities with Weibull slope e; Harris &
+    Kotzalas vol. 2, ch. 11). An unloaded bearing's infinite life adds nothing."""
+    return jnp.sum(jnp.asarray(lives) ** (-slope)) ** (-1.0 / slope)
