@@ -28,7 +28,8 @@ from timing import compiled_with_time, machine, median_time, peak_rss_mib  # noq
 from diffbearing import build_model, load_scene, run_model  # noqa: E402
 from diffbearing.app.registry import compiled as compiled_model  # noqa: E402
 from diffbearing.bearings.ball.ball_equilibrium import BallModel  # noqa: E402
-from diffbearing.systems.shaft_equilibrium import BallSupport, Shaft, ShaftLoads, shaft_stiffness, solve_shaft  # noqa: E402
+from diffbearing.bearings.ball.ball_support import BallSupport  # noqa: E402
+from diffbearing.systems.shaft_equilibrium import Shaft, ShaftLoads, shaft_stiffness, solve_shaft  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 

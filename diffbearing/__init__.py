@@ -8,136 +8,170 @@ The physics blocks (pure functions of parameter pytrees) and the scene API (`loa
 
 from importlib.metadata import version as _version
 
-from .app.model import build_model as build_model
-from .app.model import run_model as run_model
-from .app.rotor_handoff import export_stiffness as export_stiffness
-from .app.rotor_handoff import stiffness_over_speed as stiffness_over_speed
-from .app.rotor_handoff import to_ross as to_ross
-from .app.scene import examples as examples
-from .app.scene import load_scene as load_scene
-from .app.sweep import run_sweep as run_sweep
-from .bearings.ball.ball_equilibrium import BallModel as BallModel
-from .bearings.ball.ball_equilibrium import BallResults as BallResults
-from .bearings.ball.ball_equilibrium import ball_results as ball_results
-from .bearings.ball.ball_equilibrium import ring_force as ring_force
-from .bearings.ball.ball_equilibrium import solve_equilibrium as solve_equilibrium
-from .bearings.ball.ball_equilibrium import solve_with_balls as solve_with_balls
-from .bearings.ball.ball_equilibrium import stiffness_at_balls as stiffness_at_balls
-from .bearings.ball.ball_equilibrium import stiffness_matrix as stiffness_matrix
-from .bearings.ball.groove_chamfer import chamfer_height as chamfer_height
-from .bearings.ball.groove_chamfer import limit_point_angle as limit_point_angle
-from .bearings.ball.raceway_contact import contact_constants as contact_constants
-from .bearings.ball.raceway_contact import inner_curvature as inner_curvature
-from .bearings.ball.raceway_contact import outer_curvature as outer_curvature
-from .bearings.roller.roller_contact import RollerContact as RollerContact
-from .bearings.roller.roller_contact import roller_contact as roller_contact
-from .bearings.roller.roller_equilibrium import RollerEquilibrium as RollerEquilibrium
-from .bearings.roller.roller_equilibrium import RollerModel as RollerModel
-from .bearings.roller.roller_equilibrium import RollerOperating as RollerOperating
-from .bearings.roller.roller_equilibrium import RollerRaceways as RollerRaceways
-from .bearings.roller.roller_equilibrium import RollerResults as RollerResults
-from .bearings.roller.roller_equilibrium import roller_contact_loadings as roller_contact_loadings
-from .bearings.roller.roller_equilibrium import roller_raceways as roller_raceways
-from .bearings.roller.roller_equilibrium import roller_results as roller_results
-from .bearings.roller.roller_equilibrium import roller_stiffness_matrix as roller_stiffness_matrix
-from .bearings.roller.roller_equilibrium import solve_roller_equilibrium as solve_roller_equilibrium
-from .bearings.roller.roller_geometry import RollerBearing as RollerBearing
-from .bearings.roller.roller_geometry import RollerLoading as RollerLoading
-from .bearings.roller.roller_geometry import initial_gap as initial_gap
-from .bearings.roller.roller_geometry import roller_bearing as roller_bearing
-from .bearings.roller.roller_profile import RollerProfile as RollerProfile
-from .bearings.roller.roller_profile import crown_drop as crown_drop
-from .bearings.roller.roller_profile import roller_profile as roller_profile
-from .cage.cage_dynamics import CageOrbit as CageOrbit
-from .cage.cage_dynamics import DynamicsSettings as DynamicsSettings
-from .cage.cage_dynamics import simulate_cage as simulate_cage
-from .cage.cage_forces import CageForces as CageForces
-from .cage.cage_forces import cage_forces as cage_forces
-from .cage.cage_forces import epicyclic_cage_speed as epicyclic_cage_speed
-from .cage.cage_stability import CageStability as CageStability
-from .cage.cage_stability import cage_stability as cage_stability
+from .bearings.ball.ball_equilibrium import (
+    BallModel as BallModel,
+    BallResults as BallResults,
+    ball_results as ball_results,
+    ring_force as ring_force,
+    solve_equilibrium as solve_equilibrium,
+    solve_with_balls as solve_with_balls,
+    stiffness_at_balls as stiffness_at_balls,
+    stiffness_matrix as stiffness_matrix,
+)
+from .bearings.ball.ball_support import BallSupport as BallSupport
+from .bearings.ball.groove_chamfer import chamfer_height as chamfer_height, limit_point_angle as limit_point_angle
+from .bearings.ball.raceway_contact import (
+    contact_constants as contact_constants,
+    inner_curvature as inner_curvature,
+    outer_curvature as outer_curvature,
+)
+from .bearings.interface import AbstractSupport as AbstractSupport, CondensedElements as CondensedElements
+from .bearings.roller.roller_contact import RollerContact as RollerContact, roller_contact as roller_contact
+from .bearings.roller.roller_equilibrium import (
+    RollerEquilibrium as RollerEquilibrium,
+    RollerModel as RollerModel,
+    RollerOperating as RollerOperating,
+    RollerRaceways as RollerRaceways,
+    RollerResults as RollerResults,
+    roller_contact_loadings as roller_contact_loadings,
+    roller_raceways as roller_raceways,
+    roller_results as roller_results,
+    roller_stiffness_matrix as roller_stiffness_matrix,
+    solve_roller_equilibrium as solve_roller_equilibrium,
+)
+from .bearings.roller.roller_geometry import (
+    RollerBearing as RollerBearing,
+    RollerLoading as RollerLoading,
+    initial_gap as initial_gap,
+    roller_bearing as roller_bearing,
+)
+from .bearings.roller.roller_profile import (
+    RollerProfile as RollerProfile,
+    crown_drop as crown_drop,
+    roller_profile as roller_profile,
+)
+from .bearings.roller.roller_support import RollerSupport as RollerSupport
+from .cage.cage_dynamics import (
+    CageOrbit as CageOrbit,
+    DynamicsSettings as DynamicsSettings,
+    simulate_cage as simulate_cage,
+)
+from .cage.cage_forces import (
+    CageForces as CageForces,
+    cage_forces as cage_forces,
+    epicyclic_cage_speed as epicyclic_cage_speed,
+)
+from .cage.cage_stability import CageStability as CageStability, cage_stability as cage_stability
 from .contact.elliptic import complete_elliptic_integrals as complete_elliptic_integrals
-from .contact.hertz import LineContact as LineContact
-from .contact.hertz import PointContact as PointContact
-from .contact.hertz import curvature_difference_of_ellipticity as curvature_difference_of_ellipticity
-from .contact.hertz import effective_modulus as effective_modulus
-from .contact.hertz import ellipticity as ellipticity
-from .contact.hertz import hertz_load as hertz_load
-from .contact.hertz import line_contact as line_contact
-from .contact.hertz import line_contact_approach_palmgren as line_contact_approach_palmgren
-from .contact.hertz import load_deflection_constant as load_deflection_constant
-from .contact.hertz import point_contact as point_contact
-from .film.film_formulas import dowson_higginson_line_minimum as dowson_higginson_line_minimum
-from .film.film_formulas import film_parameter as film_parameter
-from .film.film_formulas import hamrock_dowson_point as hamrock_dowson_point
-from .film.film_formulas import moes_line_central as moes_line_central
-from .film.film_formulas import pan_hamrock_line as pan_hamrock_line
-from .film.film_formulas import starved_film as starved_film
-from .film.finite_line_ehl import FiniteLineFilm as FiniteLineFilm
-from .film.finite_line_ehl import finite_line_film as finite_line_film
-from .film.line_ehl import LineFilm as LineFilm
-from .film.line_ehl import density_ratio as density_ratio
-from .film.line_ehl import line_film as line_film
-from .film.line_ehl import moes_load_parameter as moes_load_parameter
-from .film.line_ehl import viscosity_ratio as viscosity_ratio
-from .newton import implicit_root as implicit_root
-from .newton import minimise_convex as minimise_convex
-from .newton import newton as newton
-from .overrolling import OverrollingFrequencies as OverrollingFrequencies
-from .overrolling import ball_bearing_frequencies as ball_bearing_frequencies
-from .overrolling import nominal_frequencies as nominal_frequencies
-from .overrolling import roller_bearing_frequencies as roller_bearing_frequencies
-from .params import BEARING_STEEL as BEARING_STEEL
-from .params import SILICON_NITRIDE as SILICON_NITRIDE
-from .params import BallBearing as BallBearing
-from .params import Cage as Cage
-from .params import Lubricant as Lubricant
-from .params import Material as Material
-from .params import Operating as Operating
-from .params import ball_bearing as ball_bearing
-from .params import ball_cage as ball_cage
-from .params import iso_vg_oil as iso_vg_oil
-from .params import radial_clearance as radial_clearance
-from .params import with_radial_clearance as with_radial_clearance
-from .ratings.life import basic_dynamic_load_rating as basic_dynamic_load_rating
-from .ratings.life import basic_rating_life as basic_rating_life
-from .ratings.life import equivalent_dynamic_load as equivalent_dynamic_load
-from .ratings.life import reference_rating_life as reference_rating_life
-from .ratings.life import system_life as system_life
-from .ratings.load_distribution import load_zone_parameter as load_zone_parameter
-from .ratings.load_distribution import sjovall_integrals as sjovall_integrals
-from .ratings.load_distribution import stribeck_max_ball_load as stribeck_max_ball_load
+from .contact.hertz import (
+    LineContact as LineContact,
+    PointContact as PointContact,
+    curvature_difference_of_ellipticity as curvature_difference_of_ellipticity,
+    effective_modulus as effective_modulus,
+    ellipticity as ellipticity,
+    hertz_load as hertz_load,
+    line_contact as line_contact,
+    line_contact_approach_palmgren as line_contact_approach_palmgren,
+    load_deflection_constant as load_deflection_constant,
+    point_contact as point_contact,
+)
+from .film.film_formulas import (
+    dowson_higginson_line_minimum as dowson_higginson_line_minimum,
+    film_parameter as film_parameter,
+    hamrock_dowson_point as hamrock_dowson_point,
+    moes_line_central as moes_line_central,
+    pan_hamrock_line as pan_hamrock_line,
+    starved_film as starved_film,
+)
+from .film.finite_line_ehl import FiniteLineFilm as FiniteLineFilm, finite_line_film as finite_line_film
+from .film.line_ehl import (
+    LineFilm as LineFilm,
+    density_ratio as density_ratio,
+    line_film as line_film,
+    moes_load_parameter as moes_load_parameter,
+    viscosity_ratio as viscosity_ratio,
+)
+from .newton import implicit_root as implicit_root, minimise_convex as minimise_convex, newton as newton
+from .overrolling import (
+    OverrollingFrequencies as OverrollingFrequencies,
+    ball_bearing_frequencies as ball_bearing_frequencies,
+    nominal_frequencies as nominal_frequencies,
+    roller_bearing_frequencies as roller_bearing_frequencies,
+)
+from .params import (
+    BEARING_STEEL as BEARING_STEEL,
+    BallBearing as BallBearing,
+    Cage as Cage,
+    Lubricant as Lubricant,
+    Material as Material,
+    Operating as Operating,
+    SILICON_NITRIDE as SILICON_NITRIDE,
+    ball_bearing as ball_bearing,
+    ball_cage as ball_cage,
+    iso_vg_oil as iso_vg_oil,
+    radial_clearance as radial_clearance,
+    with_radial_clearance as with_radial_clearance,
+)
+from .ratings.life import (
+    basic_dynamic_load_rating as basic_dynamic_load_rating,
+    basic_rating_life as basic_rating_life,
+    equivalent_dynamic_load as equivalent_dynamic_load,
+    reference_rating_life as reference_rating_life,
+    system_life as system_life,
+)
+from .ratings.load_distribution import (
+    load_zone_parameter as load_zone_parameter,
+    sjovall_integrals as sjovall_integrals,
+    stribeck_max_ball_load as stribeck_max_ball_load,
+)
 from .ratings.minimum_load import minimum_load as minimum_load
-from .ratings.radial_load_factors import load_factors as load_factors
-from .ratings.radial_load_factors import relative_axial_load as relative_axial_load
-from .ratings.roller_life import roller_dynamic_load_rating as roller_dynamic_load_rating
-from .ratings.roller_life import roller_reference_rating_life as roller_reference_rating_life
-from .ratings.static_safety import ball_equivalent_static_load as ball_equivalent_static_load
-from .ratings.static_safety import ball_static_load_rating as ball_static_load_rating
-from .ratings.static_safety import pressure_safety as pressure_safety
-from .ratings.static_safety import roller_equivalent_static_load as roller_equivalent_static_load
-from .ratings.static_safety import roller_static_load_rating as roller_static_load_rating
-from .systems.bearing_set import bearing_set as bearing_set
-from .systems.bearing_set import clamped_offset as clamped_offset
-from .systems.bearing_set import preload_force as preload_force
-from .systems.bearing_set import preload_offset as preload_offset
-from .systems.flexible_shaft import FlexibleShaft as FlexibleShaft
-from .systems.flexible_shaft import FlexibleShaftEquilibrium as FlexibleShaftEquilibrium
-from .systems.flexible_shaft import flexible_shaft as flexible_shaft
-from .systems.flexible_shaft import flexible_shaft_stiffness as flexible_shaft_stiffness
-from .systems.flexible_shaft import solve_flexible_shaft as solve_flexible_shaft
-from .systems.operating_clearance import Mounting as Mounting
-from .systems.operating_clearance import OperatingClearance as OperatingClearance
-from .systems.operating_clearance import fit_pressure as fit_pressure
-from .systems.operating_clearance import operating_clearance_change as operating_clearance_change
+from .ratings.radial_load_factors import load_factors as load_factors, relative_axial_load as relative_axial_load
+from .ratings.roller_life import (
+    roller_dynamic_load_rating as roller_dynamic_load_rating,
+    roller_reference_rating_life as roller_reference_rating_life,
+)
+from .ratings.static_safety import (
+    ball_equivalent_static_load as ball_equivalent_static_load,
+    ball_static_load_rating as ball_static_load_rating,
+    pressure_safety as pressure_safety,
+    roller_equivalent_static_load as roller_equivalent_static_load,
+    roller_static_load_rating as roller_static_load_rating,
+)
+from .systems.bearing_set import (
+    bearing_set as bearing_set,
+    clamped_offset as clamped_offset,
+    preload_force as preload_force,
+    preload_offset as preload_offset,
+)
+from .systems.flexible_shaft import (
+    FlexibleShaft as FlexibleShaft,
+    FlexibleShaftEquilibrium as FlexibleShaftEquilibrium,
+    flexible_shaft as flexible_shaft,
+    flexible_shaft_stiffness as flexible_shaft_stiffness,
+    solve_flexible_shaft as solve_flexible_shaft,
+)
+from .systems.operating_clearance import (
+    Mounting as Mounting,
+    OperatingClearance as OperatingClearance,
+    fit_pressure as fit_pressure,
+    operating_clearance_change as operating_clearance_change,
+)
 from .systems.shaft_beam import ShaftSections as ShaftSections
-from .systems.shaft_equilibrium import BallSupport as BallSupport
-from .systems.shaft_equilibrium import RollerSupport as RollerSupport
-from .systems.shaft_equilibrium import Shaft as Shaft
-from .systems.shaft_equilibrium import ShaftEquilibrium as ShaftEquilibrium
-from .systems.shaft_equilibrium import ShaftLoads as ShaftLoads
-from .systems.shaft_equilibrium import shaft_force as shaft_force
-from .systems.shaft_equilibrium import shaft_stiffness as shaft_stiffness
-from .systems.shaft_equilibrium import solve_shaft as solve_shaft
+from .systems.shaft_equilibrium import (
+    Shaft as Shaft,
+    ShaftEquilibrium as ShaftEquilibrium,
+    ShaftLoads as ShaftLoads,
+    shaft_force as shaft_force,
+    shaft_stiffness as shaft_stiffness,
+    solve_shaft as solve_shaft,
+)
+from .app.model import build_model as build_model, run_model as run_model
+from .app.rotor_handoff import (
+    export_stiffness as export_stiffness,
+    stiffness_over_speed as stiffness_over_speed,
+    to_ross as to_ross,
+)
+from .app.scene import examples as examples, load_scene as load_scene
+from .app.sweep import run_sweep as run_sweep
 
 __version__ = _version("diffbearing")

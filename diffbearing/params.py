@@ -184,6 +184,17 @@ class BallBearing(eqx.Module):
             check_range("bearing.outer_diameter", self.outer_diameter,
                         low=float(self.pitch_diameter + self.ball_diameter), unit=" m", why="pitch_diameter + ball_diameter")
 
+    @property
+    def radial_contact(self) -> bool:
+        """Whether the standards rate it as a radial-contact bearing (a deep-groove one: ISO 281 and
+        ISO 76 at a nominal contact angle of 0, ISO 76's P₀ rule for radial bearings)."""
+        return self.kind == "deep_groove_ball"
+
+    @property
+    def nominal_contact_angle(self):
+        """α for the ratings [rad]: 0 for a radial-contact (deep-groove) bearing, α₀ otherwise."""
+        return 0.0 if self.radial_contact else self.free_contact_angle
+
 
 def groove_curvature_centre_distance(bearing: BallBearing):
     """Distance B·D_w = (f_i + f_o − 1) D_w [m] between the two groove curvature centres."""

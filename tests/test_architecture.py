@@ -177,3 +177,55 @@ def test_ruff_is_clean():
     checked = subprocess.run([sys.executable, "-m", "ruff", "check", "--output-format", "concise", str(PACKAGE.parent)],
                              capture_output=True, text=True)
     assert checked.returncode == 0, checked.stdout + checked.stderr
+
+
+BEARING_KINDS = {"deep_groove_ball", "angular_contact_ball", "cylindrical_roller", "tapered_roller"}
+KIND_LISTS = {"BALL_BEARING_KINDS", "ROLLER_KINDS"}
+# A bearing type's own modules: its physics package and its adapters (and the parameter module
+# that defines the ball bearing's kinds); a branch on a type anywhere else is what the seam forbids.
+OWN_MODULES = ("diffbearing.bearings.", "diffbearing.app.adapters.bearings.", "diffbearing.params")
+# Branches still waiting for the typed contact result (issue 48): the friction models and the
+# shaft, set, mounting and friction adapters read the bearing's kind; each entry is removed as its
+# module moves behind the interface.
+PENDING = {
+    "diffbearing.app.adapters.systems.bearing_set", "diffbearing.app.adapters.systems.mounting",
+    "diffbearing.app.adapters.systems.shaft", "diffbearing.app.adapters.effects.friction",
+    "diffbearing.friction.friction_torque", "diffbearing.friction.skf_friction",
+}
+
+
+def _type_branches(path: Path) -> list[str]:
+    """`isinstance` on a bearing type's class (Ball…, Roller…) and comparisons with a bearing kind
+    (`== "deep_groove_ball"`, `in BALL_BEARING_KINDS`) in `path`, as 'line: source'."""
+    source = path.read_text()
+    found = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Call) and getattr(node.func, "id", None) == "isinstance" and len(node.args) == 2:
+            classes = node.args[1].elts if isinstance(node.args[1], ast.Tuple) else [node.args[1]]
+            if any(getattr(c, "id", getattr(c, "attr", "")).startswith(("Ball", "Roller")) for c in classes):
+                found.append(node)
+        elif isinstance(node, ast.Compare):
+            sides = [node.left, *node.comparators]
+            if any(isinstance(s, ast.Constant) and s.value in BEARING_KINDS for s in sides) or any(
+                    getattr(s, "id", getattr(s, "attr", None)) in KIND_LISTS for s in node.comparators):
+                found.append(node)
+    return [f"{node.lineno}: {ast.get_source_segment(source, node)}" for node in found]
+
+
+def test_no_module_branches_on_a_bearing_type_outside_its_own():
+    """Shafts, sets and effects see a bearing through its interface (bearings/interface.py): no
+    `isinstance` on a type's class and no comparison with a type's kind outside the type's own
+    modules — except the modules still listed in PENDING, which must each still hold one (so that
+    the list shrinks as they move)."""
+    branching = {name: _type_branches(path) for path in PACKAGE.rglob("*.py")
+                 if not (name := _module_name(path)).startswith(OWN_MODULES)}
+    branching = {name: found for name, found in branching.items() if found}
+    assert {name: found for name, found in branching.items() if name not in PENDING} == {}
+    assert set(branching) == PENDING  # a module moved behind the interface leaves the list
+
+
+def test_the_branch_finder_sees_both_kinds_of_branch(tmp_path):
+    probe = tmp_path / "probe.py"
+    probe.write_text("def f(s, k):\n    if isinstance(s, BallSupport):\n        return 1\n"
+                     "    return k.kind == 'tapered_roller' or k in ROLLER_KINDS\n")
+    assert [line.split(":")[0] for line in _type_branches(probe)] == ["2", "4", "4"]

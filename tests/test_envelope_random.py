@@ -383,9 +383,9 @@ def solve_set_case(case, count: int, arrangement: str):
     solution = solve_shaft(shaft)
     operating = Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2))
     balls = [ball_equilibrium.ball_results(local, bearing, operating, SPEED_MODEL, centres)
-             for local, centres in zip(solution.bearing_displacements, solution.ball_centres)]
+             for local, centres in zip(solution.bearing_displacements, solution.elements)]
     outputs = (solution.displacement, solution.residual,
-               shaft_stiffness(solution.displacement, shaft, ball_centres=solution.ball_centres),
+               shaft_stiffness(solution.displacement, shaft, elements=solution.elements),
                *solution.bearing_forces, *jax.tree.leaves(balls))
     validity = jnp.stack([jnp.stack([
         ball_validity.largest_approach_ratio(b.inner_approach, b.outer_approach, diameter),

@@ -13,7 +13,8 @@ from diffbearing.params import Material
 from diffbearing.systems.flexible_shaft import flexible_shaft, flexible_shaft_stiffness, solve_flexible_shaft
 from diffbearing.systems.operating_clearance import SEAT_MATERIALS
 from diffbearing.systems.shaft_beam import ShaftSections, section_properties, shear_coefficient
-from diffbearing.systems.shaft_equilibrium import BallSupport, Shaft, ShaftLoads, shaft_stiffness, solve_shaft, transfer
+from diffbearing.bearings.ball.ball_support import BallSupport
+from diffbearing.systems.shaft_equilibrium import Shaft, ShaftLoads, shaft_stiffness, solve_shaft, transfer
 
 from .helpers import assert_jvp_matches_central_difference
 from .test_shaft_equilibrium import DEEP_GROOVE

@@ -14,9 +14,9 @@ from diffbearing.bearings.roller.roller_geometry import roller_bearing
 from diffbearing.bearings.roller.roller_profile import roller_profile
 from diffbearing.params import Operating, ball_bearing
 from diffbearing.systems.bearing_set import bearing_set, preload_force, preload_offset
+from diffbearing.bearings.ball.ball_support import BallSupport
+from diffbearing.bearings.roller.roller_support import RollerSupport
 from diffbearing.systems.shaft_equilibrium import (
-    BallSupport,
-    RollerSupport,
     Shaft,
     ShaftLoads,
     shaft_force,
@@ -155,10 +155,10 @@ def test_system_stiffness_is_the_jacobian_of_the_bearings_loads(solve, offset):
     shaft = pair(offset, axial=800.0, radial=3000.0, speed=8000 * np.pi / 30, model=SPEED_MODEL)
     solution = solve(shaft)
     assert bool(solution.converged)
-    stiffness, jacobian = jax.jit(lambda u, centres, tables: (
-        shaft_stiffness(u, shaft, ball_centres=centres, tables=tables),
-        jax.jacfwd(shaft_force)(u, shaft, tables, centres)))(solution.displacement, solution.ball_centres,
-                                                             solution.constant_tables)
+    stiffness, jacobian = jax.jit(lambda u, elements, constants: (
+        shaft_stiffness(u, shaft, elements=elements, constants=constants),
+        jax.jacfwd(shaft_force)(u, shaft, constants, elements)))(solution.displacement, solution.elements,
+                                                                 solution.constants)
     np.testing.assert_allclose(stiffness, jacobian, rtol=0, atol=1e-10 * float(jnp.max(jnp.abs(jacobian))))
 
 
@@ -267,14 +267,14 @@ def test_a_matched_pair_shares_one_table_of_hertz_constants():
     """The two bearings of a set hold the same bearing and model: one table, built once, equal to
     the bearing's own; a different bearing (or model) gets its own table."""
     from diffbearing.bearings.ball.ball_equilibrium import constant_table
-    from diffbearing.systems.shaft_equilibrium import constant_tables
+    from diffbearing.systems.shaft_equilibrium import support_constants
 
-    first, second = constant_tables(pair(0.0))
+    first, second = support_constants(pair(0.0))
     assert first is second
     np.testing.assert_allclose(first.inner, constant_table(ANGULAR, BallModel()).inner, rtol=1e-15)
     mixed = Shaft((BallSupport(ANGULAR, -0.03), BallSupport(DEEP_GROOVE, 0.03),
                    BallSupport(ANGULAR, 0.06, model=BallModel(hertz_method="brewe_hamrock"))),
                   loads(0.0, (1000.0, 0.0, 0.0)), 0.0)
-    tables = constant_tables(mixed)
+    tables = support_constants(mixed)
     assert len({id(table) for table in tables}) == 3
     np.testing.assert_allclose(tables[1].outer, constant_table(DEEP_GROOVE, BallModel()).outer, rtol=1e-15)

@@ -28,14 +28,9 @@ FC_VALUE = np.array([29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5,
                       59.9, 59.6, 59.0, 58.2, 57.1, 56.0, 54.6, 53.2, 51.7, 50.0, 48.4])
 BM_BALL = 1.3
 
-def nominal_contact_angle(bearing: BallBearing):
-    """α for the ratings [rad]: 0 for deep-groove (radial contact) bearings, α₀ otherwise."""
-    return 0.0 if bearing.kind == "deep_groove_ball" else bearing.free_contact_angle
-
-
 def basic_dynamic_load_rating(bearing: BallBearing):
     """ISO 281 basic dynamic radial load rating C_r [N] of a single-row ball bearing from its geometry."""
-    angle = nominal_contact_angle(bearing)
+    angle = bearing.nominal_contact_angle
     ball_mm = bearing.ball_diameter * 1e3
     ratio = bearing.ball_diameter * jnp.cos(angle) / bearing.pitch_diameter
     fc = jnp.interp(ratio, FC_RATIO, FC_VALUE)
@@ -45,11 +40,11 @@ def basic_dynamic_load_rating(bearing: BallBearing):
 
 def equivalent_dynamic_load(bearing: BallBearing, force):
     """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row ball bearing for
-    force [Fx, Fy, Fz] [N]: Table 3 at its nominal contact angle (`nominal_contact_angle`; 0°…45°, NaN
+    force [Fx, Fy, Fz] [N]: Table 3 at its nominal contact angle (`BallBearing.nominal_contact_angle`; 0°…45°, NaN
     beyond) and relative axial load F_a/(Z D_w² cos α) (`radial_load_factors`)."""
     radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
     axial = jnp.abs(force[2])
-    angle = nominal_contact_angle(bearing)
+    angle = bearing.nominal_contact_angle
     relative = radial_load_factors.relative_axial_load(axial, bearing.ball_count, bearing.ball_diameter, angle)
     return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative)
 
@@ -61,7 +56,7 @@ def basic_rating_life(rating, equivalent_load):
 
 def raceway_ratings(bearing: BallBearing, rating):
     """ISO/TS 16281 eqs. (19)–(20): ball loads Q_ci, Q_ce [N] for a raceway life of 10⁶ revolutions."""
-    angle = nominal_contact_angle(bearing)
+    angle = bearing.nominal_contact_angle
     gamma = bearing.ball_diameter * jnp.cos(angle) / bearing.pitch_diameter
     ri = bearing.inner_groove_ratio * bearing.ball_diameter
     ro = bearing.outer_groove_ratio * bearing.ball_diameter

@@ -26,7 +26,6 @@ import jax.numpy as jnp
 import numpy as np
 
 from ..params import BallBearing
-from .life import nominal_contact_angle
 
 # ISO 76:2006 Table 1, radial and angular-contact groove ball bearings: γ = D_w cos α / D_pw → f₀.
 F0_RATIO = np.round(np.arange(41) * 0.01, 2)
@@ -62,12 +61,12 @@ def roller_static_load_rating(roller_count, roller_diameter, effective_length, p
 def ball_bearing_static_load_rating(bearing: BallBearing):
     """C₀r [N] of a single-row ball bearing at its nominal contact angle (0 for deep groove)."""
     return ball_static_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
-                                   nominal_contact_angle(bearing))
+                                   bearing.nominal_contact_angle)
 
 
 def ball_bearing_equivalent_static_load(bearing: BallBearing, force):
     """P₀r [N] of a single-row ball bearing under [Fx, Fy, Fz] [N] (`ball_equivalent_static_load`)."""
-    return ball_equivalent_static_load(force, nominal_contact_angle(bearing), bearing.kind == "deep_groove_ball")
+    return ball_equivalent_static_load(force, bearing.nominal_contact_angle, bearing.radial_contact)
 
 
 def roller_bearing_static_load_rating(bearing, raceways):

@@ -25,8 +25,8 @@ import dataclasses
 import jax.numpy as jnp
 
 from ..bearings.ball.ball_equilibrium import BallModel, ring_force, solve_equilibrium
+from ..bearings.ball.ball_support import BallSupport
 from ..params import BallBearing, Operating, _is_concrete, check_range, groove_curvature_centre_distance
-from .shaft_equilibrium import BallSupport
 
 ARRANGEMENTS = {"back_to_back": (1, -1), "face_to_face": (-1, 1), "tandem": (1, 1)}
 

@@ -19,7 +19,8 @@ the bearings' nodes,
 (K_rr is regular: every node reaches a bearing's node along the beam). That leaves five unknowns
 per bearing node, solved as the rigid shaft's five are: the start is the minimum of the convex
 energy ½ U_bᵀ K_c U_b − F_c·U_b + Σ_k E_k(Δ_k), then damped Newton on the exact residual (with
-speed effects on the nodes' and the balls' unknowns together, `shaft_equilibrium.solve_jointly`),
+the nodes' and the rolling elements' unknowns together where a bearing carries them,
+`shaft_equilibrium.solve_jointly`),
 and the implicit derivative of the root.
 
 The stiffness at node p (the load there against its displacement, every other node free and in
@@ -45,13 +46,13 @@ from .shaft_equilibrium import (
     Shaft,
     ShaftEquilibrium,
     Structure,
-    balls_solved_jointly,
-    constant_tables,
     damped_newton,
+    elements_solved_jointly,
     energy_constants,
     local_displacement,
     shaft_scales,
     solve_jointly,
+    support_constants,
     support_energy,
     support_force,
     support_stiffness,
@@ -165,12 +166,12 @@ def _static_energy(y, args):
 
 def _residual(y, args):
     """(K_c U_b − F_c + Σ_k S_kᵀ P_k F_k) · w / load scale at U_b = s·y."""
-    flexible, unknown, weight, load_scale, tables, stiffness, force = args
+    flexible, unknown, weight, load_scale, constants, stiffness, force = args
     u_b = unknown * y
     out = stiffness @ u_b - force
     _, slots, _, _ = _structure(flexible)
-    for slot, local, support, table in zip(slots, _bearing_locals(u_b, flexible), flexible.shaft.supports, tables):
-        taken = turned(support) * support_force(local, support, flexible.shaft.speed, table)
+    for slot, local, support, own in zip(slots, _bearing_locals(u_b, flexible), flexible.shaft.supports, constants):
+        taken = turned(support) * support_force(local, support, flexible.shaft.speed, own)
         out = out.at[NODE_DOFS * slot:NODE_DOFS * (slot + 1)].add(taken)
     return out * weight / load_scale
 
@@ -191,36 +192,36 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
     require_float64()
     shaft = flexible.shaft
     bearing_nodes, _, _, reference_node = _structure(flexible)
-    tables = constant_tables(shaft)
-    constants = energy_constants(shaft, tables)
-    unknown, weight, load_scale = shaft_scales(shaft, tables, constants)
+    constants = support_constants(shaft)
+    held = energy_constants(shaft, constants)
+    unknown, weight, load_scale = shaft_scales(shaft, constants, held)
     unknown, weight = jnp.tile(unknown, len(bearing_nodes)), jnp.tile(weight, len(bearing_nodes))
     stiffness, force, recover = condensed(flexible)
     start, static_steps = minimise_convex(
         _static_energy, jnp.zeros(unknown.shape[0]),
-        without_gradient((flexible, unknown, weight, load_scale, constants, stiffness, force)),
+        without_gradient((flexible, unknown, weight, load_scale, held, stiffness, force)),
         gradient_tolerance=STATIC_GRADIENT_TOLERANCE)  # a start: no derivative
-    args = (flexible, unknown, weight, load_scale, tables, stiffness, force)
-    if not any(balls_solved_jointly(shaft.supports)):
+    args = (flexible, unknown, weight, load_scale, constants, stiffness, force)
+    if not any(elements_solved_jointly(shaft.supports)):
         y, steps = implicit_root(_residual, start, args, damped_newton, least_squares_tangent_solve, has_aux=True)
-        centres = (None,) * len(shaft.supports)
+        elements = (None,) * len(shaft.supports)
         residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
-    else:  # the bearing nodes and the balls together (`shaft_equilibrium.solve_jointly`)
+    else:  # the bearing nodes and the rolling elements together (`shaft_equilibrium.solve_jointly`)
         _, slots, _, _ = _structure(flexible)
         picks = jnp.eye(unknown.shape[0])
         moves = tuple(turned(support)[:, None] * picks[NODE_DOFS * slot:NODE_DOFS * (slot + 1)]
                       for slot, support in zip(slots, shaft.supports))
-        y, centres, steps, residual = solve_jointly(start, shaft.supports, shaft.speed, tables,
-                                                    Structure(stiffness, force, moves), unknown, weight, load_scale)
+        y, elements, steps, residual = solve_jointly(start, shaft.supports, shaft.speed, constants,
+                                                     Structure(stiffness, force, moves), unknown, weight, load_scale)
     u_b = unknown * y
     locals_ = _bearing_locals(u_b, flexible)
-    forces = tuple(support_force(local, support, shaft.speed, table, balls)
-                   for local, support, table, balls in zip(locals_, shaft.supports, tables, centres))
+    forces = tuple(support_force(local, support, shaft.speed, own, state)
+                   for local, support, own, state in zip(locals_, shaft.supports, constants, elements))
     nodes = recover(u_b)
     return FlexibleShaftEquilibrium(
         displacement=nodes[reference_node], bearing_displacements=locals_, bearing_forces=forces,
         converged=residual < RESIDUAL_TOLERANCE, residual=residual, static_steps=static_steps,
-        steps=steps.astype(static_steps.dtype), ball_centres=centres, constant_tables=tables,
+        steps=steps.astype(static_steps.dtype), elements=elements, constants=constants,
         nodes=node_positions(flexible.mesh, flexible.sections, points(flexible)),
         node_displacements=nodes)
 
@@ -231,10 +232,10 @@ def flexible_shaft_stiffness(solution: FlexibleShaftEquilibrium, flexible: Flexi
     `support_stiffness`)."""
     bearing_nodes, slots, _, reference_node = _structure(flexible)
     tangent = stiffness_matrix(flexible.mesh, flexible.sections, points(flexible))
-    for slot, local, support, table, balls in zip(slots, solution.bearing_displacements, flexible.shaft.supports,
-                                                  solution.constant_tables, solution.ball_centres):
+    for slot, local, support, own, state in zip(slots, solution.bearing_displacements, flexible.shaft.supports,
+                                                solution.constants, solution.elements):
         sign = turned(support)
-        bearing = support_stiffness(local, support, flexible.shaft.speed, table, balls)
+        bearing = support_stiffness(local, support, flexible.shaft.speed, own, state)
         index = _dofs([bearing_nodes[slot]])
         tangent = tangent.at[np.ix_(index, index)].add(sign[:, None] * bearing * sign[None, :])
     kept = _dofs([reference_node])

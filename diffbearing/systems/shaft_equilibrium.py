@@ -11,25 +11,26 @@ grows by (0, 0, z) × F; virtual work: [F, M]·δ(z) = (Gᵀ[F, M])·u). Bearing
 mounted the other way round (orientation −1, "−z") is the same bearing turned by π about x: in its
 own frame y, z and θ_y change sign, P = diag(1, −1, −1, 1, −1) (P = Pᵀ = P⁻¹). Its inner ring may be
 pushed axially against its outer ring by an offset e_k in its own frame (preload by an axial
-offset: `bearing_set`). At u = 0 an angular-contact or roller bearing sits at its own model's
-reference (balls touching at α₀; rollers at their clearance), a deep-groove ball bearing in the
-middle of its axial play, c_k = −(f_i + f_o − 1) D_w sin α₀ from there. Its inner-ring
-displacement and the load it takes from the shaft are
+offset: `bearing_set`). At u = 0 a bearing sits c_k from its own model's reference
+(`AbstractSupport.reference_offset`: 0 for an angular-contact or roller bearing, the middle of a
+deep-groove ball bearing's axial play). Its inner-ring displacement and the load it takes from the
+shaft are
 
     Δ_k = P_k G(z_k) u + (e_k + c_k) ẑ,     F_shaft,k = G(z_k)ᵀ P_k F_k(Δ_k)
 
-with F_k the bearing's ring force (`ball_equilibrium.ring_force`, `roller_equilibrium.ring_force`:
-the load on the inner ring that holds it at Δ_k, the balls or rollers re-equilibrated, speed
-effects included). The shaft is in equilibrium where Σ_k F_shaft,k(u) = Σ_l G(z_l)ᵀ [F_l, M_l].
+with F_k the bearing's ring force (`AbstractSupport.ring_force`, bearings/interface.py: the load
+on the inner ring that holds it at Δ_k, the balls or rollers re-equilibrated, speed effects
+included); the shaft sees its bearings through that interface alone. The shaft is in
+equilibrium where Σ_k F_shaft,k(u) = Σ_l G(z_l)ᵀ [F_l, M_l].
 
 Solution, as for one bearing: the start is the minimum of the convex static energy
-Σ_k E_k(Δ_k(u)) − F·u (each E_k with its contact constants at the free contact angle; no
-guess needed), then damped Newton on the exact residual (dense Jacobian through the bearings'
-implicit solves, regularised by 1e-12 of its diagonal so that a direction no bearing resists keeps
-the step finite) — with speed effects on the shaft's and the balls' unknowns together
-(`solve_jointly`) — and the implicit derivative of the root (least squares: finite where the
-stiffness is singular). The system stiffness is `jax.jacfwd` of the shaft force; at another point
-z_p it is G(−z_p)ᵀ K G(−z_p).
+Σ_k E_k(Δ_k(u)) − F·u (each E_k the bearing's own; no guess needed), then damped Newton on the
+exact residual (dense Jacobian through the bearings' implicit solves, regularised by 1e-12 of
+its diagonal so that a direction no bearing resists keeps the step finite) — where a bearing
+carries its rolling elements' state (a ball bearing with speed effects), on the shaft's and the
+elements' unknowns together (`solve_jointly`) — and the implicit derivative of the root (least
+squares: finite where the stiffness is singular). The system stiffness is Σ_k G_kᵀ P_k K_k P_k G_k
+with each bearing's own K_k; at another point z_p it is G(−z_p)ᵀ K G(−z_p).
 
 A bearing's ring speed is the shaft speed (the outer rings stand still); the quasi-static models
 depend on the speed's square only, so a turned bearing runs the same.
@@ -40,56 +41,16 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ..bearings.ball import ball_equilibrium
-from ..bearings.ball.ball_equilibrium import BallModel
-from ..bearings.roller import roller_equilibrium
-from ..bearings.roller.roller_equilibrium import RollerModel, RollerOperating, RollerRaceways
-from ..bearings.roller.roller_geometry import RollerBearing
+from ..bearings.interface import RING_MAX_STEPS, RING_STEP_TOLERANCE, SPEED_STAGES, AbstractSupport
 from ..newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from ..numerics import require_float64, safe_norm, without_gradient
-from ..params import BallBearing, Operating, _as_float, _is_concrete, check_range, groove_curvature_centre_distance
+from ..params import _as_float, check_range
 
 DISPLACEMENT_SCALE = 1e-5  # m: unit of the scaled shaft unknowns (10 µm, 10 µm / arm rad)
 RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled shaft residual is below
 MAX_STEPS = 60
 STATIC_GRADIENT_TOLERANCE = 1e-8
 TURNED = np.array([1.0, -1.0, -1.0, 1.0, -1.0])  # P: a bearing turned by π about x
-
-
-class BallSupport(eqx.Module):
-    """A ball bearing on the shaft: at `position` z [m], `orientation` +1 ("+z": its own axial
-    direction along the shaft's +z) or −1 ("−z"), inner ring pushed by `offset` [m] along its own
-    axis against the outer ring (preload; 0: none)."""
-
-    bearing: BallBearing
-    position: jax.Array = eqx.field(converter=_as_float)
-    offset: jax.Array = eqx.field(converter=_as_float, default=0.0)
-    model: BallModel = eqx.field(static=True, default=BallModel())
-    orientation: int = eqx.field(static=True, default=1)
-
-    def __check_init__(self):
-        _check_orientation(self.orientation)
-
-
-class RollerSupport(eqx.Module):
-    """A roller bearing (cylindrical or tapered) on the shaft; fields as `BallSupport`."""
-
-    bearing: RollerBearing
-    raceways: RollerRaceways
-    position: jax.Array = eqx.field(converter=_as_float)
-    offset: jax.Array = eqx.field(converter=_as_float, default=0.0)
-    model: RollerModel = eqx.field(static=True, default=RollerModel())
-    orientation: int = eqx.field(static=True, default=1)
-
-    def __check_init__(self):
-        _check_orientation(self.orientation)
-        if self.bearing.kind == "cylindrical_roller" and _is_concrete(self.offset) and float(self.offset) != 0.0:
-            raise ValueError("offset: a cylindrical roller bearing takes no axial preload; it must be 0")
-
-
-def _check_orientation(orientation):
-    if orientation not in (1, -1):
-        raise ValueError(f"orientation must be +1 ('+z') or -1 ('-z'), got {orientation!r}")
 
 
 class ShaftLoads(eqx.Module):
@@ -109,8 +70,8 @@ class ShaftLoads(eqx.Module):
 
 
 class Shaft(eqx.Module):
-    """A rigid shaft on `supports` (BallSupport / RollerSupport), under `loads`, turning at
-    `speed` [rad/s] with the outer rings fixed."""
+    """A rigid shaft on `supports` (each an `AbstractSupport`: `BallSupport`, `RollerSupport`, …),
+    under `loads`, turning at `speed` [rad/s] with the outer rings fixed."""
 
     supports: tuple
     loads: ShaftLoads
@@ -120,9 +81,10 @@ class Shaft(eqx.Module):
         if not self.supports:
             raise ValueError("bearings: the shaft needs at least one bearing")
         for support in self.supports:
-            if not isinstance(support, (BallSupport, RollerSupport)):
-                raise ValueError(f"bearings: a support must be a BallSupport or RollerSupport, got {type(support)}")
-        if all(isinstance(s, RollerSupport) and s.bearing.kind == "cylindrical_roller" for s in self.supports):
+            if not isinstance(support, AbstractSupport):
+                raise ValueError(f"bearings: a support must be an AbstractSupport (BallSupport, RollerSupport, …), "
+                                 f"got {type(support)}")
+        if not any(support.locates_axially() for support in self.supports):
             raise ValueError("bearings: no bearing locates the shaft axially (cylindrical roller bearings carry no "
                              "axial load); add a ball or tapered roller bearing")
         check_range("shaft.speed", self.speed, unit=" rad/s")
@@ -140,20 +102,10 @@ def turned(support):
     return TURNED if support.orientation < 0 else np.ones(5)
 
 
-def _centring(support):
-    """c_k [m]: a deep-groove ball bearing sits in the middle of its axial play at u = 0,
-    −(f_i + f_o − 1) D_w sin α₀ from where its balls touch at α₀ (`ball_equilibrium`'s reference);
-    any other bearing at its own model's reference (0)."""
-    bearing = support.bearing
-    if isinstance(support, BallSupport) and bearing.kind == "deep_groove_ball":
-        return -groove_curvature_centre_distance(bearing) * jnp.sin(bearing.free_contact_angle)
-    return 0.0
-
-
 def local_displacement(point_displacement, support):
     """Δ_k [m, rad]: the bearing's inner-ring displacement in its own frame from the displacement
     of the shaft point it sits at, P_k δ + (e_k + c_k) ẑ (module docstring)."""
-    return (turned(support) * point_displacement).at[2].add(support.offset + _centring(support))
+    return (turned(support) * point_displacement).at[2].add(support.offset + support.reference_offset())
 
 
 def support_displacement(shaft_displacement, support):
@@ -167,59 +119,46 @@ def support_move(support):
     return turned(support)[:, None] * transfer(support.position)
 
 
-def _operating(support, speed):
-    if isinstance(support, BallSupport):
-        return Operating(inner_speed=speed, outer_speed=0.0, force=jnp.zeros(3), moment=jnp.zeros(2))
-    return RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed)
+def support_force(local_displacement, support: AbstractSupport, speed, constants=None, elements=None):
+    """[Fx, Fy, Fz, Mx, My] [N, N·m] that holds the bearing's inner ring at Δ_k, in its own frame
+    (`AbstractSupport.ring_force`). `elements`: the state of its rolling elements as a solve found
+    them at Δ_k (else re-equilibrated here)."""
+    return support.ring_force(local_displacement, speed, constants, elements)
 
 
-def support_force(local_displacement, support, speed, table=None, ball_centres=None):
-    """[Fx, Fy, Fz, Mx, My] [N, N·m] that holds the bearing's inner ring at Δ_k, in its own frame.
-    `ball_centres`: a ball bearing's balls as a solve found them at Δ_k (else solved here)."""
-    operating = _operating(support, speed)
-    if isinstance(support, BallSupport):
-        return ball_equilibrium.ring_force(local_displacement, support.bearing, operating, support.model, table,
-                                           ball_centres)
-    return roller_equilibrium.ring_force(local_displacement, support.bearing, support.raceways, operating,
-                                         support.model)
-
-
-def support_stiffness(local_displacement, support, speed, table=None, ball_centres=None):
+def support_stiffness(local_displacement, support: AbstractSupport, speed, constants=None, elements=None):
     """K_k = dF_k/dΔ_k (5, 5) [N/m, N/rad; N·m/m, N·m/rad] of the bearing at Δ_k, in its own frame, with
-    its balls re-equilibrated: a ball bearing's exact stiffness (`ball_equilibrium.stiffness_matrix`:
-    with speed effects one linearisation at the balls, those the solve found where `ball_centres`
-    are given); a roller bearing's `jax.jacfwd` of its ring force."""
-    if isinstance(support, BallSupport):
-        return ball_equilibrium.stiffness_matrix(local_displacement, support.bearing, _operating(support, speed),
-                                                 support.model, ball_centres, table)
-    return jax.jacfwd(support_force)(local_displacement, support, speed, table)
+    its rolling elements re-equilibrated (`AbstractSupport.ring_stiffness`: a ball bearing's exact
+    stiffness, at the balls the solve found where `elements` are given)."""
+    return support.ring_stiffness(local_displacement, speed, constants, elements)
 
 
-def reaction(shaft_displacement, support, speed, table=None, ball_centres=None):
+def reaction(shaft_displacement, support, speed, constants=None, elements=None):
     """G(z_k)ᵀ P_k F_k: the load the bearing takes from the shaft, moved to z = 0 [N, N·m]."""
-    local = support_force(support_displacement(shaft_displacement, support), support, speed, table, ball_centres)
+    local = support_force(support_displacement(shaft_displacement, support), support, speed, constants, elements)
     return transfer(support.position).T @ (turned(support) * local)
 
 
-def constant_tables(shaft: Shaft):
-    """Each ball bearing's table of contact constants (`ball_equilibrium.constant_table`); None for a
-    roller bearing. Supports holding the same bearing object with the same model (a matched set)
-    share one table."""
-    built = {}  # (id of the bearing object, model) → its table
+def support_constants(shaft: Shaft):
+    """Each bearing's constants for a solve (`AbstractSupport.constants`: a ball bearing's table of
+    Hertz constants, None for a roller bearing), built once; supports with the same
+    `constants_key` (a matched set's bearings: the same bearing object and model) share them."""
+    built = {}
     for support in shaft.supports:
-        if isinstance(support, BallSupport) and (id(support.bearing), support.model) not in built:
-            built[id(support.bearing), support.model] = ball_equilibrium.constant_table(support.bearing, support.model)
-    return tuple(built[id(s.bearing), s.model] if isinstance(s, BallSupport) else None for s in shaft.supports)
+        key = support.constants_key()
+        if key is None or key not in built:
+            built[id(support) if key is None else key] = support.constants()
+    return tuple(built[id(s) if s.constants_key() is None else s.constants_key()] for s in shaft.supports)
 
 
-def shaft_force(shaft_displacement, shaft: Shaft, tables=None, ball_centres=None):
+def shaft_force(shaft_displacement, shaft: Shaft, constants=None, elements=None):
     """Σ_k of the bearings' loads on the shaft at displacement u, about z = 0 [N, N·m]; in
     equilibrium it equals the applied load, and its Jacobian is the system stiffness.
-    `ball_centres`: per bearing, its solved balls at this u (`ShaftEquilibrium.ball_centres`) or None."""
-    tables = constant_tables(shaft) if tables is None else tables
-    centres = (None,) * len(shaft.supports) if not ball_centres else ball_centres
-    return sum(reaction(shaft_displacement, support, shaft.speed, table, balls)
-               for support, table, balls in zip(shaft.supports, tables, centres))
+    `elements`: per bearing, its solved rolling elements at this u (`ShaftEquilibrium.elements`) or None."""
+    constants = support_constants(shaft) if constants is None else constants
+    elements = (None,) * len(shaft.supports) if not elements else elements
+    return sum(reaction(shaft_displacement, support, shaft.speed, own, state)
+               for support, own, state in zip(shaft.supports, constants, elements))
 
 
 def applied_load(shaft: Shaft):
@@ -229,45 +168,28 @@ def applied_load(shaft: Shaft):
     return jnp.einsum("lij,li->j", jax.vmap(transfer)(loads.positions), combined)
 
 
-def energy_constants(shaft: Shaft, tables):
-    """Per support, what its static energy holds fixed (`support_energy`): a ball bearing's combined
-    contact constant K_n(α₀) [N/m^1.5] (from its table of Hertz constants, `constant_tables`), a
-    roller bearing's lamina setup; evaluated once per solve, not in every trace of the energy and
-    its derivatives."""
-    return tuple(ball_equilibrium.free_contact_constant(s.bearing, s.model, table) if isinstance(s, BallSupport)
-                 else roller_equilibrium.lamina_setup(s.bearing, s.raceways, s.model)
-                 for s, table in zip(shaft.supports, tables))
+def energy_constants(shaft: Shaft, constants):
+    """Per support, what its static energy holds fixed (`AbstractSupport.energy_constants`: a ball
+    bearing's combined contact constant K_n(α₀) [N/m^1.5], a roller bearing's lamina setup);
+    evaluated once per solve, not in every trace of the energy and its derivatives."""
+    return tuple(support.energy_constants(own) for support, own in zip(shaft.supports, constants))
 
 
-def support_energy(local, support, constants):
-    """E_k(Δ_k) [J] with the contact constants at the free contact angle (convex in Δ_k);
-    `constants`: the support's entry of `energy_constants`."""
-    if isinstance(support, BallSupport):
-        return ball_equilibrium.static_energy(local, support.bearing, constants)
-    return roller_equilibrium.static_energy(local, support.bearing, support.raceways, constants)
+def support_energy(local, support: AbstractSupport, held):
+    """E_k(Δ_k) [J], convex in Δ_k (`AbstractSupport.static_energy`); `held`: the support's entry
+    of `energy_constants`."""
+    return support.static_energy(local, held)
 
 
-def _characteristic_load(support, table, held):
-    if isinstance(support, BallSupport):
-        return ball_equilibrium.characteristic_load(support.bearing, support.model, table)
-    return roller_equilibrium.characteristic_load(support.bearing, held)
-
-
-def _pitch_radius(support):
-    bearing = support.bearing if isinstance(support, BallSupport) else support.raceways
-    return 0.5 * bearing.pitch_diameter
-
-
-def shaft_scales(shaft: Shaft, tables, constants):
+def shaft_scales(shaft: Shaft, constants, held):
     """Unknown scale s (u = s·y), residual weights w (moments to forces by an arm) and load scale [N]
-    (the bearings' characteristic loads from their tables of Hertz constants, `constant_tables`, and
-    their `energy_constants`).
+    (the bearings' characteristic loads from their `support_constants` and `energy_constants`).
 
     The arm is the largest of the bearings' distances from z = 0 and pitch radii."""
-    arm = jnp.max(jnp.stack([jnp.maximum(jnp.abs(s.position), _pitch_radius(s)) for s in shaft.supports]))
+    arm = jnp.max(jnp.stack([jnp.maximum(jnp.abs(s.position), s.pitch_radius()) for s in shaft.supports]))
     weight = jnp.stack([1.0, 1.0, 1.0, 1.0 / arm, 1.0 / arm])
-    scale = safe_norm(applied_load(shaft) * weight) + sum(_characteristic_load(s, table, held)
-                                                          for s, table, held in zip(shaft.supports, tables, constants))
+    scale = safe_norm(applied_load(shaft) * weight) + sum(s.characteristic_load(own, energy)
+                                                          for s, own, energy in zip(shaft.supports, constants, held))
     return DISPLACEMENT_SCALE * weight, weight, scale
 
 
@@ -283,8 +205,8 @@ def _static_energy(y, args):
 
 def _residual(y, args):
     """(Σ bearing loads − applied load) · w / load scale at u = s·y."""
-    shaft, unknown, weight, load_scale, tables = args
-    return (shaft_force(unknown * y, shaft, tables) - applied_load(shaft)) * weight / load_scale
+    shaft, unknown, weight, load_scale, constants = args
+    return (shaft_force(unknown * y, shaft, constants) - applied_load(shaft)) * weight / load_scale
 
 
 def damped_newton(residual, start, args):
@@ -295,10 +217,11 @@ def damped_newton(residual, start, args):
     return y, steps.astype(y.dtype)
 
 
-def balls_solved_jointly(supports) -> tuple[bool, ...]:
-    """Per support, whether `solve_jointly` carries its balls as unknowns: a ball bearing with speed
-    effects, whose balls leave the static split."""
-    return tuple(isinstance(support, BallSupport) and support.model.speed_effects for support in supports)
+def elements_solved_jointly(supports) -> tuple[bool, ...]:
+    """Per support, whether `solve_jointly` carries its rolling elements' state as unknowns
+    (`AbstractSupport.carries_elements`: a ball bearing with speed effects, whose balls leave the
+    static split)."""
+    return tuple(support.carries_elements() for support in supports)
 
 
 class Structure(eqx.Module):
@@ -318,123 +241,118 @@ def _local(unknowns, support, move):
     return move @ unknowns + local_displacement(jnp.zeros(5), support)
 
 
-def structure_residual(y, supports, speed, tables, structure: Structure, unknown, weight, load_scale, ball_centres):
-    """(K U − F + Σ_k M_kᵀ F_k(Δ_k)) · w / load scale at U = s·y, each bearing's balls at
-    `ball_centres` where given (their implicit derivative kept), else solved at Δ_k."""
+def structure_residual(y, supports, speed, constants, structure: Structure, unknown, weight, load_scale, elements):
+    """(K U − F + Σ_k M_kᵀ F_k(Δ_k)) · w / load scale at U = s·y, each bearing's rolling elements
+    at `elements` where given (their implicit derivative kept), else re-equilibrated at Δ_k."""
     u = unknown * y
     out = structure.stiffness @ u - structure.load
-    for support, table, move, balls in zip(supports, tables, structure.moves, ball_centres):
-        out = out + move.T @ support_force(_local(u, support, move), support, speed, table, balls)
+    for support, own, move, state in zip(supports, constants, structure.moves, elements):
+        out = out + move.T @ support_force(_local(u, support, move), support, speed, own, state)
     return out * weight / load_scale
 
 
 def _joint_step(unknowns, args):
-    """Newton step (−dy, −dX_k) of the structure and the balls of every bearing with speed effects
-    together, (y, per bearing its ball centres (Z, 2) [m] or None).
+    """Newton step (−dy, −dX_k) of the structure and the rolling elements of every bearing that
+    carries them together, (y, per bearing its elements' state or None).
 
-    Each such bearing's balls are condensed onto its ring (`ball_equilibrium.condensed_balls`: its
-    force and stiffness with the balls' equations eliminated to first order); any other bearing
-    gives its ring force and stiffness (`jax.jacfwd`). The Jacobian is K + Σ_k M_kᵀ S_k M_k, and
-    the balls follow the structure's step.
+    Each such bearing's elements are condensed onto its ring (`AbstractSupport.condensed`: its
+    force and stiffness with the elements' equations eliminated to first order); any other
+    bearing gives its ring force and stiffness. The Jacobian is K + Σ_k M_kᵀ S_k M_k, and the
+    elements follow the structure's step.
     """
-    y, positions = unknowns
-    supports, speed, tables, structure, unknown, weight, load_scale = args
+    y, states = unknowns
+    supports, speed, constants, structure, unknown, weight, load_scale = args
     u = unknown * y
     force, stiffness, condensed = structure.stiffness @ u - structure.load, structure.stiffness, []
-    for support, balls, table, move in zip(supports, positions, tables, structure.moves):
+    for support, state, own, move in zip(supports, states, constants, structure.moves):
         local = _local(u, support, move)
-        if balls is None:
-            own = support_force(local, support, speed, table)
-            own_stiffness = jax.jacfwd(support_force)(local, support, speed, table)
+        if state is None:
+            own_force = support_force(local, support, speed, own)
+            own_stiffness = support_stiffness(local, support, speed, own)
             condensed.append(None)
         else:
-            found = ball_equilibrium.condensed_balls(local, balls, support.bearing, _operating(support, speed),
-                                                     support.model, table)
-            own, own_stiffness = found.condensed_force, found.condensed_stiffness
+            found = support.condensed(local, state, speed, own)
+            own_force, own_stiffness = found.force, found.stiffness
             condensed.append(found)
-        force = force + move.T @ own
+        force = force + move.T @ own_force
         stiffness = stiffness + move.T @ own_stiffness @ move
     dy = guarded_solve((weight / load_scale)[:, None] * stiffness * unknown[None, :], force * weight / load_scale)
-    # the structure moves by −s·dy; each bearing's balls by −J_XX⁻¹ g − J_XX⁻¹ J_XΔ dΔ_k
-    ball_steps = tuple(None if found is None else
-                       -(found.ball_correction - found.ball_coupling @ (move @ (unknown * dy)))
-                       for found, move in zip(condensed, structure.moves))
-    return -dy, ball_steps
+    # the structure moves by −s·dy; each bearing's elements by −J_XX⁻¹ g − J_XX⁻¹ J_XΔ dΔ_k
+    element_steps = tuple(None if found is None else
+                          -(found.correction - found.coupling @ (move @ (unknown * dy)))
+                          for found, move in zip(condensed, structure.moves))
+    return -dy, element_steps
 
 
 def _joint_solve(start, args):
-    """(y, per bearing its ball centres or None, steps) of the structure and the balls together
-    (`_joint_step`), from the static solution `start`, continued in speed as one bearing's ring
-    solve is (`ball_equilibrium._ring_solve`): the speed rises in `ball_equilibrium.SPEED_STAGES`,
-    each stage's Newton from the last one's solution, the balls from their start at the static
-    solution and the first stage's speed (`ball_equilibrium.start_positions`), a stage that fails
-    keeping the last solution. Without line search; each ball's step limited to a tenth of its radius
-    (`ball_equilibrium.limited_ball_step`); each stage stops when every structure step component
-    is below `ball_equilibrium.RING_STEP_TOLERANCE` (1 + |y|) and every ball step below
-    `ball_equilibrium.BALL_POSITION_TOLERANCE` D_w."""
-    supports, speed, tables, structure, unknown, weight, load_scale = args
-    fractions = jnp.asarray(ball_equilibrium.SPEED_STAGES)
-    jointly = balls_solved_jointly(supports)
-    positions = tuple(ball_equilibrium.start_positions(_local(unknown * start, support, move), support.bearing,
-                                                       _operating(support, fractions[0] * speed), support.model, table)
-                      if joint else None
-                      for support, table, move, joint in zip(supports, tables, structure.moves, jointly))
+    """(y, per bearing its elements' state or None, steps) of the structure and the rolling
+    elements together (`_joint_step`), from the static solution `start`, continued in speed as one
+    bearing's ring solve is: the speed rises in `SPEED_STAGES` (bearings/interface.py), each
+    stage's Newton from the last one's solution, the elements from their start at the static
+    solution and the first stage's speed (`AbstractSupport.start_elements`), a stage that fails
+    keeping the last solution. Without line search; each element step limited as its type says
+    (`AbstractSupport.limit_element_step`); each stage stops when every structure step component
+    is below `RING_STEP_TOLERANCE` (1 + |y|) and every element step below its type's
+    `element_tolerance`."""
+    supports, speed, constants, structure, unknown, weight, load_scale = args
+    fractions = jnp.asarray(SPEED_STAGES)
+    jointly = elements_solved_jointly(supports)
+    states = tuple(support.start_elements(_local(unknown * start, support, move), fractions[0] * speed, own)
+                   if joint else None
+                   for support, own, move, joint in zip(supports, constants, structure.moves, jointly))
 
     def per_bearing(value):
         return tuple(value(support) if joint else None for support, joint in zip(supports, jointly))
 
-    ring = ball_equilibrium.RING_STEP_TOLERANCE
-    tolerance = ((ring, per_bearing(lambda s: ball_equilibrium.BALL_POSITION_TOLERANCE * s.bearing.ball_diameter)),
-                 (ring, per_bearing(lambda s: 0.0)))
+    tolerance = ((RING_STEP_TOLERANCE, per_bearing(lambda s: s.element_tolerance())),
+                 (RING_STEP_TOLERANCE, per_bearing(lambda s: 0.0)))
 
     def limit(step):
-        return step[0], tuple(None if balls is None else ball_equilibrium.limited_ball_step(support.bearing, balls)
-                              for support, balls in zip(supports, step[1]))
+        return step[0], tuple(None if state is None else support.limit_element_step(state)
+                              for support, state in zip(supports, step[1]))
 
     def stage(unknowns, fraction):
-        staged = (supports, fraction * speed, tables, structure, unknown, weight, load_scale)
+        staged = (supports, fraction * speed, constants, structure, unknown, weight, load_scale)
         solved, steps = newton(None, unknowns, staged, linear_step=_joint_step, limit=limit, step_tolerance=tolerance,
-                               max_steps=ball_equilibrium.RING_MAX_STEPS, loop="while", line_search=False)
-        reached = ((steps < ball_equilibrium.RING_MAX_STEPS)
+                               max_steps=RING_MAX_STEPS, loop="while", line_search=False)
+        reached = ((steps < RING_MAX_STEPS)
                    & jnp.all(jnp.stack([jnp.all(jnp.isfinite(x)) for x in jax.tree.leaves(solved)])))
         return jax.tree.map(lambda new, old: jnp.where(reached, new, old), solved, unknowns), steps
 
-    (y, positions), steps = jax.lax.scan(stage, (start, positions), fractions)
-    return y, positions, jnp.sum(steps).astype(y.dtype)
+    (y, states), steps = jax.lax.scan(stage, (start, states), fractions)
+    return y, states, jnp.sum(steps).astype(y.dtype)
 
 
-def _residual_at_balls(y, args):
-    supports, speed, tables, structure, unknown, weight, load_scale, centres = args
-    return structure_residual(y, supports, speed, tables, structure, unknown, weight, load_scale, centres)
+def _residual_at_elements(y, args):
+    supports, speed, constants, structure, unknown, weight, load_scale, elements = args
+    return structure_residual(y, supports, speed, constants, structure, unknown, weight, load_scale, elements)
 
 
-def solve_jointly(start, supports, speed, tables, structure: Structure, unknown, weight, load_scale):
-    """(y, ball centres per bearing (None where not carried), steps, largest residual) of bearings
-    with speed effects on a linear structure: the structure's unknowns and every such bearing's
-    ball centres solved together (`_joint_solve`) from the static solution `start` (scaled,
-    U = s·y), the root's derivative taken at the solved balls (their implicit derivative: no ball
-    Newton traced but the start's). The residual is the largest of the scaled structure residual
-    and each ball's own relative balance (`ball_equilibrium.relative_ball_residual`).
+def solve_jointly(start, supports, speed, constants, structure: Structure, unknown, weight, load_scale):
+    """(y, elements' state per bearing (None where not carried), steps, largest residual) of
+    bearings that carry their rolling elements on a linear structure: the structure's unknowns and
+    every such bearing's elements solved together (`_joint_solve`) from the static solution `start`
+    (scaled, U = s·y), the root's derivative taken at the solved elements (their implicit
+    derivative: no element Newton traced but the start's). The residual is the largest of the
+    scaled structure residual and each bearing's own element balance
+    (`AbstractSupport.element_residual`).
 
     Solving each bearing's balls inside every step of the structure's Newton instead (a ring force
     of Δ_k alone, `support_force`) makes that force jump where a ball, released by its inner ring,
     drops to the bottom of its outer groove, and the Newton stalls there (measured: a preloaded
     back-to-back pair at 2.3e4 r/min under random loads, residual 0.13; solved together it
     converges in 24 steps)."""
-    args = (supports, speed, tables, structure, unknown, weight, load_scale)
-    solved, centres, steps = _joint_solve(start, without_gradient(args))  # the root's derivative is implicit
-    args = (*args, centres)
-    y = implicit_root(_residual_at_balls, solved, args, lambda residual, guess, args: guess,
+    args = (supports, speed, constants, structure, unknown, weight, load_scale)
+    solved, elements, steps = _joint_solve(start, without_gradient(args))  # the root's derivative is implicit
+    args = (*args, elements)
+    y = implicit_root(_residual_at_elements, solved, args, lambda residual, guess, args: guess,
                       least_squares_tangent_solve)
-    residual = jnp.max(jnp.abs(_residual_at_balls(y, args)))
-    for support, table, move, balls in zip(supports, tables, structure.moves, centres):
-        if balls is not None:  # each ball's own balance, as one bearing's solve checks it
-            operating = _operating(support, speed)
-            grooves = ball_equilibrium.inner_groove_centres(support.bearing, _local(unknown * y, support, move))
-            state = ball_equilibrium.ball_state(support.bearing, operating, grooves, balls, support.model, table=table)
-            residual = jnp.maximum(residual, ball_equilibrium.relative_ball_residual(
-                support.bearing, operating, grooves, state, support.model, load_scale))
-    return y, centres, steps, jax.lax.stop_gradient(residual)
+    residual = jnp.max(jnp.abs(_residual_at_elements(y, args)))
+    for support, own, move, state in zip(supports, constants, structure.moves, elements):
+        if state is not None:
+            residual = jnp.maximum(residual, support.element_residual(_local(unknown * y, support, move), state, speed,
+                                                                      own, load_scale))
+    return y, elements, steps, jax.lax.stop_gradient(residual)
 
 
 class ShaftEquilibrium(eqx.Module):
@@ -442,10 +360,11 @@ class ShaftEquilibrium(eqx.Module):
     order of `Shaft.supports`) the inner-ring displacement in its own frame [m, rad] and the load
     it carries, [Fx, Fy, Fz, Mx, My] in its own frame [N, N·m]; whether it converged (scaled
     residual below `RESIDUAL_TOLERANCE`), the residual [-] and the Newton steps; per bearing its
-    balls' centres (Z, 2) [m] where the solve carried them (ball bearings with speed effects; else
-    None): hand them to `shaft_stiffness` and `ball_equilibrium.ball_results`, which then solve no
-    balls of their own; and per bearing the table of Hertz constants the solve built (None for a
-    roller bearing or constants held at α₀), likewise for `shaft_stiffness` and `ball_results`."""
+    rolling elements' state where the solve carried them (a ball bearing with speed effects: its
+    balls' centres (Z, 2) [m]; else None): hand them to `shaft_stiffness` and the type's results
+    (`ball_equilibrium.ball_results`), which then solve no elements of their own; and per bearing
+    the constants the solve built (`AbstractSupport.constants`: a ball bearing's table of Hertz
+    constants, None for a roller bearing or constants held at α₀), likewise."""
 
     displacement: jax.Array
     bearing_displacements: tuple
@@ -454,8 +373,8 @@ class ShaftEquilibrium(eqx.Module):
     residual: jax.Array
     static_steps: jax.Array
     steps: jax.Array
-    ball_centres: tuple
-    constant_tables: tuple
+    elements: tuple
+    constants: tuple
 
 
 def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
@@ -465,40 +384,41 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
     implicit adjoint, least squares where the system stiffness is singular).
     """
     require_float64()
-    tables = constant_tables(shaft)
-    constants = energy_constants(shaft, tables)
-    unknown, weight, load_scale = shaft_scales(shaft, tables, constants)
+    constants = support_constants(shaft)
+    held = energy_constants(shaft, constants)
+    unknown, weight, load_scale = shaft_scales(shaft, constants, held)
     start, static_steps = minimise_convex(_static_energy, jnp.zeros(5),
-                                          without_gradient((shaft, unknown, weight, load_scale, constants)),
+                                          without_gradient((shaft, unknown, weight, load_scale, held)),
                                           gradient_tolerance=STATIC_GRADIENT_TOLERANCE)  # a start: no derivative
-    args = (shaft, unknown, weight, load_scale, tables)
-    if not any(balls_solved_jointly(shaft.supports)):
+    args = (shaft, unknown, weight, load_scale, constants)
+    if not any(elements_solved_jointly(shaft.supports)):
         y, steps = implicit_root(_residual, start, args, damped_newton, least_squares_tangent_solve, has_aux=True)
-        centres = (None,) * len(shaft.supports)
+        elements = (None,) * len(shaft.supports)
         residual = jax.lax.stop_gradient(jnp.max(jnp.abs(_residual(y, args))))
-    else:  # the shaft and the balls together
+    else:  # the shaft and the rolling elements together
         structure = Structure(jnp.zeros((5, 5)), applied_load(shaft), tuple(map(support_move, shaft.supports)))
-        y, centres, steps, residual = solve_jointly(start, shaft.supports, shaft.speed, tables, structure, unknown,
-                                                    weight, load_scale)
+        y, elements, steps, residual = solve_jointly(start, shaft.supports, shaft.speed, constants, structure, unknown,
+                                                     weight, load_scale)
     u = unknown * y
     locals_ = tuple(support_displacement(u, support) for support in shaft.supports)
-    forces = tuple(support_force(local, support, shaft.speed, table, balls)
-                   for local, support, table, balls in zip(locals_, shaft.supports, tables, centres))
+    forces = tuple(support_force(local, support, shaft.speed, own, state)
+                   for local, support, own, state in zip(locals_, shaft.supports, constants, elements))
     return ShaftEquilibrium(u, locals_, forces, residual < RESIDUAL_TOLERANCE, residual, static_steps,
-                            steps.astype(static_steps.dtype), centres, tables)
+                            steps.astype(static_steps.dtype), elements, constants)
 
 
-def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, ball_centres=None, tables=None):
+def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, elements=None, constants=None):
     """5×5 system stiffness [N/m, N/rad; N·m/m, N·m/rad] at the shaft point z = `at` [m]: the
     Jacobian of the bearings' loads with respect to that point's displacement (exact), Σ_k G_kᵀ P_k
     K_k P_k G_k with each bearing's own K_k (`support_stiffness`; P_k G_k: `support_move`).
-    `ball_centres`: the solve's balls (`ShaftEquilibrium.ball_centres`; else solved here);
-    `tables`: the solve's (`ShaftEquilibrium.constant_tables`; else built here)."""
-    tables = constant_tables(shaft) if tables is None else tables
-    centres = (None,) * len(shaft.supports) if not ball_centres else ball_centres
+    `elements`: the solve's rolling elements (`ShaftEquilibrium.elements`; else re-equilibrated
+    here); `constants`: the solve's (`ShaftEquilibrium.constants`; else built here)."""
+    constants = support_constants(shaft) if constants is None else constants
+    elements = (None,) * len(shaft.supports) if not elements else elements
     stiffness = jnp.zeros((5, 5))
-    for support, table, balls in zip(shaft.supports, tables, centres):
-        own = support_stiffness(support_displacement(shaft_displacement, support), support, shaft.speed, table, balls)
-        stiffness = stiffness + support_move(support).T @ own @ support_move(support)
+    for support, own, state in zip(shaft.supports, constants, elements):
+        local = support_displacement(shaft_displacement, support)
+        stiffness = stiffness + support_move(support).T @ support_stiffness(local, support, shaft.speed, own, state) \
+            @ support_move(support)
     back = transfer(-jnp.asarray(at, dtype=float))
     return back.T @ stiffness @ back

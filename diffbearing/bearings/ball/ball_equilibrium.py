@@ -89,6 +89,7 @@ from ...contact import hertz
 from ...newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from ...numerics import positive_power, require_float64, safe_norm, without_gradient
 from ...params import BallBearing, Operating, groove_curvature_centre_distance
+from ..interface import RING_MAX_STEPS, RING_STEP_TOLERANCE, SPEED_STAGES
 from . import ball_validity, kinematics
 from .raceway_contact import (
     ContactConstantTable,
@@ -104,12 +105,9 @@ BALL_POSITION_TOLERANCE = 1e-13  # × D_w: step size at which the per-ball Newto
 FREE_APPROACH = 1e-12  # × D_w: below this total approach a ball at standstill is taken as free
 DISPLACEMENT_SCALE = 1e-5  # m: the unit of the scaled ring unknowns (10 µm, 10 µm / R_i rad)
 RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled ring residual and ball residuals are below
+# the speed continuation of the ring solve with speed effects and its ring tolerances, SPEED_STAGES,
+# RING_STEP_TOLERANCE and RING_MAX_STEPS, are every joint solve's (bearings/interface.py)
 
-RING_STEP_TOLERANCE = 1e-11  # ring Newton stops when every scaled step component is below this × (1 + |y|)
-RING_MAX_STEPS = 100
-# Speed continuation of the ring solve with speed effects (`_ring_solve`): fractions of the ring
-# speeds whose squares rise in equal steps (centrifugal force and gyroscopic moment ∝ ω²).
-SPEED_STAGES = tuple(((1.0 + stage) / 4.0) ** 0.5 for stage in range(4))  # plain floats: no JAX at import
 # The static energy is only the start for Newton: a gradient of 1e-8 (scaled) is close enough, and
 # the energy's rounding error stops Armijo's test from resolving much less.
 STATIC_GRADIENT_TOLERANCE = 1e-8

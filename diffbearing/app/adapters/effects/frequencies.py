@@ -8,7 +8,6 @@ import functools
 from .... import overrolling
 from ....bearings.roller.roller_geometry import ROLLER_KINDS
 from ....params import BALL_BEARING_KINDS
-from ....ratings import life
 from ...registry import Adapter, Block, Key, Output, register
 from ..bearings.ball import ball_model
 from ..systems.bearing_set import SET, SET_SIZE
@@ -46,7 +45,7 @@ def _ball_frequencies(inputs: dict, settings: dict, results: dict) -> dict:
                                   inner_load=results["balls.inner.load"], race_control=ball_model(settings).race_control)
     nominal = overrolling.nominal_frequencies(operating.inner_speed, operating.outer_speed, bearing.ball_count,
                                               bearing.ball_diameter, bearing.pitch_diameter,
-                                              life.nominal_contact_angle(bearing))
+                                              bearing.nominal_contact_angle)
     return _with_orders(at_speeds, operating) | _keyed(nominal, "frequencies.nominal")
 
 
@@ -88,7 +87,7 @@ def _report(result) -> list[str]:
     element = "roller" if any(block.name == "roller_frequencies" for block in result.model.blocks) else "ball"
     title = "Overrolling frequencies at the operating contact angles"
     if nominal:
-        angle = "0°" if result.model.inputs["bearing"].kind == "deep_groove_ball" else "the free contact angle α0"
+        angle = "0°" if result.model.inputs["bearing"].radial_contact else "the free contact angle α0"
         title += f" (nominal: textbook, at {angle})"
     lines = ["", title, f"  {'':<40}{'[Hz]':>12}{'[per rev]':>12}"
              + (f"{'nominal [Hz]':>14}{'difference':>12}" if nominal else "")]

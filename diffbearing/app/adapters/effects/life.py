@@ -34,7 +34,7 @@ def table3_angle(settings: dict, inputs: dict) -> None:
     """ISO 281 Table 3 rates radial ball bearings up to α = 45°; beyond, the bearing is a thrust
     bearing of Table 4 (not modelled): ValueError naming the contact angle."""
     bearing = inputs["bearing"]
-    angle = life.nominal_contact_angle(bearing)
+    angle = bearing.nominal_contact_angle
     if not isinstance(angle, jax.core.Tracer) and float(angle) > radial_load_factors.LARGEST_ANGLE + 1e-12:
         raise ValueError(f"bearing.contact_angle: ISO 281's equivalent load (life, safety) rates radial ball "
                          f"bearings up to 45°, got {np.degrees(float(angle)):.4g}°")

@@ -129,8 +129,8 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
            "set.residual": solution.residual, "set.preload_force": preload, "set.preload_offset": offset}
     approach, angle, lowest, every = [], [], [], []
     for number, (support, local, force, centres, table) in enumerate(zip(
-            supports, solution.bearing_displacements, solution.bearing_forces, solution.ball_centres,
-            solution.constant_tables)):
+            supports, solution.bearing_displacements, solution.bearing_forces, solution.elements,
+            solution.constants)):
         balls = ball_results(local, bearing, operating, model, centres, table)
         every.append(balls)
         prefix = f"set.bearings.{number}."
@@ -153,8 +153,8 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     out["set.validity.missing_axial_load"] = tandem_missing_axial_load(bearing, operating.force, operating.moment,
                                                                        layout.spacing, layout.arrangement)
     if settings["effects"].get("stiffness", False) is True:
-        out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft, ball_centres=solution.ball_centres,
-                                               tables=solution.constant_tables)
+        out["set.stiffness"] = shaft_stiffness(solution.displacement, shaft, elements=solution.elements,
+                                               constants=solution.constants)
     return out
 
 

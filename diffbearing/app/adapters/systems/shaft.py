@@ -24,10 +24,10 @@ from ....ratings import life
 from ....systems.flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, shaft_mesh, solve_flexible_shaft
 from ....systems.operating_clearance import SEAT_MATERIALS
 from ....systems.shaft_beam import BeamMesh, ShaftSections
+from ....bearings.ball.ball_support import BallSupport
+from ....bearings.roller.roller_support import RollerSupport
 from ....systems.shaft_equilibrium import (
     RESIDUAL_TOLERANCE,
-    BallSupport,
-    RollerSupport,
     Shaft,
     ShaftLoads,
     shaft_stiffness,
@@ -301,7 +301,7 @@ def _solve(layout: ShaftLayout, shaft: Shaft, stiffness: bool) -> dict:
                "shaft.displacement": transfer(layout.stiffness_at) @ solution.displacement}
         if stiffness:
             out["shaft.stiffness"] = shaft_stiffness(solution.displacement, shaft, layout.stiffness_at,
-                                                     solution.ball_centres, solution.constant_tables)
+                                                     solution.elements, solution.constants)
         return out
     flexible = FlexibleShaft(shaft, layout.sections, layout.stiffness_at, layout.mesh)
     solution = solve_flexible_shaft(flexible)
@@ -318,8 +318,8 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     solved = _solve(layout, shaft, settings["effects"].get("stiffness", False) is True)
     solution = solved.pop("solution")
     per_bearing = [_results(support, local, layout.speed, balls, table) for support, local, balls, table
-                   in zip(shaft.supports, solution.bearing_displacements, solution.ball_centres,
-                          solution.constant_tables)]
+                   in zip(shaft.supports, solution.bearing_displacements, solution.elements,
+                          solution.constants)]
     out = solved | {
         "shaft.converged": solution.converged,
         "shaft.residual": solution.residual,

@@ -1,0 +1,96 @@
+"""A ball bearing (deep groove or angular contact) mounted on a shaft: `AbstractSupport` through
+the ball model (`ball_equilibrium`).
+
+At u = 0 an angular-contact bearing sits at its model's reference (balls touching at α₀), a
+deep-groove one in the middle of its axial play, c = −(f_i + f_o − 1) D_w sin α₀ from there. With
+speed effects the balls leave the static split: a system carries their centres (Z, 2) [m] as
+unknowns (`ball_equilibrium.condensed_balls`).
+"""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+
+from ...params import BallBearing, Operating, _as_float, groove_curvature_centre_distance
+from ..interface import AbstractSupport, CondensedElements, check_orientation
+from . import ball_equilibrium
+from .ball_equilibrium import BallModel
+
+
+class BallSupport(AbstractSupport):
+    """A ball bearing on the shaft: at `position` z [m], `orientation` +1 ("+z": its own axial
+    direction along the shaft's +z) or −1 ("−z"), inner ring pushed by `offset` [m] along its own
+    axis against the outer ring (preload; 0: none)."""
+
+    bearing: BallBearing
+    position: jax.Array = eqx.field(converter=_as_float)
+    offset: jax.Array = eqx.field(converter=_as_float, default=0.0)
+    model: BallModel = eqx.field(static=True, default=BallModel())
+    orientation: int = eqx.field(static=True, default=1)
+
+    def __check_init__(self):
+        check_orientation(self.orientation)
+
+    def _operating(self, speed):
+        return Operating(inner_speed=speed, outer_speed=0.0, force=jnp.zeros(3), moment=jnp.zeros(2))
+
+    def constants(self):
+        """The table of Hertz constants (`ball_equilibrium.constant_table`; None held at α₀)."""
+        return ball_equilibrium.constant_table(self.bearing, self.model)
+
+    def constants_key(self):
+        return id(self.bearing), self.model
+
+    def ring_force(self, displacement, speed, constants, elements=None):
+        return ball_equilibrium.ring_force(displacement, self.bearing, self._operating(speed), self.model, constants,
+                                           elements)
+
+    def ring_stiffness(self, displacement, speed, constants, elements=None):
+        """The exact stiffness (`ball_equilibrium.stiffness_matrix`: with speed effects one
+        linearisation at the balls, those a solve found where `elements` are given)."""
+        return ball_equilibrium.stiffness_matrix(displacement, self.bearing, self._operating(speed), self.model,
+                                                 elements, constants)
+
+    def energy_constants(self, constants):
+        """K_n(α₀) [N/m^1.5], both contacts in series at the free contact angle."""
+        return ball_equilibrium.free_contact_constant(self.bearing, self.model, constants)
+
+    def static_energy(self, displacement, energy_constants):
+        return ball_equilibrium.static_energy(displacement, self.bearing, energy_constants)
+
+    def characteristic_load(self, constants, energy_constants):
+        return ball_equilibrium.characteristic_load(self.bearing, self.model, constants)
+
+    def pitch_radius(self):
+        return 0.5 * self.bearing.pitch_diameter
+
+    def reference_offset(self):
+        if self.bearing.kind == "deep_groove_ball":
+            return -groove_curvature_centre_distance(self.bearing) * jnp.sin(self.bearing.free_contact_angle)
+        return 0.0
+
+    def carries_elements(self) -> bool:
+        return self.model.speed_effects
+
+    def start_elements(self, displacement, speed, constants):
+        return ball_equilibrium.start_positions(displacement, self.bearing, self._operating(speed), self.model,
+                                                constants)
+
+    def condensed(self, displacement, elements, speed, constants) -> CondensedElements:
+        found = ball_equilibrium.condensed_balls(displacement, elements, self.bearing, self._operating(speed),
+                                                 self.model, constants)
+        return CondensedElements(found.condensed_force, found.condensed_stiffness, found.ball_correction,
+                                 found.ball_coupling)
+
+    def limit_element_step(self, step):
+        return ball_equilibrium.limited_ball_step(self.bearing, step)
+
+    def element_tolerance(self):
+        return ball_equilibrium.BALL_POSITION_TOLERANCE * self.bearing.ball_diameter
+
+    def element_residual(self, displacement, elements, speed, constants, load_scale):
+        """Each ball's own balance, as one bearing's solve checks it (`relative_ball_residual`)."""
+        operating = self._operating(speed)
+        grooves = ball_equilibrium.inner_groove_centres(self.bearing, displacement)
+        state = ball_equilibrium.ball_state(self.bearing, operating, grooves, elements, self.model, table=constants)
+        return ball_equilibrium.relative_ball_residual(self.bearing, operating, grooves, state, self.model, load_scale)

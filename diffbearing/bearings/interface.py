@@ -1,0 +1,133 @@
+"""The interface a bearing type implements for the systems it is mounted in.
+
+A rigid shaft (`shaft_equilibrium`), a flexible one (`flexible_shaft`) and a matched set
+(`bearing_set`) see each bearing through `AbstractSupport` alone: a bearing at axial position z_k
+on the shaft, turned or not (`orientation`), its inner ring pushed by an axial offset e_k, whose
+load on its inner ring F_k(Δ_k) [N, N·m] for an inner-ring displacement Δ_k = [δx, δy, δz, θx, θy]
+[m, rad] in its own frame the type computes with its rolling elements re-equilibrated. What a
+system needs of it (docs/extending.md, "Adding a bearing type"):
+
+* its ring force F_k(Δ, ω) and stiffness dF_k/dΔ at the shaft speed ω [rad/s] (outer ring fixed);
+* a convex static energy E_k(Δ) whose gradient approximates F_k at standstill (the start of every
+  solve: the minimum of Σ_k E_k − F·u needs no guess), a characteristic load [N] and its pitch
+  radius [m] (the solve's scales), and where its Δ = 0 sits (`reference_offset`);
+* constants built once per solve and handed back to every call (`constants`: a ball bearing's
+  table of Hertz constants); supports with the same `constants_key` share them;
+* where its rolling elements leave the static split at speed (`carries_elements`), their state
+  as unknowns of the system's own Newton: a start, the elements condensed onto the ring
+  (`CondensedElements`), a step limit and tolerance, and their own residual.
+
+A system calls nothing else of a bearing, and no module outside a type's own package branches on
+the type (tests/test_architecture.py checks both).
+"""
+
+import abc
+
+import equinox as eqx
+import jax
+
+# The continuation in speed of every solve that carries rolling elements as unknowns (one bearing's
+# ring solve, a shaft's, a flexible shaft's): the speed rises in these fractions of the operating
+# speed, ω² in equal steps, each stage's Newton from the last one's solution.
+SPEED_STAGES = tuple(((1.0 + stage) / 4.0) ** 0.5 for stage in range(4))  # plain floats: no JAX at import
+RING_STEP_TOLERANCE = 1e-11  # a stage stops when every scaled ring step component is below this × (1 + |y|)
+RING_MAX_STEPS = 100  # Newton steps per stage
+
+
+class CondensedElements(eqx.Module):
+    """A bearing's rolling elements at ring displacement Δ and element state X, their equations
+    g(Δ, X) = 0 eliminated to first order: the condensed ring force F − J_FX J_XX⁻¹ g (5) [N, N·m]
+    and stiffness J_FΔ − J_FX J_XX⁻¹ J_XΔ (5, 5), and the elements' step parts J_XX⁻¹ g and
+    J_XX⁻¹ J_XΔ (shaped as X, then X × 5): with a ring step dΔ the elements' Newton step is
+    −(correction + coupling dΔ)."""
+
+    force: jax.Array
+    stiffness: jax.Array
+    correction: jax.Array
+    coupling: jax.Array
+
+
+class AbstractSupport(eqx.Module):
+    """A bearing mounted on a shaft: at `position` z [m], `orientation` +1 ("+z": its own axial
+    direction along the shaft's +z) or −1 ("−z"), its inner ring pushed by `offset` [m] along its
+    own axis against the outer ring (preload; 0: none). A bearing type subclasses it (module
+    docstring); displacements and loads are in the bearing's own frame."""
+
+    position: eqx.AbstractVar[jax.Array]
+    offset: eqx.AbstractVar[jax.Array]
+    orientation: eqx.AbstractVar[int]
+
+    @abc.abstractmethod
+    def constants(self):
+        """What a solve builds once and hands to every call below (a pytree or None)."""
+
+    def constants_key(self):
+        """Supports whose keys are equal (and not None) share one `constants()`; None: its own."""
+        return None
+
+    @abc.abstractmethod
+    def ring_force(self, displacement, speed, constants, elements=None):
+        """[Fx, Fy, Fz, Mx, My] [N, N·m] that holds the inner ring at Δ `displacement` [m, rad] at
+        shaft speed `speed` [rad/s], the rolling elements re-equilibrated (at `elements`, a solve's
+        state of them, where given and the type carries them)."""
+
+    @abc.abstractmethod
+    def ring_stiffness(self, displacement, speed, constants, elements=None):
+        """dF/dΔ (5, 5) [N/m, N/rad; N·m/m, N·m/rad] at Δ, the rolling elements re-equilibrated."""
+
+    @abc.abstractmethod
+    def energy_constants(self, constants):
+        """What `static_energy` holds fixed, evaluated once per solve."""
+
+    @abc.abstractmethod
+    def static_energy(self, displacement, energy_constants):
+        """E(Δ) [J], convex in Δ, its gradient the ring force at standstill with `energy_constants`
+        held (the start of every solve)."""
+
+    @abc.abstractmethod
+    def characteristic_load(self, constants, energy_constants):
+        """A load scale [N] that stays positive at zero applied load (a solve's residual scale)."""
+
+    @abc.abstractmethod
+    def pitch_radius(self):
+        """Half the pitch diameter [m] (a solve's moment arm)."""
+
+    def reference_offset(self):
+        """c [m]: where Δ = 0 sits along the bearing's axis when the shaft is at rest, from the
+        type's own reference (Δ_k = P_k G_k u + (e_k + c_k) ẑ); 0 unless the type says otherwise."""
+        return 0.0
+
+    def locates_axially(self) -> bool:
+        """Whether the bearing can carry an axial load (a shaft needs one that does)."""
+        return True
+
+    def carries_elements(self) -> bool:
+        """Whether a system's Newton carries the rolling elements' state as unknowns (the methods
+        below); else the system reads `ring_force` and `ring_stiffness` alone."""
+        return False
+
+    def start_elements(self, displacement, speed, constants):
+        """The elements' state to start a joint Newton from, at Δ and `speed`."""
+        raise NotImplementedError(f"{type(self).__name__} carries no element state")
+
+    def condensed(self, displacement, elements, speed, constants) -> CondensedElements:
+        """The elements at state `elements` condensed onto the ring (`CondensedElements`)."""
+        raise NotImplementedError(f"{type(self).__name__} carries no element state")
+
+    def limit_element_step(self, step):
+        """An element step shortened where the type's contact law could throw it far."""
+        raise NotImplementedError(f"{type(self).__name__} carries no element state")
+
+    def element_tolerance(self):
+        """The element step [as the state's unit] below which a stage has converged."""
+        raise NotImplementedError(f"{type(self).__name__} carries no element state")
+
+    def element_residual(self, displacement, elements, speed, constants, load_scale):
+        """The elements' largest relative force balance [-] at a solved state."""
+        raise NotImplementedError(f"{type(self).__name__} carries no element state")
+
+
+def check_orientation(orientation):
+    """ValueError unless `orientation` is +1 ("+z") or −1 ("−z")."""
+    if orientation not in (1, -1):
+        raise ValueError(f"orientation must be +1 ('+z') or -1 ('-z'), got {orientation!r}")
