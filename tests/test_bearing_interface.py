@@ -9,7 +9,9 @@ import numpy as np
 import pytest
 
 from diffbearing import BallSupport, Shaft, ShaftLoads, ShaftSections, flexible_shaft, shaft_stiffness, solve_shaft
-from diffbearing.bearings.interface import AbstractSupport
+from diffbearing.bearings.interface import AbstractSupport, ContactLoads
+from diffbearing.numerics import positive_power
+from diffbearing.ratings.reference_life import contact_reference_life
 from diffbearing.systems.flexible_shaft import flexible_shaft_stiffness, solve_flexible_shaft
 
 from .helpers import assert_jvp_matches_central_difference
@@ -48,6 +50,28 @@ class SpringSupport(AbstractSupport):
 
     def pitch_radius(self):
         return jnp.asarray(0.03)
+
+    def contacts(self, displacement, speed, constants, elements=None):
+        """Four virtual elements a quarter turn apart, each a point contact on either ring carrying
+        the radial ring force's component towards it (0 where it points away)."""
+        force = self.ring_force(displacement, speed, constants)
+        azimuth = jnp.arange(4) * 0.5 * jnp.pi
+        load = positive_power(force[0] * jnp.cos(azimuth) + force[1] * jnp.sin(azimuth), 1.0)
+        pair = jnp.stack([load, load], axis=-1)
+        return ContactLoads(azimuth, pair, pair[..., None], jnp.zeros_like(pair), jnp.zeros_like(pair),
+                            jnp.zeros_like(pair), ("inner", "outer"), "point")
+
+    def dynamic_load_rating(self):
+        return jnp.asarray(5e4)
+
+    def contact_ratings(self, rating, contacts):
+        return jnp.stack([rating, 1.2 * rating])
+
+    def envelope(self, contacts):
+        return jnp.array([0.0, 0.0, 0.5 * jnp.pi])
+
+    def frequencies(self, speed, contacts):
+        raise NotImplementedError("a spring has no rolling elements")
 
 
 SPRINGS = jnp.array([2e8, 2e8, 1e8, 5e5, 5e5])
@@ -131,3 +155,21 @@ def test_a_toy_bearing_beside_a_ball_bearing_on_a_flexible_shaft():
                      np.abs(stiffness[0, 0] - rigid_stiffness[0, 0]) / rigid_stiffness[0, 0]))
     assert gaps[1][0] < 1e-3 and gaps[1][1] < 1e-2
     assert gaps[2][0] < gaps[1][0] / 3 and gaps[2][1] < gaps[1][1] / 3
+
+
+def test_the_reference_life_reads_a_toy_bearings_contacts():
+    """ISO/TS 16281 through the interface alone: each spring's four virtual contacts from the shaft's
+    solution, their life from `contact_reference_life`, against the formula written out (point
+    contacts: inner ring's cubic mean, outer ring's 10/3 mean, raceways combined with exponent
+    10/9, L10r = damage^{−9/10})."""
+    shaft = _pair()
+    solution = solve_shaft(shaft)
+    for support, local in zip(shaft.supports, solution.bearing_displacements):
+        contacts = support.contacts(local, 0.0, None)
+        rating = support.dynamic_load_rating()
+        got = contact_reference_life(contacts, support.contact_ratings(rating, contacts))
+        force = np.asarray(support.ring_force(local, 0.0, None))
+        loads = np.maximum(force[0] * np.cos(np.arange(4) * np.pi / 2) + force[1] * np.sin(np.arange(4) * np.pi / 2),
+                           0.0)
+        damage = (np.mean(loads**3) ** (1 / 3) / 5e4) ** (10 / 3) + (np.mean(loads ** (10 / 3)) ** 0.3 / 6e4) ** (10 / 3)
+        assert float(got) == pytest.approx(damage**-0.9, rel=1e-12)

@@ -13,6 +13,10 @@ system needs of it (docs/extending.md, "Adding a bearing type"):
   radius [m] (the solve's scales), and where its Δ = 0 sits (`reference_offset`);
 * constants built once per solve and handed back to every call (`constants`: a ball bearing's
   table of Hertz constants); supports with the same `constants_key` share them;
+* its contacts at a solved state, one typed result for every type (`ContactLoads`: per rolling
+  element and contact the load, laminae, pressure, angle, approach; which raceway; point or line),
+  which the effects read (`ratings.reference_life`), its ratings' inputs (`dynamic_load_rating`,
+  `contact_ratings`), where a state stands against its envelope and its overrolling frequencies;
 * where its rolling elements leave the static split at speed (`carries_elements`), their state
   as unknowns of the system's own Newton: a start, the elements condensed onto the ring
   (`CondensedElements`), a step limit and tolerance, and their own residual.
@@ -45,6 +49,43 @@ class CondensedElements(eqx.Module):
     stiffness: jax.Array
     correction: jax.Array
     coupling: jax.Array
+
+
+CONTACT_KINDS = ("point", "line")
+
+
+class ContactLoads(eqx.Module):
+    """The contacts of a bearing's rolling elements at a solved state: Z elements, each with C
+    contacts (columns, each on one raceway: a ball bearing's inner and outer; a four-point
+    bearing's four), SI units.
+
+    `azimuth` (Z,) [rad]: each element's position; `load` (Z, C) [N]: its normal load at each
+    contact; `lamina_load` (Z, C, L) [N]: a line contact's load on each of its L laminae (a point
+    contact's: L = 1, its load); `max_pressure` (Z, C) [Pa]: the contact's (a line contact's:
+    its largest lamina's) Hertz peak pressure; `angle` (Z, C) [rad]: a point contact's angle from
+    the radial plane (None for line contacts, whose angle is the raceway's); `approach` (Z, C) [m]:
+    the contact's elastic approach (a line contact's: its largest lamina's; negative: open);
+    static: `raceways` (C,) "inner" or "outer" per column, `kind` "point" or "line" (effects
+    declare the kinds they cover)."""
+
+    azimuth: jax.Array
+    load: jax.Array
+    lamina_load: jax.Array
+    max_pressure: jax.Array
+    angle: jax.Array | None
+    approach: jax.Array
+    raceways: tuple = eqx.field(static=True)
+    kind: str = eqx.field(static=True)
+
+    def __check_init__(self):
+        if self.kind not in CONTACT_KINDS:
+            raise ValueError(f"contact kind must be one of {CONTACT_KINDS}, got {self.kind!r}")
+        if any(raceway not in ("inner", "outer") for raceway in self.raceways):
+            raise ValueError(f"raceways: each 'inner' or 'outer', got {self.raceways!r}")
+
+    def on(self, raceway: str):
+        """The column indices of the contacts on `raceway` ("inner" or "outer")."""
+        return tuple(column for column, name in enumerate(self.raceways) if name == raceway)
 
 
 class AbstractSupport(eqx.Module):
@@ -91,6 +132,32 @@ class AbstractSupport(eqx.Module):
     @abc.abstractmethod
     def pitch_radius(self):
         """Half the pitch diameter [m] (a solve's moment arm)."""
+
+    @abc.abstractmethod
+    def contacts(self, displacement, speed, constants, elements=None) -> ContactLoads:
+        """The rolling elements' contacts at Δ (`ContactLoads`), at `elements` where a solve found
+        them."""
+
+    @abc.abstractmethod
+    def dynamic_load_rating(self):
+        """C_r [N]: the bearing's basic dynamic load rating (its own where given, else ISO 281's)."""
+
+    @abc.abstractmethod
+    def contact_ratings(self, rating, contacts: ContactLoads):
+        """(C,) [N]: each contact column's ISO/TS 16281 rating per lamina, the lamina load of a
+        raceway life of 10⁶ revolutions, from the dynamic load rating `rating` [N]
+        (`ratings.reference_life`)."""
+
+    @abc.abstractmethod
+    def envelope(self, contacts: ContactLoads):
+        """(3,) where a solved state stands against the model's envelope: the largest contact
+        approach over the element's size [-], the largest loaded |contact angle| [rad] (0 for line
+        contacts) and the lowest loaded contact angle [rad] (+π/2 where no low shoulder limits it)."""
+
+    @abc.abstractmethod
+    def frequencies(self, speed, contacts: ContactLoads):
+        """The overrolling frequencies [Hz] (`overrolling.OverrollingFrequencies`) at shaft speed
+        `speed` [rad/s], outer ring fixed, at the contacts' angles."""
 
     def reference_offset(self):
         """c [m]: where Δ = 0 sits along the bearing's axis when the shaft is at rest, from the

@@ -11,10 +11,12 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
+from ... import overrolling
 from ...params import BallBearing, Operating, _as_float, groove_curvature_centre_distance
-from ..interface import AbstractSupport, CondensedElements, check_orientation
-from . import ball_equilibrium
-from .ball_equilibrium import BallModel
+from ...ratings import life
+from ..interface import AbstractSupport, CondensedElements, ContactLoads, check_orientation
+from . import ball_equilibrium, ball_validity
+from .ball_equilibrium import BallModel, BallResults
 
 
 class BallSupport(AbstractSupport):
@@ -64,6 +66,36 @@ class BallSupport(AbstractSupport):
     def pitch_radius(self):
         return 0.5 * self.bearing.pitch_diameter
 
+    def contacts(self, displacement, speed, constants, elements=None) -> ContactLoads:
+        """Each ball's inner and outer contact (`ball_equilibrium.ball_results`)."""
+        return contact_loads(ball_equilibrium.ball_results(displacement, self.bearing, self._operating(speed),
+                                                           self.model, elements, constants))
+
+    def dynamic_load_rating(self):
+        """The bearing's own C_r where given, else ISO 281's (`life.basic_dynamic_load_rating`)."""
+        if self.bearing.dynamic_load_rating is not None:
+            return self.bearing.dynamic_load_rating
+        return life.basic_dynamic_load_rating(self.bearing)
+
+    def contact_ratings(self, rating, contacts: ContactLoads):
+        """Q_ci, Q_ce [N] (ISO/TS 16281 eqs. (19)–(20), `life.raceway_ratings`)."""
+        return jnp.stack(life.raceway_ratings(self.bearing, rating))
+
+    def envelope(self, contacts: ContactLoads):
+        """`ball_validity`: the largest approach / D_w, the largest loaded |α|, and an angular-contact
+        bearing's lowest loaded α (its low shoulder lies at α < 0; +π/2 for a deep-groove one)."""
+        (inner_load, outer_load), (inner_angle, outer_angle) = contacts.load.T, contacts.angle.T
+        lowest = (jnp.asarray(0.5 * jnp.pi) if self.bearing.kind != "angular_contact_ball" else
+                  ball_validity.lowest_loaded_angle(inner_load, inner_angle, outer_load, outer_angle))
+        return jnp.stack([ball_validity.largest_approach_ratio(*contacts.approach.T, self.bearing.ball_diameter),
+                          ball_validity.largest_contact_angle(inner_angle, outer_angle, inner_load, outer_load),
+                          lowest])
+
+    def frequencies(self, speed, contacts: ContactLoads):
+        """`overrolling.frequencies_of_balls` at the balls' solved angles and inner loads."""
+        return overrolling.frequencies_of_balls(self.bearing, speed, 0.0, contacts.angle[:, 0], contacts.angle[:, 1],
+                                                contacts.load[:, 0], self.model.race_control)
+
     def reference_offset(self):
         if self.bearing.kind == "deep_groove_ball":
             return -groove_curvature_centre_distance(self.bearing) * jnp.sin(self.bearing.free_contact_angle)
@@ -94,3 +126,14 @@ class BallSupport(AbstractSupport):
         grooves = ball_equilibrium.inner_groove_centres(self.bearing, displacement)
         state = ball_equilibrium.ball_state(self.bearing, operating, grooves, elements, self.model, table=constants)
         return ball_equilibrium.relative_ball_residual(self.bearing, operating, grooves, state, self.model, load_scale)
+
+
+def contact_loads(balls: BallResults) -> ContactLoads:
+    """A ball bearing's per-ball results as its `ContactLoads`: two point contacts a ball, inner then outer."""
+    def pair(inner, outer):
+        return jnp.stack([inner, outer], axis=-1)
+
+    load = pair(balls.inner_load, balls.outer_load)
+    return ContactLoads(balls.azimuth, load, load[..., None], pair(balls.inner_max_pressure, balls.outer_max_pressure),
+                        pair(balls.inner_contact_angle, balls.outer_contact_angle),
+                        pair(balls.inner_approach, balls.outer_approach), ("inner", "outer"), "point")

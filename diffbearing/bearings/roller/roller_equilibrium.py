@@ -609,7 +609,8 @@ class RollerResults(eqx.Module):
     load Q (Z,) [N], lamina loads per unit length (Z, n) [N/m] and the largest lamina Hertz
     line pressure (Z,) [Pa]; the rib force (Z,) [N]; the roller's tilt φ (Z,) [rad] and
     displacement across its axis u (Z,) [m]; lamina centres y (n,) [m]; the centrifugal force
-    [N] (0 without that effect); the largest lamina approach [m]."""
+    [N] (0 without that effect); the largest lamina approach [m], and each roller's at the inner
+    and outer raceway (Z,) [m] (negative: open)."""
 
     azimuth: jax.Array
     inner_load: jax.Array
@@ -624,6 +625,8 @@ class RollerResults(eqx.Module):
     lamina_y: jax.Array
     centrifugal_force: jax.Array
     largest_approach: jax.Array  # the largest lamina approach at either raceway [m] (`MAX_APPROACH_FRACTION`)
+    inner_approach: jax.Array
+    outer_approach: jax.Array
 
 
 # The model's limit on a lamina's approach: 1 % of the mean roller diameter, as for the balls
@@ -650,7 +653,8 @@ def roller_results(displacement, bearing: RollerBearing, raceways: RollerRaceway
     return RollerResults(roller_azimuths(bearing), jnp.sum(inner_loads, axis=-1), jnp.sum(outer_loads, axis=-1),
                          inner_loads / setup.width, outer_loads / setup.width, jnp.max(inner_pressure, axis=-1),
                          jnp.max(outer_pressure, axis=-1), rib, states[:, 1], states[:, 0], setup.y, centrifugal,
-                         jax.lax.stop_gradient(jnp.maximum(jnp.max(inner), jnp.max(outer))))
+                         jax.lax.stop_gradient(jnp.maximum(jnp.max(inner), jnp.max(outer))), jnp.max(inner, axis=-1),
+                         jnp.max(outer, axis=-1))
 
 
 def roller_contact_loadings(displacement, roller: int, bearing: RollerBearing, raceways: RollerRaceways,

@@ -6,10 +6,12 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
+from ... import overrolling
 from ...params import _as_float, _is_concrete
-from ..interface import AbstractSupport, check_orientation
+from ...ratings import roller_life
+from ..interface import AbstractSupport, ContactLoads, check_orientation
 from . import roller_equilibrium
-from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways
+from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways, RollerResults
 from .roller_geometry import RollerBearing
 
 
@@ -57,6 +59,49 @@ class RollerSupport(AbstractSupport):
     def pitch_radius(self):
         return 0.5 * self.raceways.pitch_diameter
 
+    def contacts(self, displacement, speed, constants, elements=None) -> ContactLoads:
+        """Each roller's inner and outer line contact with its laminae (`roller_equilibrium.roller_results`)."""
+        return contact_loads(self.bearing, roller_equilibrium.roller_results(
+            displacement, self.bearing, self.raceways, self._operating(speed), self.model))
+
+    def _mean_diameter(self):
+        return 0.5 * (self.bearing.small_diameter + self.bearing.large_diameter)
+
+    def dynamic_load_rating(self):
+        """ISO 281's C_r (`roller_life.roller_dynamic_load_rating`, the mean roller diameter, the cup angle)."""
+        return roller_life.roller_dynamic_load_rating(self.bearing.roller_count, self._mean_diameter(),
+                                                      self.bearing.length, self.raceways.cup_angle,
+                                                      self.raceways.pitch_diameter)
+
+    def contact_ratings(self, rating, contacts: ContactLoads):
+        """q_ci, q_ce [N] per lamina (ISO/TS 16281 eqs. (47)–(49), (56)–(57), `roller_life.lamina_ratings`)."""
+        return jnp.stack(roller_life.lamina_ratings(rating, self.bearing.roller_count, self._mean_diameter(),
+                                                    self.raceways.cup_angle, self.raceways.pitch_diameter,
+                                                    contacts.lamina_load.shape[-1]))
+
+    def envelope(self, contacts: ContactLoads):
+        """The largest lamina approach / mean roller diameter (limit
+        `roller_equilibrium.MAX_APPROACH_FRACTION`, as the balls'), 0 and π/2 (no contact angle of
+        its own, no low shoulder)."""
+        return jnp.stack([jnp.max(contacts.approach) / self._mean_diameter(), 0.0, 0.5 * jnp.pi])
+
+    def frequencies(self, speed, contacts: ContactLoads):
+        """`overrolling.frequencies_of_rollers` (the raceways' cone and cup angles)."""
+        return overrolling.frequencies_of_rollers(self.bearing, self.raceways, speed, 0.0)
+
     def locates_axially(self) -> bool:
         """A cylindrical roller bearing carries no axial load."""
         return self.bearing.kind != "cylindrical_roller"
+
+
+def contact_loads(bearing: RollerBearing, rollers: RollerResults) -> ContactLoads:
+    """A roller bearing's per-roller results as its `ContactLoads`: two line contacts a roller,
+    inner then outer, each lamina's load [N] its load per length times the lamina width l/n."""
+    def pair(inner, outer):
+        return jnp.stack([inner, outer], axis=1)
+
+    width = bearing.length / rollers.inner_lamina_load.shape[-1]
+    return ContactLoads(rollers.azimuth, pair(rollers.inner_load, rollers.outer_load),
+                        pair(rollers.inner_lamina_load * width, rollers.outer_lamina_load * width),
+                        pair(rollers.inner_max_pressure, rollers.outer_max_pressure), None,
+                        pair(rollers.inner_approach, rollers.outer_approach), ("inner", "outer"), "line")

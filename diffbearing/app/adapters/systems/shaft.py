@@ -14,18 +14,16 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from .... import overrolling
-from ....bearings.ball import ball_validity
 from ....bearings.ball.ball_equilibrium import ball_results
-from ....bearings.roller.roller_equilibrium import RollerOperating, roller_results
+from ....bearings.ball.ball_support import BallSupport
 from ....bearings.roller.roller_geometry import ROLLER_KINDS
+from ....bearings.roller.roller_support import RollerSupport
 from ....params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
 from ....ratings import life
+from ....ratings.reference_life import contact_reference_life
 from ....systems.flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, shaft_mesh, solve_flexible_shaft
 from ....systems.operating_clearance import SEAT_MATERIALS
 from ....systems.shaft_beam import BeamMesh, ShaftSections
-from ....bearings.ball.ball_support import BallSupport
-from ....bearings.roller.roller_support import RollerSupport
 from ....systems.shaft_equilibrium import (
     RESIDUAL_TOLERANCE,
     Shaft,
@@ -43,17 +41,15 @@ from ..bearings.ball import (
     ISO76_BALL_PRESSURE_LIMIT,
     ball_model,
     catalogue_bearing,
-    low_shoulder_angle,
     scene_shoulders,
     shoulder_checks,
     shoulder_outputs,
     validity_errors,
 )
-from ..effects.life import ball_bearing_life, roller_bearing_life
-from ..materials import material
 from ..bearings.roller import scene_roller_bearing
 from ..bearings.roller_bearing import ADAPTER as ROLLER_BEARING_ADAPTER
-from ..bearings.roller_bearing import approach_ratio, roller_model, scene_raceways
+from ..bearings.roller_bearing import roller_model, scene_raceways
+from ..materials import material
 
 # the [fidelity] keys of the ball and roller bearing models, read by the shaft's block for every bearing
 FIDELITY = {key: dataclasses.replace(adapter.keys[key], read_by=("shaft",))
@@ -208,50 +204,13 @@ def _supports(layout: ShaftLayout, settings: dict):
                                                                    layout.orientations))
 
 
-def _results(support, local, speed, ball_centres=None, table=None):
-    """The bearing's per-element results at its displacement (a ball bearing's balls at the solve's
-    `ball_centres` where it carried them, with the solve's table of Hertz constants): BallResults or
-    RollerResults."""
-    if isinstance(support, BallSupport):
-        return ball_results(local, support.bearing, Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)), support.model,
-                            ball_centres, table)
-    return roller_results(local, support.bearing, support.raceways,
-                          RollerOperating(jnp.zeros(3), jnp.zeros(2), inner_speed=speed), support.model)
-
-
-def _validity(support, elements):
-    """(largest approach / D_w, largest |contact angle|, lowest loaded angle of an angular-contact
-    bearing) of a ball bearing (`ball_validity`, `low_shoulder_angle`), from its results; for a roller
-    bearing (largest lamina approach / mean roller diameter, as its own scene's `validity.approach_ratio`
-    with the same 1 % limit, `roller_equilibrium.MAX_APPROACH_FRACTION`; 0; π/2)."""
-    if isinstance(support, BallSupport):
-        return jax.lax.stop_gradient(jnp.stack([
-            ball_validity.largest_approach_ratio(elements.inner_approach, elements.outer_approach,
-                                                 support.bearing.ball_diameter),
-            ball_validity.largest_contact_angle(elements.inner_contact_angle, elements.outer_contact_angle,
-                                                elements.inner_load, elements.outer_load),
-            low_shoulder_angle(support.bearing, elements)]))
-    return jax.lax.stop_gradient(jnp.stack([approach_ratio(support.bearing, elements), 0.0, 0.5 * jnp.pi]))
-
-
-def _life(support, elements):
-    if isinstance(support, BallSupport):
-        return ball_bearing_life(support.bearing, elements.inner_load, elements.outer_load)
-    return roller_bearing_life(support.bearing, support.raceways, elements.inner_lamina_load,
-                               elements.outer_lamina_load)[2]
-
-
-def _frequencies(support, elements, speed):
-    """One bearing's `overrolling.OverrollingFrequencies` [Hz], outer ring standing still."""
-    if isinstance(support, BallSupport):
-        return overrolling.frequencies_of_balls(support.bearing, speed, 0.0, elements.inner_contact_angle,
-                                                elements.outer_contact_angle, elements.inner_load,
-                                                support.model.race_control)
-    return overrolling.frequencies_of_rollers(support.bearing, support.raceways, speed, 0.0)
+def _life(support, contacts):
+    """ISO/TS 16281 L10r [10⁶ rev] of one bearing from its contacts (`ratings.reference_life`)."""
+    return contact_reference_life(contacts, support.contact_ratings(support.dynamic_load_rating(), contacts))
 
 
 FREQUENCIES = ("cage", "ball_pass_outer", "ball_pass_inner", "ball_spin")
-# per-element fields of BallResults and RollerResults both, and the balls' own
+# per-element outputs: from every bearing's contacts, and the contact angles of point contacts
 ELEMENT_FIELDS = ("azimuth", "inner_load", "outer_load", "inner_max_pressure", "outer_max_pressure")
 BALL_ELEMENT_FIELDS = ("inner_contact_angle", "outer_contact_angle")
 
@@ -263,25 +222,40 @@ def _padded(own, count: int):
     return jnp.pad(own, (0, count - own.shape[0]), constant_values=jnp.nan)
 
 
+def _element_values(contacts) -> dict:
+    """One bearing's per-element outputs from its contacts (one contact column per raceway)."""
+    inner, outer = contacts.on("inner")[0], contacts.on("outer")[0]
+    angles = (None, None) if contacts.angle is None else (contacts.angle[:, inner], contacts.angle[:, outer])
+    return {"azimuth": contacts.azimuth, "inner_load": contacts.load[:, inner], "outer_load": contacts.load[:, outer],
+            "inner_max_pressure": contacts.max_pressure[:, inner], "outer_max_pressure": contacts.max_pressure[:, outer],
+            "inner_contact_angle": angles[0], "outer_contact_angle": angles[1]}
+
+
 def _elements(per_bearing) -> dict:
     """`bearings.elements.*`: each bearing's per-element results (bearings × the most elements), NaN
-    beyond a bearing's own element count and for the balls' contact angles of a roller bearing."""
-    count = max(elements.azimuth.shape[0] for elements in per_bearing)
-    return {f"bearings.elements.{field}": jnp.stack([_padded(getattr(elements, field, None), count)
-                                                     for elements in per_bearing])
+    beyond a bearing's own element count and for the contact angles of a line-contact bearing."""
+    values = [_element_values(contacts) for contacts in per_bearing]
+    count = max(contacts.azimuth.shape[0] for contacts in per_bearing)
+    return {f"bearings.elements.{field}": jnp.stack([_padded(own[field], count) for own in values])
             for field in ELEMENT_FIELDS + BALL_ELEMENT_FIELDS}
 
 
-def _shoulders(layout: ShaftLayout, shaft: Shaft, per_bearing) -> dict:
+def _shoulders(layout: ShaftLayout, shaft: Shaft, solution, per_bearing) -> dict:
     """Where some ball bearing's entry gives its shoulder diameters: each bearing's largest angle
     past a shoulder edge (`bearings.shoulder_overrun`, −π/2 for one without) and each element's
-    share of its load beyond the edge (`bearings.elements.*_shoulder_share`, NaN without)."""
+    share of its load beyond the edge (`bearings.elements.*_shoulder_share`, NaN without); only a
+    ball bearing's entry has shoulders (`scene_shoulders`), whose balls are evaluated here."""
     if all(depths is None for depths in layout.shoulders):
         return {}
-    count = max(elements.azimuth.shape[0] for elements in per_bearing)
+    count = max(contacts.azimuth.shape[0] for contacts in per_bearing)
     overrun, shares = [], {"inner": [], "outer": []}
-    for support, elements, depths in zip(shaft.supports, per_bearing, layout.shoulders):
-        found = {} if depths is None else shoulder_outputs(support.bearing, elements, depths)
+    for support, local, state, own, depths in zip(shaft.supports, solution.bearing_displacements, solution.elements,
+                                                  solution.constants, layout.shoulders):
+        found = {}
+        if depths is not None:
+            balls = ball_results(local, support.bearing, Operating(layout.speed, 0.0, jnp.zeros(3), jnp.zeros(2)),
+                                 support.model, state, own)
+            found = shoulder_outputs(support.bearing, balls, depths)
         overrun.append(found.get("validity.shoulder_overrun", jnp.asarray(-0.5 * jnp.pi)))
         for side in shares:
             shares[side].append(_padded(found.get(f"balls.{side}.shoulder_share"), count))
@@ -317,9 +291,8 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     shaft = Shaft(_supports(layout, settings), layout.loads, layout.speed)
     solved = _solve(layout, shaft, settings["effects"].get("stiffness", False) is True)
     solution = solved.pop("solution")
-    per_bearing = [_results(support, local, layout.speed, balls, table) for support, local, balls, table
-                   in zip(shaft.supports, solution.bearing_displacements, solution.elements,
-                          solution.constants)]
+    per_bearing = [support.contacts(local, layout.speed, own, state) for support, local, state, own
+                   in zip(shaft.supports, solution.bearing_displacements, solution.elements, solution.constants)]
     out = solved | {
         "shaft.converged": solution.converged,
         "shaft.residual": solution.residual,
@@ -328,19 +301,18 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
         # the load each bearing takes from the shaft, in the shaft's frame at the bearing
         "bearings.reaction": jnp.stack([turned(support) * force
                                         for support, force in zip(shaft.supports, solution.bearing_forces)]),
-        "bearings.max_element_load": jnp.stack([jnp.max(elements.inner_load) for elements in per_bearing]),
-        "bearings.max_pressure": jnp.stack([jnp.maximum(jnp.max(elements.inner_max_pressure),
-                                                        jnp.max(elements.outer_max_pressure))
-                                            for elements in per_bearing]),
-        "bearings.validity": jnp.stack([_validity(support, elements)
-                                        for support, elements in zip(shaft.supports, per_bearing)]),
-    } | _elements(per_bearing) | _shoulders(layout, shaft, per_bearing)
+        "bearings.max_element_load": jnp.stack([jnp.max(contacts.load[:, contacts.on("inner")])
+                                                for contacts in per_bearing]),
+        "bearings.max_pressure": jnp.stack([jnp.max(contacts.max_pressure) for contacts in per_bearing]),
+        "bearings.validity": jax.lax.stop_gradient(jnp.stack([support.envelope(contacts) for support, contacts
+                                                              in zip(shaft.supports, per_bearing)])),
+    } | _elements(per_bearing) | _shoulders(layout, shaft, solution, per_bearing)
     if settings["effects"].get("life", False) is True:
-        lives = [_life(support, elements) for support, elements in zip(shaft.supports, per_bearing)]
+        lives = [_life(support, contacts) for support, contacts in zip(shaft.supports, per_bearing)]
         out["bearings.L10r"] = jnp.stack(lives)
         out["shaft.L10r"] = life.system_life(jnp.stack(lives))
     if settings["effects"].get("frequencies", False) is True:
-        found = [_frequencies(support, elements, layout.speed) for support, elements in zip(shaft.supports, per_bearing)]
+        found = [support.frequencies(layout.speed, contacts) for support, contacts in zip(shaft.supports, per_bearing)]
         out |= {f"bearings.frequencies.{field}": jnp.stack([getattr(f, field) for f in found]) for field in FREQUENCIES}
     return out
 
