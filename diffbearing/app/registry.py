@@ -143,6 +143,22 @@ def in_layout(scene_keys, present) -> bool:
 
 
 @dataclasses.dataclass(frozen=True)
+class Mounting:
+    """How a bearing type's `[[bearings]]` entries go on a scene's shaft (the type's adapter
+    declares it): `parameters(reads)` → its parameter pytree from the entry's keys (a `Reads`);
+    `support(parameters, position, offset, orientation, settings)` → its `AbstractSupport`;
+    `describe(parameters)` → its line in the report; where its entries may give shoulder
+    diameters, `shoulders(reads, parameters)` → their depths (or None) and
+    `shoulder_outputs(support, displacement, speed, elements, constants, depths)` → the outputs."""
+
+    parameters: Callable
+    support: Callable
+    describe: Callable
+    shoulders: Callable | None = None
+    shoulder_outputs: Callable | None = None
+
+
+@dataclasses.dataclass(frozen=True)
 class Adapter:
     name: str
     bearing_types: tuple[str, ...]
@@ -153,6 +169,7 @@ class Adapter:
     header: Callable | None = None  # (result) → lines at the top of the report
     report: Callable | None = None  # (result) → lines after the output tables
     sweep_columns: Callable | None = None  # ({key: (N, ...) values}) → [(header, cells)]
+    mounting: Mounting | None = None  # a bearing type's: how its entries go on a shaft
 
 
 ADAPTERS: dict[str, Adapter] = {}
@@ -173,6 +190,12 @@ def register(adapter: Adapter) -> Adapter:
             raise ValueError(f"scene key {dotted!r} is declared twice with different meanings")
     ADAPTERS[adapter.name] = adapter
     return adapter
+
+
+def mountings() -> dict[str, Mounting]:
+    """{bearing type: its `Mounting`} of the types a shaft can carry, from the registered adapters."""
+    return {kind: adapter.mounting for adapter in ADAPTERS.values() if adapter.mounting is not None
+            for kind in adapter.bearing_types}
 
 
 def unregister(name: str) -> None:

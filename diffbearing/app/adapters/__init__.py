@@ -24,11 +24,13 @@ torque), touching its physics module, its adapter and nothing else (plus tests a
 4. Regenerate the key and output reference: `python -m diffbearing.app.reference > docs/reference.md`.
 """
 
-# each import registers its adapter; the statements keep one order across the sub-packages
+# each import registers its adapter, in this order (an adapter that imports another registers
+# after it: the order here is also the order those imports give)
 from . import materials, lubricant  # noqa: F401
 from .systems import mounting  # noqa: F401
 from .bearings import ball  # noqa: F401
-from .systems import bearing_set, shaft  # noqa: F401
-from .effects import life  # noqa: F401
+from .systems import bearing_set  # noqa: F401
 from .bearings import roller, roller_bearing  # noqa: F401
+from .effects import life  # noqa: F401
+from .systems import shaft  # noqa: F401
 from .effects import film, cage, frequencies, safety, friction  # noqa: F401

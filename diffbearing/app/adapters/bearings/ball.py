@@ -6,6 +6,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ....bearings.ball import ball_equilibrium, ball_validity, groove_chamfer
+from ....bearings.ball.ball_support import BallSupport
 from ....bearings.ball.kinematics import RACE_CONTROLS
 from ....bearings.ball.raceway_contact import ContactConstantTable, ball_raceway_modulus, both_curvatures, diameter_ratio
 from ....contact import hertz
@@ -18,7 +19,7 @@ from ....params import (
     with_radial_clearance,
 )
 from ...formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
-from ...registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
+from ...registry import Adapter, Block, InputBuilder, Key, Mounting, Output, all_keys, quantity, register
 from ..materials import material
 from ..systems.mounting import operating_clearance
 
@@ -624,6 +625,24 @@ def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
     return columns
 
 
+def _mounted_shoulder_outputs(support, displacement, speed, elements, constants, depths) -> dict:
+    """`shoulder_outputs` of a ball bearing on a shaft, its balls at the shaft's solution."""
+    balls = ball_equilibrium.ball_results(displacement, support.bearing,
+                                          Operating(speed, 0.0, jnp.zeros(3), jnp.zeros(2)), support.model, elements,
+                                          constants)
+    return shoulder_outputs(support.bearing, balls, depths)
+
+
+MOUNTING = Mounting(
+    parameters=lambda reads: catalogue_bearing(reads, material(reads)),
+    support=lambda bearing, position, offset, orientation, settings: BallSupport(
+        bearing, position, offset, model=ball_model(settings), orientation=orientation),
+    describe=lambda bearing: (f"{bearing.kind}, {bearing.ball_count} balls, Dw = {float(bearing.ball_diameter) * 1e3:.4f} "
+                              f"mm, α0 = {np.degrees(float(bearing.free_contact_angle)):.2f}°"),
+    shoulders=lambda reads, bearing: scene_shoulders(reads, bearing),
+    shoulder_outputs=_mounted_shoulder_outputs,
+)
+
 ADAPTER = register(Adapter(
     name="ball",
     bearing_types=BALL_BEARING_KINDS,
@@ -676,4 +695,5 @@ ADAPTER = register(Adapter(
     header=_header,
     report=_report,
     sweep_columns=_sweep_columns,
+    mounting=MOUNTING,
 ))

@@ -32,12 +32,24 @@ from ....bearings.roller.roller_equilibrium import (
     tapered_axial_load_needed,
 )
 from ....bearings.roller.roller_geometry import ROLLER_KINDS
+from ....bearings.roller.roller_support import RollerSupport
 from ....params import check_axial_force_free, check_radial_force_free, check_range
 from ...formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
-from ...registry import Adapter, Block, InputBuilder, Key, Output, all_keys, convergence_checks, quantity, register
+from ...registry import (
+    Adapter,
+    Block,
+    InputBuilder,
+    Key,
+    Mounting,
+    Output,
+    all_keys,
+    convergence_checks,
+    quantity,
+    register,
+)
 from .ball import AXIAL_DISPLACEMENT_KEY, SPEED_FACTOR_WARNING, check_speed_factor, speed_factor, stiffness_against_sweep
 from ..systems.mounting import operating_clearance
-from .roller import contact_settings, profile_line
+from .roller import contact_settings, profile_line, scene_roller_bearing
 
 WHOLE_BEARING = ("operating.force",)  # the scene key of this layout (registry: a whole roller bearing)
 INFLUENCE_ROLLERS = ("most_loaded", "all")
@@ -607,6 +619,26 @@ def _sweep_columns(values: dict) -> list[tuple[str, list[str]]]:
 
 _GRID_READERS = (INFLUENCE_BLOCK,)
 
+
+def _mounted_parameters(reads):
+    """A [[bearings]] entry's roller bearing and raceways (no mounting of its own: the shaft's)."""
+    roller = scene_roller_bearing(reads, {})["bearing"]
+    return roller, scene_raceways(reads, {"bearing": roller, "mounting": None})["raceways"]
+
+
+def _describe(parameters) -> str:
+    roller, raceways = parameters
+    return (f"{roller.kind}, {roller.roller_count} rollers of {float(roller.large_diameter) * 1e3:.4g} × "
+            f"{float(roller.length) * 1e3:.4g} mm, dm = {float(raceways.pitch_diameter) * 1e3:.4g} mm")
+
+
+MOUNTING = Mounting(
+    parameters=_mounted_parameters,
+    support=lambda parameters, position, offset, orientation, settings: RollerSupport(
+        *parameters, position, offset, model=roller_model(settings), orientation=orientation),
+    describe=_describe,
+)
+
 ADAPTER = register(Adapter(
     name="roller_bearing",
     bearing_types=ROLLER_KINDS,
@@ -646,4 +678,5 @@ ADAPTER = register(Adapter(
     header=_header,
     report=_report,
     sweep_columns=_sweep_columns,
+    mounting=MOUNTING,
 ))

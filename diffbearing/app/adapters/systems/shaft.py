@@ -14,11 +14,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ....bearings.ball.ball_equilibrium import ball_results
-from ....bearings.ball.ball_support import BallSupport
-from ....bearings.roller.roller_geometry import ROLLER_KINDS
-from ....bearings.roller.roller_support import RollerSupport
-from ....params import BALL_BEARING_KINDS, BallBearing, Operating, _as_float
+from ....params import _as_float
 from ....ratings import life
 from ....ratings.reference_life import contact_reference_life
 from ....systems.flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, shaft_mesh, solve_flexible_shaft
@@ -34,22 +30,15 @@ from ....systems.shaft_equilibrium import (
     turned,
 )
 from ...formatting import format_number, stiffness_lines
-from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, quantity, register
+from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, mountings, quantity, register
 from ...units import to_si
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import (
     ISO76_BALL_PRESSURE_LIMIT,
-    ball_model,
-    catalogue_bearing,
-    scene_shoulders,
     shoulder_checks,
-    shoulder_outputs,
     validity_errors,
 )
-from ..bearings.roller import scene_roller_bearing
 from ..bearings.roller_bearing import ADAPTER as ROLLER_BEARING_ADAPTER
-from ..bearings.roller_bearing import roller_model, scene_raceways
-from ..materials import material
 
 # the [fidelity] keys of the ball and roller bearing models, read by the shaft's block for every bearing
 FIDELITY = {key: dataclasses.replace(adapter.keys[key], read_by=("shaft",))
@@ -82,8 +71,8 @@ def _bearing_entry(index: int, table: dict, convert) -> dict:
                 entry[dotted] = convert(dotted, item)
             except ValueError as error:
                 raise ValueError(f"{where}: {error}") from None
-    if entry.get("bearing.type") not in BALL_BEARING_KINDS + ROLLER_KINDS:
-        raise ValueError(f"{where}.type: one of {BALL_BEARING_KINDS + ROLLER_KINDS}, got {entry.get('bearing.type')!r}")
+    if entry.get("bearing.type") not in mountings():
+        raise ValueError(f"{where}.type: one of {tuple(mountings())}, got {entry.get('bearing.type')!r}")
     return entry
 
 
@@ -117,8 +106,9 @@ def _section_entry(index: int, table: dict, convert) -> dict:
 
 
 class ShaftLayout(eqx.Module):
-    """The scene's shaft: its bearings (a BallBearing, or a (RollerBearing, RollerRaceways) pair,
-    each), their positions and offsets [m] and orientations (±1), the loads, the shaft speed
+    """The scene's shaft: its bearings (each its type's parameters, `Mounting.parameters`: a
+    BallBearing, or a (RollerBearing, RollerRaceways) pair) and their types (`bearing.type`), their
+    positions and offsets [m] and orientations (±1), the loads, the shaft speed
     [rad/s], the reference point of the displacement and stiffness [m], each bearing's bore and
     outer diameter [m] (None where its entry gives none; read by the ratings that need them), each
     ball bearing's shoulder depths [h_i, h_o] [m] (None where its entry gives no shoulder diameters,
@@ -135,6 +125,7 @@ class ShaftLayout(eqx.Module):
     shoulders: tuple = ()
     sections: ShaftSections | None = None
     mesh: BeamMesh | None = eqx.field(static=True, default=None)
+    kinds: tuple = eqx.field(static=True, default=())
 
 
 def _sections(v, positions, loads) -> tuple:
@@ -170,16 +161,14 @@ def _layout(v, built) -> dict:
     for index, entry in enumerate(v["bearings"]):
         reads = Reads({**shared, **entry})
         envelopes.append((reads.get("bearing.bore"), reads.get("bearing.outer_diameter")))
+        mounting = mountings()[entry["bearing.type"]]
+        bearings.append(mounting.parameters(reads))
         shoulders.append(None)
-        if entry["bearing.type"] in BALL_BEARING_KINDS:
-            bearings.append(catalogue_bearing(reads, material(reads)))
+        if mounting.shoulders is not None:
             try:
-                shoulders[-1] = scene_shoulders(reads, bearings[-1])
+                shoulders[-1] = mounting.shoulders(reads, bearings[-1])
             except ValueError as error:
                 raise ValueError(f"bearings[{index}]: {str(error).replace('bearing.', '')}") from None
-        else:
-            roller = scene_roller_bearing(reads, {})["bearing"]
-            bearings.append((roller, scene_raceways(reads, {"bearing": roller, "mounting": None})["raceways"]))
         unread = sorted(set(entry) - reads.asked - set(PLACEMENT))
         if unread:
             raise ValueError(f"bearings[{index}]: key {unread[0].removeprefix('bearing.')!r} is not read by a "
@@ -193,15 +182,15 @@ def _layout(v, built) -> dict:
         ShaftLoads(np.array([load["position"] for load in loads]), np.array([load["force"] for load in loads]),
                    np.array([load["moment"] for load in loads])),
         v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
-        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), tuple(shoulders), sections, mesh)}
+        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), tuple(shoulders), sections, mesh,
+        tuple(entry["bearing.type"] for entry in v["bearings"]))}
 
 
 def _supports(layout: ShaftLayout, settings: dict):
-    return tuple(BallSupport(bearing, position, offset, model=ball_model(settings), orientation=orientation)
-                 if isinstance(bearing, BallBearing) else
-                 RollerSupport(*bearing, position, offset, model=roller_model(settings), orientation=orientation)
-                 for bearing, position, offset, orientation in zip(layout.bearings, layout.positions, layout.offsets,
-                                                                   layout.orientations))
+    """Each bearing as its type mounts it (`Mounting.support`)."""
+    return tuple(mountings()[kind].support(bearing, position, offset, orientation, settings)
+                 for kind, bearing, position, offset, orientation in zip(layout.kinds, layout.bearings, layout.positions,
+                                                                         layout.offsets, layout.orientations))
 
 
 def _life(support, contacts):
@@ -243,19 +232,16 @@ def _elements(per_bearing) -> dict:
 def _shoulders(layout: ShaftLayout, shaft: Shaft, solution, per_bearing) -> dict:
     """Where some ball bearing's entry gives its shoulder diameters: each bearing's largest angle
     past a shoulder edge (`bearings.shoulder_overrun`, −π/2 for one without) and each element's
-    share of its load beyond the edge (`bearings.elements.*_shoulder_share`, NaN without); only a
-    ball bearing's entry has shoulders (`scene_shoulders`), whose balls are evaluated here."""
+    share of its load beyond the edge (`bearings.elements.*_shoulder_share`, NaN without), from
+    the type's `Mounting.shoulder_outputs`."""
     if all(depths is None for depths in layout.shoulders):
         return {}
     count = max(contacts.azimuth.shape[0] for contacts in per_bearing)
     overrun, shares = [], {"inner": [], "outer": []}
-    for support, local, state, own, depths in zip(shaft.supports, solution.bearing_displacements, solution.elements,
-                                                  solution.constants, layout.shoulders):
-        found = {}
-        if depths is not None:
-            balls = ball_results(local, support.bearing, Operating(layout.speed, 0.0, jnp.zeros(3), jnp.zeros(2)),
-                                 support.model, state, own)
-            found = shoulder_outputs(support.bearing, balls, depths)
+    for kind, support, local, state, own, depths in zip(layout.kinds, shaft.supports, solution.bearing_displacements,
+                                                        solution.elements, solution.constants, layout.shoulders):
+        found = ({} if depths is None else
+                 mountings()[kind].shoulder_outputs(support, local, layout.speed, state, own, depths))
         overrun.append(found.get("validity.shoulder_overrun", jnp.asarray(-0.5 * jnp.pi)))
         for side in shares:
             shares[side].append(_padded(found.get(f"balls.{side}.shoulder_share"), count))
@@ -458,18 +444,10 @@ def _header(result) -> list[str]:
                 f"{layout.mesh.node_count} nodes")
     lines = [scene.title, f"scene: {scene.source}", "",
              f"Shaft      {kind}, {len(layout.bearings)} bearings, {float(layout.speed) * 30 / np.pi:.1f} r/min"]
-    for number, (bearing, z, orientation) in enumerate(zip(layout.bearings, np.asarray(layout.positions),
-                                                          layout.orientations)):
+    for number, (kind, bearing, z, orientation) in enumerate(zip(layout.kinds, layout.bearings,
+                                                                np.asarray(layout.positions), layout.orientations)):
         where = f"  bearing {number}: at z = {z * 1e3:.2f} mm ({'+z' if orientation > 0 else '−z'}), "
-        if isinstance(bearing, BallBearing):
-            lines.append(where + f"{bearing.kind}, {bearing.ball_count} balls, Dw = "
-                                 f"{float(bearing.ball_diameter) * 1e3:.4f} mm, α0 = "
-                                 f"{np.degrees(float(bearing.free_contact_angle)):.2f}°")
-        else:
-            roller, raceways = bearing
-            lines.append(where + f"{roller.kind}, {roller.roller_count} rollers of "
-                                 f"{float(roller.large_diameter) * 1e3:.4g} × {float(roller.length) * 1e3:.4g} mm, "
-                                 f"dm = {float(raceways.pitch_diameter) * 1e3:.4g} mm")
+        lines.append(where + mountings()[kind].describe(bearing))
     loads = layout.loads
     for number, (z, force, moment) in enumerate(zip(np.asarray(loads.positions), np.asarray(loads.forces),
                                                     np.asarray(loads.moments))):
