@@ -19,6 +19,7 @@ from .bearings.ball.ball_equilibrium import (
     stiffness_matrix as stiffness_matrix,
 )
 from .bearings.ball.ball_support import BallSupport as BallSupport
+from .bearings.ball.double_row import DoubleRowSupport as DoubleRowSupport
 from .bearings.ball.groove_chamfer import chamfer_height as chamfer_height, limit_point_angle as limit_point_angle
 from .bearings.ball.raceway_contact import (
     contact_constants as contact_constants,

@@ -22,13 +22,17 @@ system needs of it (docs/extending.md, "Adding a bearing type"):
   (`CondensedElements`), a step limit and tolerance, and their own residual.
 
 A system calls nothing else of a bearing, and no module outside a type's own package branches on
-the type (tests/test_architecture.py checks both).
+the type (tests/test_architecture.py checks both). The frames a mounted bearing sits in (a shaft's
+bearings, a double-row bearing's rows): `transfer` G(z) moves a displacement from z = 0 to the
+point at z, `turned` P turns a bearing mounted "−z" (docs/theory.md, §Shaft on several bearings).
 """
 
 import abc
 
 import equinox as eqx
 import jax
+import jax.numpy as jnp
+import numpy as np
 
 # The continuation in speed of every solve that carries rolling elements as unknowns (one bearing's
 # ring solve, a shaft's, a flexible shaft's): the speed rises in these fractions of the operating
@@ -36,6 +40,7 @@ import jax
 SPEED_STAGES = tuple(((1.0 + stage) / 4.0) ** 0.5 for stage in range(4))  # plain floats: no JAX at import
 RING_STEP_TOLERANCE = 1e-11  # a stage stops when every scaled ring step component is below this × (1 + |y|)
 RING_MAX_STEPS = 100  # Newton steps per stage
+TURNED = np.array([1.0, -1.0, -1.0, 1.0, -1.0])  # P: a bearing turned by π about x
 
 
 class CondensedElements(eqx.Module):
@@ -192,6 +197,18 @@ class AbstractSupport(eqx.Module):
     def element_residual(self, displacement, elements, speed, constants, load_scale):
         """The elements' largest relative force balance [-] at a solved state."""
         raise NotImplementedError(f"{type(self).__name__} carries no element state")
+
+
+def transfer(position):
+    """G(z) (5, 5): the displacement [δx, δy, δz, θx, θy] of the shaft point at z from that at 0."""
+    matrix = jnp.eye(5)
+    return matrix.at[0, 4].set(position).at[1, 3].set(-position)
+
+
+def turned(support):
+    """P_k as its diagonal: TURNED for a bearing mounted "−z", else ones (it turns the bearing's
+    own frame into the shaft's and back)."""
+    return TURNED if support.orientation < 0 else np.ones(5)
 
 
 def check_orientation(orientation):

@@ -41,7 +41,14 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ..bearings.interface import RING_MAX_STEPS, RING_STEP_TOLERANCE, SPEED_STAGES, AbstractSupport
+from ..bearings.interface import (
+    RING_MAX_STEPS,
+    RING_STEP_TOLERANCE,
+    SPEED_STAGES,
+    AbstractSupport,
+    transfer,
+    turned,
+)
 from ..newton import guarded_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from ..numerics import require_float64, safe_norm, without_gradient
 from ..params import _as_float, check_range
@@ -50,7 +57,6 @@ DISPLACEMENT_SCALE = 1e-5  # m: unit of the scaled shaft unknowns (10 µm, 10 µ
 RESIDUAL_TOLERANCE = 1e-9  # converged when the scaled shaft residual is below
 MAX_STEPS = 60
 STATIC_GRADIENT_TOLERANCE = 1e-8
-TURNED = np.array([1.0, -1.0, -1.0, 1.0, -1.0])  # P: a bearing turned by π about x
 
 
 class ShaftLoads(eqx.Module):
@@ -88,18 +94,6 @@ class Shaft(eqx.Module):
             raise ValueError("bearings: no bearing locates the shaft axially (cylindrical roller bearings carry no "
                              "axial load); add a ball or tapered roller bearing")
         check_range("shaft.speed", self.speed, unit=" rad/s")
-
-
-def transfer(position):
-    """G(z) (5, 5): the displacement [δx, δy, δz, θx, θy] of the shaft point at z from that at 0."""
-    matrix = jnp.eye(5)
-    return matrix.at[0, 4].set(position).at[1, 3].set(-position)
-
-
-def turned(support):
-    """P_k as its diagonal: TURNED for a bearing mounted "−z", else ones (it turns the bearing's
-    own frame into the shaft's and back)."""
-    return TURNED if support.orientation < 0 else np.ones(5)
 
 
 def local_displacement(point_displacement, support):

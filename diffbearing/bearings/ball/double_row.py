@@ -1,0 +1,172 @@
+"""A double-row angular-contact ball bearing, O arrangement: two rows of balls between one solid
+inner ring and one solid outer ring, as `AbstractSupport`.
+
+Row r (r = 1, 2) is the single-row ball model (`ball_equilibrium`, one row's geometry `bearing`)
+with its centre at z_r = ∓a/2 from the bearing's centre (a the row spacing) and its lines of
+contact diverging away from the bearing (back to back: row 1 faces +z, row 2 is turned, −z). The
+rigid inner ring's displacement Δ about the bearing's centre moves row r's inner ring by
+
+    Δ_r = P_r G(z_r) Δ + e ẑ,        F(Δ) = Σ_r G(z_r)ᵀ P_r F_row(Δ_r)
+
+(G, P as for a shaft's bearings, bearings/interface.py), with e = −s_a/2 from the bearing's axial
+clearance s_a [m] (each row backed off by half; negative: preloaded): the bearing is the
+back-to-back pair of its rows with the offset e and no spacer, its rows sharing one table of Hertz
+constants. With speed effects both rows' balls are carried as unknowns, stacked (2, Z, 2) [m], and
+condensed onto the ring row by row (M_r = P_r G(z_r) = dΔ_r/dΔ):
+S = Σ_r M_rᵀ S_r M_r, the balls' coupling J_XX⁻¹ J_XΔ_r M_r.
+
+Contacts: four columns a ball position, (row 1 inner, row 1 outer, row 2 inner, row 2 outer); the
+turned row's ball at its own azimuth ψ sits at −ψ in the bearing's frame, so its balls are
+re-indexed to the first row's azimuths. Its ISO/TS 16281 ratings per raceway are each row's
+(`life.raceway_ratings` at the row's C_r = C_r / 2^0.7: ISO 281 eq. (2) with i = 2).
+"""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+import numpy as np
+
+from ...params import BallBearing, _as_float, check_range
+from ...ratings import life
+from ..interface import AbstractSupport, CondensedElements, ContactLoads, check_orientation, transfer, turned
+from .ball_equilibrium import BallModel
+from .ball_support import BallSupport
+
+ROWS = 2
+ROW_ORIENTATIONS = (1, -1)  # back to back (O): row 1 at −a/2 faces +z, row 2 at +a/2 faces −z
+
+
+class DoubleRowSupport(AbstractSupport):
+    """A double-row angular-contact ball bearing in O arrangement on the shaft: each row's geometry
+    `bearing` (a single row's, its free contact angle α₀), the rows' centres `row_spacing` [m]
+    apart, its `axial_clearance` [m] (the inner ring's axial play between the rows' contacts at α₀;
+    negative: preloaded); placement as `BallSupport`."""
+
+    bearing: BallBearing
+    row_spacing: jax.Array = eqx.field(converter=_as_float)
+    position: jax.Array = eqx.field(converter=_as_float)
+    axial_clearance: jax.Array = eqx.field(converter=_as_float, default=0.0)
+    offset: jax.Array = eqx.field(converter=_as_float, default=0.0)
+    model: BallModel = eqx.field(static=True, default=BallModel())
+    orientation: int = eqx.field(static=True, default=1)
+
+    def __check_init__(self):
+        check_orientation(self.orientation)
+        check_range("bearing.row_spacing", self.row_spacing, low=0.0, unit=" m")
+        if self.bearing.kind != "angular_contact_ball":
+            raise ValueError(f"bearing.type: the rows of a double-row angular-contact bearing are angular-contact "
+                             f"rows, got {self.bearing.kind!r}")
+
+    def rows(self) -> tuple[BallSupport, BallSupport]:
+        """The two rows as single-row supports in the bearing's own frame (module docstring)."""
+        half = 0.5 * self.row_spacing
+        return tuple(BallSupport(self.bearing, side * half, -0.5 * self.axial_clearance, self.model, orientation)
+                     for side, orientation in zip((-1.0, 1.0), ROW_ORIENTATIONS))
+
+    def _row_displacements(self, displacement):
+        return tuple(row_move(row) @ displacement + row.offset * jnp.eye(5)[2] for row in self.rows())
+
+    def _row_elements(self, elements):
+        return (None,) * ROWS if elements is None else tuple(elements)
+
+    def constants(self):
+        return self.rows()[0].constants()
+
+    def constants_key(self):
+        return id(self.bearing), self.model
+
+    def ring_force(self, displacement, speed, constants, elements=None):
+        return sum(row_move(row).T @ row.ring_force(local, speed, constants, state) for row, local, state
+                   in zip(self.rows(), self._row_displacements(displacement), self._row_elements(elements)))
+
+    def ring_stiffness(self, displacement, speed, constants, elements=None):
+        return sum(row_move(row).T @ row.ring_stiffness(local, speed, constants, state) @ row_move(row)
+                   for row, local, state in zip(self.rows(), self._row_displacements(displacement),
+                                                self._row_elements(elements)))
+
+    def energy_constants(self, constants):
+        return self.rows()[0].energy_constants(constants)
+
+    def static_energy(self, displacement, energy_constants):
+        return sum(row.static_energy(local, energy_constants)
+                   for row, local in zip(self.rows(), self._row_displacements(displacement)))
+
+    def characteristic_load(self, constants, energy_constants):
+        return ROWS * self.rows()[0].characteristic_load(constants, energy_constants)
+
+    def pitch_radius(self):
+        return 0.5 * self.bearing.pitch_diameter
+
+    def carries_elements(self) -> bool:
+        return self.model.speed_effects
+
+    def start_elements(self, displacement, speed, constants):
+        return jnp.stack([row.start_elements(local, speed, constants)
+                          for row, local in zip(self.rows(), self._row_displacements(displacement))])
+
+    def condensed(self, displacement, elements, speed, constants) -> CondensedElements:
+        parts = [(row_move(row), row.condensed(local, state, speed, constants)) for row, local, state
+                 in zip(self.rows(), self._row_displacements(displacement), elements)]
+        return CondensedElements(sum(move.T @ found.force for move, found in parts),
+                                 sum(move.T @ found.stiffness @ move for move, found in parts),
+                                 jnp.stack([found.correction for _, found in parts]),
+                                 jnp.stack([found.coupling @ move for move, found in parts]))
+
+    def limit_element_step(self, step):
+        return self.rows()[0].limit_element_step(step)
+
+    def element_tolerance(self):
+        return self.rows()[0].element_tolerance()
+
+    def element_residual(self, displacement, elements, speed, constants, load_scale):
+        return jnp.max(jnp.stack([row.element_residual(local, state, speed, constants, load_scale) for row, local, state
+                                  in zip(self.rows(), self._row_displacements(displacement), elements)]))
+
+    def contacts(self, displacement, speed, constants, elements=None) -> ContactLoads:
+        """Four point contacts a ball position (module docstring), azimuths row 1's."""
+        found = [row.contacts(local, speed, constants, state) for row, local, state
+                 in zip(self.rows(), self._row_displacements(displacement), self._row_elements(elements))]
+        count = self.bearing.ball_count
+        order = [np.arange(count) if row.orientation > 0 else (-np.arange(count)) % count for row in self.rows()]
+
+        def columns(field):
+            return jnp.concatenate([getattr(own, field)[index] for own, index in zip(found, order)], axis=1)
+
+        return ContactLoads(found[0].azimuth, columns("load"), columns("lamina_load"), columns("max_pressure"),
+                            columns("angle"), columns("approach"), found[0].raceways * ROWS, "point")
+
+    def dynamic_load_rating(self):
+        """`bearing.dynamic_load_rating` where given (the whole bearing's, as a catalogue gives it),
+        else ISO 281 eq. (2) with i = 2 rows: 2^0.7 × one row's."""
+        if self.bearing.dynamic_load_rating is not None:
+            return self.bearing.dynamic_load_rating
+        return ROWS**0.7 * life.basic_dynamic_load_rating(self.bearing)
+
+    def contact_ratings(self, rating, contacts: ContactLoads):
+        """Each row's Q_ci, Q_ce at its own C_r = C_r / 2^0.7, in the contacts' column order."""
+        return jnp.tile(jnp.stack(life.raceway_ratings(self.bearing, rating / ROWS**0.7)), ROWS)
+
+    def envelope(self, contacts: ContactLoads):
+        """The rows' `BallSupport.envelope`, the worst of the two."""
+        rows = [self.rows()[0].envelope(_row_columns(contacts, row)) for row in range(ROWS)]
+        largest = jnp.maximum(rows[0], rows[1])
+        return largest.at[2].set(jnp.minimum(rows[0][2], rows[1][2]))
+
+    def frequencies(self, speed, contacts: ContactLoads):
+        """The more loaded row's (its inner loads' sum the larger), at its solved angles."""
+        found = [self.rows()[0].frequencies(speed, _row_columns(contacts, row)) for row in range(ROWS)]
+        first = jnp.sum(contacts.load[:, 0]) >= jnp.sum(contacts.load[:, 2])
+        return jax.tree.map(lambda one, two: jnp.where(first, one, two), *found)
+
+
+def row_move(row: BallSupport):
+    """M_r = P_r G(z_r) (5, 5): dΔ_r/dΔ, a row's inner-ring displacement per the bearing's."""
+    return turned(row)[:, None] * transfer(row.position)
+
+
+def _row_columns(contacts: ContactLoads, row: int) -> ContactLoads:
+    """Row `row`'s two columns of the bearing's contacts, as a single row's."""
+    pick = slice(2 * row, 2 * row + 2)
+    return ContactLoads(contacts.azimuth, contacts.load[:, pick], contacts.lamina_load[:, pick],
+                        contacts.max_pressure[:, pick], contacts.angle[:, pick], contacts.approach[:, pick],
+                        contacts.raceways[pick], contacts.kind)
