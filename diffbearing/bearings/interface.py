@@ -61,7 +61,7 @@ CONTACT_KINDS = ("point", "line")
 
 class ContactLoads(eqx.Module):
     """The contacts of a bearing's rolling elements at a solved state: Z elements, each with C
-    contacts (columns, each on one raceway: a ball bearing's inner and outer; a four-point
+    contacts (columns, each on one raceway: a ball bearing's inner and outer; a double-row
     bearing's four), SI units.
 
     `azimuth` (Z,) [rad]: each element's position; `load` (Z, C) [N]: its normal load at each
@@ -70,8 +70,8 @@ class ContactLoads(eqx.Module):
     its largest lamina's) Hertz peak pressure; `angle` (Z, C) [rad]: a point contact's angle from
     the radial plane (None for line contacts, whose angle is the raceway's); `approach` (Z, C) [m]:
     the contact's elastic approach (a line contact's: its largest lamina's; negative: open);
-    static: `raceways` (C,) "inner" or "outer" per column, `kind` "point" or "line" (effects
-    declare the kinds they cover)."""
+    static: `raceways` (C,) "inner" or "outer" per column, `kind` "point" or "line" (an effect
+    covers the kinds it names: `ratings.reference_life.EXPONENTS`)."""
 
     azimuth: jax.Array
     load: jax.Array
