@@ -84,8 +84,8 @@ def _pair(load=(3000.0, -1000.0, 500.0), springs=SPRINGS, at=0.06):
 
 def _cubic_root(force, spring, hardening=0.5):
     """Δ with k Δ + h k Δ³ / (10 µm)² = F (one real root: the left side is increasing)."""
-    return np.roots([hardening * spring / 1e-10, 0.0, spring, -force]).real[np.abs(np.roots(
-        [hardening * spring / 1e-10, 0.0, spring, -force]).imag) < 1e-20][0]
+    roots = np.roots([hardening * spring / 1e-10, 0.0, spring, -force])
+    return roots.real[np.abs(roots.imag) < 1e-20][0]
 
 
 def test_a_shaft_on_a_toy_bearing_type_balances_its_loads_as_statics_says():

@@ -2,6 +2,8 @@
 back-to-back pair of its rows (identities, at standstill and at speed), one row under a pure
 axial load, its ISO 281 and ISO/TS 16281 ratings, its stiffness and a derivative."""
 
+import hypothesis
+import hypothesis.strategies as st
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -119,3 +121,32 @@ def test_bad_rows_are_refused():
         DoubleRowSupport(deep, SPACING, 0.0)
     with pytest.raises(ValueError, match="row_spacing"):
         DoubleRowSupport(ROW, -1e-3, 0.0)
+    with pytest.raises(ValueError, match="axial_clearance"):
+        DoubleRowSupport(ROW, SPACING, 0.0, axial_clearance=np.nan)
+
+
+@jax.jit
+def _double_row_and_pair(force, moment, clearance):
+    """(displacement, converged) of a shaft on the double-row bearing and on its rows as a pair."""
+    loads = ShaftLoads(jnp.zeros(1), force[None], moment[None])
+    rows = (BallSupport(ROW, -0.5 * SPACING, -0.5 * clearance), BallSupport(ROW, 0.5 * SPACING, -0.5 * clearance,
+                                                                            orientation=-1))
+    one = solve_shaft(Shaft((DoubleRowSupport(ROW, SPACING, 0.0, axial_clearance=clearance),), loads))
+    two = solve_shaft(Shaft(rows, loads))
+    return one.displacement, one.converged, two.displacement, two.converged
+
+
+@pytest.mark.slow
+@hypothesis.settings(max_examples=15, deadline=None)
+@hypothesis.given(st.floats(-8e3, 8e3), st.floats(-8e3, 8e3), st.floats(-6e3, 6e3), st.floats(-150.0, 150.0),
+                  st.floats(-10e-6, 10e-6))
+def test_random_loads_and_clearances_give_the_pairs_solution(radial, tangential, axial, moment, clearance):
+    """Over random radial, axial and tilting loads and axial clearances (−10 … 10 µm): the shaft on
+    the double-row bearing converges where the pair does, finite, to the pair's displacement."""
+    hypothesis.assume(abs(axial) + abs(radial) + abs(tangential) > 100.0)
+    one, one_converged, two, two_converged = _double_row_and_pair(
+        jnp.array([radial, tangential, axial]), jnp.array([moment, 0.0]), jnp.asarray(clearance))
+    assert np.all(np.isfinite(one))
+    assert bool(one_converged) == bool(two_converged)
+    if bool(two_converged):
+        np.testing.assert_allclose(one, two, rtol=1e-7, atol=1e-13)

@@ -211,6 +211,24 @@ def turned(support):
     return TURNED if support.orientation < 0 else np.ones(5)
 
 
+def local_displacement(point_displacement, support):
+    """Δ_k [m, rad]: a bearing's inner-ring displacement in its own frame from the displacement δ
+    of the point it sits at, P_k δ + (e_k + c_k) ẑ (its offset e_k and `reference_offset` c_k)."""
+    return (turned(support) * point_displacement).at[2].add(support.offset + support.reference_offset())
+
+
+def support_displacement(displacement, support):
+    """Δ_k [m, rad] of a displacement u at z = 0 of what the bearing sits on (a rigid shaft, a
+    double-row bearing's rings): P_k G(z_k) u + (e_k + c_k) ẑ."""
+    return local_displacement(transfer(support.position) @ displacement, support)
+
+
+def support_move(support):
+    """P_k G(z_k) (5, 5): dΔ_k/du, the bearing's inner-ring displacement per displacement u at
+    z = 0 (`support_displacement`)."""
+    return turned(support)[:, None] * transfer(support.position)
+
+
 def check_orientation(orientation):
     """ValueError unless `orientation` is +1 ("+z") or −1 ("−z")."""
     if orientation not in (1, -1):

@@ -38,6 +38,12 @@ def basic_dynamic_load_rating(bearing: BallBearing):
     return jnp.where(ball_mm <= 25.4, common * ball_mm**1.8, common * 3.647 * ball_mm**1.4)
 
 
+def ball_load_rating(bearing: BallBearing):
+    """C_r [N] of a ball bearing: its own (`BallBearing.dynamic_load_rating`) where given, else
+    ISO 281's from its geometry (`basic_dynamic_load_rating`)."""
+    return basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else bearing.dynamic_load_rating
+
+
 def equivalent_dynamic_load(bearing: BallBearing, force):
     """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row ball bearing for
     force [Fx, Fy, Fz] [N]: Table 3 at its nominal contact angle (`BallBearing.nominal_contact_angle`; 0°…45°, NaN

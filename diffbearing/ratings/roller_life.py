@@ -28,6 +28,7 @@ tests against the closed form of ISO/TR 1281-1 that it tabulates (as restated in
 import jax.numpy as jnp
 import numpy as np
 
+from ..bearings.roller.roller_geometry import mean_roller_diameter
 from ..numerics import positive_power
 
 # ISO 281:2007 f_c of radial roller bearings (Table 7), D_we cos α / D_pw → f_c. Each entry equals the closed
@@ -66,6 +67,13 @@ def roller_dynamic_load_rating(roller_count, roller_diameter, effective_length, 
     length_mm, diameter_mm = effective_length * 1e3, roller_diameter * 1e3
     return (BM_ROLLER * fc * (rows * length_mm * jnp.cos(contact_angle)) ** (7.0 / 9.0)
             * roller_count ** 0.75 * diameter_mm ** (29.0 / 27.0))
+
+
+def roller_bearing_load_rating(bearing, raceways):
+    """ISO 281 C_r [N] of a whole roller bearing (`roller_geometry.RollerBearing`, its
+    `roller_equilibrium.RollerRaceways`): the mean roller diameter, the cup angle."""
+    return roller_dynamic_load_rating(bearing.roller_count, mean_roller_diameter(bearing), bearing.length,
+                                      raceways.cup_angle, raceways.pitch_diameter)
 
 
 def lamina_load(approach, lamina_width, effective_length):

@@ -25,6 +25,7 @@ checked against the Hertz chain of ISO/TR 10657 in the tests.
 import jax.numpy as jnp
 import numpy as np
 
+from ..bearings.roller.roller_geometry import mean_roller_diameter
 from ..params import BallBearing
 
 # ISO 76:2006 Table 1, radial and angular-contact groove ball bearings: γ = D_w cos α / D_pw → f₀.
@@ -72,8 +73,7 @@ def ball_bearing_equivalent_static_load(bearing: BallBearing, force):
 def roller_bearing_static_load_rating(bearing, raceways):
     """C₀r [N] of a whole roller bearing (`roller_geometry.RollerBearing`, its
     `roller_equilibrium.RollerRaceways`): the mean roller diameter, the cup angle."""
-    diameter = 0.5 * (bearing.small_diameter + bearing.large_diameter)
-    return roller_static_load_rating(bearing.roller_count, diameter, bearing.length, raceways.pitch_diameter,
+    return roller_static_load_rating(bearing.roller_count, mean_roller_diameter(bearing), bearing.length, raceways.pitch_diameter,
                                      raceways.cup_angle)
 
 

@@ -46,6 +46,9 @@ from ..bearings.interface import (
     RING_STEP_TOLERANCE,
     SPEED_STAGES,
     AbstractSupport,
+    local_displacement,
+    support_displacement,
+    support_move,
     transfer,
     turned,
 )
@@ -96,23 +99,6 @@ class Shaft(eqx.Module):
         check_range("shaft.speed", self.speed, unit=" rad/s")
 
 
-def local_displacement(point_displacement, support):
-    """Δ_k [m, rad]: the bearing's inner-ring displacement in its own frame from the displacement
-    of the shaft point it sits at, P_k δ + (e_k + c_k) ẑ (module docstring)."""
-    return (turned(support) * point_displacement).at[2].add(support.offset + support.reference_offset())
-
-
-def support_displacement(shaft_displacement, support):
-    """Δ_k [m, rad] of the rigid shaft's displacement u at z = 0 (module docstring)."""
-    return local_displacement(transfer(support.position) @ shaft_displacement, support)
-
-
-def support_move(support):
-    """P_k G(z_k) (5, 5): dΔ_k/du, the bearing's inner-ring displacement per rigid-shaft displacement
-    at z = 0 (`support_displacement` is P_k G(z_k) u + (e_k + c_k) ẑ)."""
-    return turned(support)[:, None] * transfer(support.position)
-
-
 def support_force(local_displacement, support: AbstractSupport, speed, constants=None, elements=None):
     """[Fx, Fy, Fz, Mx, My] [N, N·m] that holds the bearing's inner ring at Δ_k, in its own frame
     (`AbstractSupport.ring_force`). `elements`: the state of its rolling elements as a solve found
@@ -137,12 +123,13 @@ def support_constants(shaft: Shaft):
     """Each bearing's constants for a solve (`AbstractSupport.constants`: a ball bearing's table of
     Hertz constants, None for a roller bearing), built once; supports with the same
     `constants_key` (a matched set's bearings: the same bearing object and model) share them."""
+    keys = [("own", id(support)) if support.constants_key() is None else support.constants_key()
+            for support in shaft.supports]
     built = {}
-    for support in shaft.supports:
-        key = support.constants_key()
-        if key is None or key not in built:
-            built[id(support) if key is None else key] = support.constants()
-    return tuple(built[id(s) if s.constants_key() is None else s.constants_key()] for s in shaft.supports)
+    for key, support in zip(keys, shaft.supports):
+        if key not in built:
+            built[key] = support.constants()
+    return tuple(built[key] for key in keys)
 
 
 def shaft_force(shaft_displacement, shaft: Shaft, constants=None, elements=None):
@@ -411,8 +398,7 @@ def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, elements=None, con
     elements = (None,) * len(shaft.supports) if not elements else elements
     stiffness = jnp.zeros((5, 5))
     for support, own, state in zip(shaft.supports, constants, elements):
-        local = support_displacement(shaft_displacement, support)
-        stiffness = stiffness + support_move(support).T @ support_stiffness(local, support, shaft.speed, own, state) \
-            @ support_move(support)
+        local, move = support_displacement(shaft_displacement, support), support_move(support)
+        stiffness = stiffness + move.T @ support_stiffness(local, support, shaft.speed, own, state) @ move
     back = transfer(-jnp.asarray(at, dtype=float))
     return back.T @ stiffness @ back

@@ -72,10 +72,8 @@ class BallSupport(AbstractSupport):
                                                            self.model, elements, constants))
 
     def dynamic_load_rating(self):
-        """The bearing's own C_r where given, else ISO 281's (`life.basic_dynamic_load_rating`)."""
-        if self.bearing.dynamic_load_rating is not None:
-            return self.bearing.dynamic_load_rating
-        return life.basic_dynamic_load_rating(self.bearing)
+        """The bearing's own C_r where given, else ISO 281's (`life.ball_load_rating`)."""
+        return life.ball_load_rating(self.bearing)
 
     def contact_ratings(self, rating, contacts: ContactLoads):
         """Q_ci, Q_ce [N] (ISO/TS 16281 eqs. (19)–(20), `life.raceway_ratings`)."""
@@ -85,8 +83,7 @@ class BallSupport(AbstractSupport):
         """`ball_validity`: the largest approach / D_w, the largest loaded |α|, and an angular-contact
         bearing's lowest loaded α (its low shoulder lies at α < 0; +π/2 for a deep-groove one)."""
         (inner_load, outer_load), (inner_angle, outer_angle) = contacts.load.T, contacts.angle.T
-        lowest = (jnp.asarray(0.5 * jnp.pi) if self.bearing.kind != "angular_contact_ball" else
-                  ball_validity.lowest_loaded_angle(inner_load, inner_angle, outer_load, outer_angle))
+        lowest = ball_validity.low_shoulder_angle(self.bearing, inner_load, inner_angle, outer_load, outer_angle)
         return jnp.stack([ball_validity.largest_approach_ratio(*contacts.approach.T, self.bearing.ball_diameter),
                           ball_validity.largest_contact_angle(inner_angle, outer_angle, inner_load, outer_load),
                           lowest])

@@ -50,6 +50,14 @@ def within_model(approach_ratio, contact_angle):
     return (approach_ratio <= MAX_APPROACH_FRACTION) & (contact_angle < MAX_CONTACT_ANGLE)
 
 
+def low_shoulder_angle(bearing, inner_load, inner_angle, outer_load, outer_angle):
+    """The lowest loaded contact angle [rad] of an angular-contact bearing (`lowest_loaded_angle`;
+    its low shoulder lies at α < 0), +π/2 for a deep-groove bearing, whose groove is full."""
+    if bearing.kind != "angular_contact_ball":
+        return jnp.asarray(0.5 * jnp.pi)
+    return lowest_loaded_angle(inner_load, inner_angle, outer_load, outer_angle)
+
+
 def lowest_loaded_angle(inner_load, inner_angle, outer_load, outer_angle):
     """min over the loaded contacts (Q > 0) of the contact angle α [rad]; +π/2 where none is loaded."""
     inner = jnp.where(inner_load > 0.0, inner_angle, 0.5 * jnp.pi)

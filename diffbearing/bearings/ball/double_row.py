@@ -12,7 +12,7 @@ rigid inner ring's displacement Δ about the bearing's centre moves row r's inne
 clearance s_a [m] (each row backed off by half; negative: preloaded): the bearing is the
 back-to-back pair of its rows with the offset e and no spacer, its rows sharing one table of Hertz
 constants. With speed effects both rows' balls are carried as unknowns, stacked (2, Z, 2) [m], and
-condensed onto the ring row by row (M_r = P_r G(z_r) = dΔ_r/dΔ):
+condensed onto the ring row by row (M_r = P_r G(z_r) = dΔ_r/dΔ, `support_move`):
 S = Σ_r M_rᵀ S_r M_r, the balls' coupling J_XX⁻¹ J_XΔ_r M_r.
 
 Contacts: four columns a ball position, (row 1 inner, row 1 outer, row 2 inner, row 2 outer); the
@@ -28,7 +28,14 @@ import numpy as np
 
 from ...params import BallBearing, _as_float, check_range
 from ...ratings import life
-from ..interface import AbstractSupport, CondensedElements, ContactLoads, check_orientation, transfer, turned
+from ..interface import (
+    AbstractSupport,
+    CondensedElements,
+    ContactLoads,
+    check_orientation,
+    support_displacement,
+    support_move,
+)
 from .ball_equilibrium import BallModel
 from .ball_support import BallSupport
 
@@ -53,6 +60,7 @@ class DoubleRowSupport(AbstractSupport):
     def __check_init__(self):
         check_orientation(self.orientation)
         check_range("bearing.row_spacing", self.row_spacing, low=0.0, unit=" m")
+        check_range("bearing.axial_clearance", self.axial_clearance, unit=" m")
         if self.bearing.kind != "angular_contact_ball":
             raise ValueError(f"bearing.type: the rows of a double-row angular-contact bearing are angular-contact "
                              f"rows, got {self.bearing.kind!r}")
@@ -64,7 +72,7 @@ class DoubleRowSupport(AbstractSupport):
                      for side, orientation in zip((-1.0, 1.0), ROW_ORIENTATIONS))
 
     def _row_displacements(self, displacement):
-        return tuple(row_move(row) @ displacement + row.offset * jnp.eye(5)[2] for row in self.rows())
+        return tuple(support_displacement(displacement, row) for row in self.rows())
 
     def _row_elements(self, elements):
         return (None,) * ROWS if elements is None else tuple(elements)
@@ -76,11 +84,11 @@ class DoubleRowSupport(AbstractSupport):
         return id(self.bearing), self.model
 
     def ring_force(self, displacement, speed, constants, elements=None):
-        return sum(row_move(row).T @ row.ring_force(local, speed, constants, state) for row, local, state
+        return sum(support_move(row).T @ row.ring_force(local, speed, constants, state) for row, local, state
                    in zip(self.rows(), self._row_displacements(displacement), self._row_elements(elements)))
 
     def ring_stiffness(self, displacement, speed, constants, elements=None):
-        return sum(row_move(row).T @ row.ring_stiffness(local, speed, constants, state) @ row_move(row)
+        return sum(support_move(row).T @ row.ring_stiffness(local, speed, constants, state) @ support_move(row)
                    for row, local, state in zip(self.rows(), self._row_displacements(displacement),
                                                 self._row_elements(elements)))
 
@@ -105,7 +113,7 @@ class DoubleRowSupport(AbstractSupport):
                           for row, local in zip(self.rows(), self._row_displacements(displacement))])
 
     def condensed(self, displacement, elements, speed, constants) -> CondensedElements:
-        parts = [(row_move(row), row.condensed(local, state, speed, constants)) for row, local, state
+        parts = [(support_move(row), row.condensed(local, state, speed, constants)) for row, local, state
                  in zip(self.rows(), self._row_displacements(displacement), elements)]
         return CondensedElements(sum(move.T @ found.force for move, found in parts),
                                  sum(move.T @ found.stiffness @ move for move, found in parts),
@@ -157,11 +165,6 @@ class DoubleRowSupport(AbstractSupport):
         found = [self.rows()[0].frequencies(speed, _row_columns(contacts, row)) for row in range(ROWS)]
         first = jnp.sum(contacts.load[:, 0]) >= jnp.sum(contacts.load[:, 2])
         return jax.tree.map(lambda one, two: jnp.where(first, one, two), *found)
-
-
-def row_move(row: BallSupport):
-    """M_r = P_r G(z_r) (5, 5): dΔ_r/dΔ, a row's inner-ring displacement per the bearing's."""
-    return turned(row)[:, None] * transfer(row.position)
 
 
 def _row_columns(contacts: ContactLoads, row: int) -> ContactLoads:

@@ -98,6 +98,11 @@ def roller_modulus(bearing: RollerBearing):
     return effective_modulus(m.elastic_modulus, m.poisson_ratio, m.elastic_modulus, m.poisson_ratio)
 
 
+def mean_roller_diameter(bearing: RollerBearing):
+    """D_we [m]: the mean of the end diameters (the ratings' roller diameter)."""
+    return 0.5 * (bearing.small_diameter + bearing.large_diameter)
+
+
 def roller_diameter(bearing: RollerBearing, y):
     """Roller diameter D_k [m] at axial positions y [m] (the crowning paper, eq. 6)."""
     fraction = y / bearing.length + 0.5

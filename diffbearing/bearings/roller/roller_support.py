@@ -12,7 +12,7 @@ from ...ratings import roller_life
 from ..interface import AbstractSupport, ContactLoads, check_orientation
 from . import roller_equilibrium
 from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways, RollerResults
-from .roller_geometry import RollerBearing
+from .roller_geometry import RollerBearing, mean_roller_diameter
 
 
 class RollerSupport(AbstractSupport):
@@ -64,18 +64,13 @@ class RollerSupport(AbstractSupport):
         return contact_loads(self.bearing, roller_equilibrium.roller_results(
             displacement, self.bearing, self.raceways, self._operating(speed), self.model))
 
-    def _mean_diameter(self):
-        return 0.5 * (self.bearing.small_diameter + self.bearing.large_diameter)
-
     def dynamic_load_rating(self):
-        """ISO 281's C_r (`roller_life.roller_dynamic_load_rating`, the mean roller diameter, the cup angle)."""
-        return roller_life.roller_dynamic_load_rating(self.bearing.roller_count, self._mean_diameter(),
-                                                      self.bearing.length, self.raceways.cup_angle,
-                                                      self.raceways.pitch_diameter)
+        """ISO 281's C_r (`roller_life.roller_bearing_load_rating`)."""
+        return roller_life.roller_bearing_load_rating(self.bearing, self.raceways)
 
     def contact_ratings(self, rating, contacts: ContactLoads):
         """q_ci, q_ce [N] per lamina (ISO/TS 16281 eqs. (47)–(49), (56)–(57), `roller_life.lamina_ratings`)."""
-        return jnp.stack(roller_life.lamina_ratings(rating, self.bearing.roller_count, self._mean_diameter(),
+        return jnp.stack(roller_life.lamina_ratings(rating, self.bearing.roller_count, mean_roller_diameter(self.bearing),
                                                     self.raceways.cup_angle, self.raceways.pitch_diameter,
                                                     contacts.lamina_load.shape[-1]))
 
@@ -83,7 +78,7 @@ class RollerSupport(AbstractSupport):
         """The largest lamina approach / mean roller diameter (limit
         `roller_equilibrium.MAX_APPROACH_FRACTION`, as the balls'), 0 and π/2 (no contact angle of
         its own, no low shoulder)."""
-        return jnp.stack([jnp.max(contacts.approach) / self._mean_diameter(), 0.0, 0.5 * jnp.pi])
+        return jnp.stack([jnp.max(contacts.approach) / mean_roller_diameter(self.bearing), 0.0, 0.5 * jnp.pi])
 
     def frequencies(self, speed, contacts: ContactLoads):
         """`overrolling.frequencies_of_rollers` (the raceways' cone and cup angles)."""

@@ -261,12 +261,9 @@ LOW_SHOULDER_ROUNDING = 1e-9  # rad: a ball at the groove bottom (α = 0 within 
 
 
 def low_shoulder_angle(bearing, balls):
-    """The lowest loaded contact angle [rad] of an angular-contact bearing (`ball_validity.lowest_loaded_angle`;
-    its low shoulder lies at α < 0), +π/2 for a deep-groove bearing, whose groove is full."""
-    if bearing.kind != "angular_contact_ball":
-        return jnp.asarray(0.5 * np.pi)
-    return jax.lax.stop_gradient(ball_validity.lowest_loaded_angle(balls.inner_load, balls.inner_contact_angle,
-                                                                   balls.outer_load, balls.outer_contact_angle))
+    """`ball_validity.low_shoulder_angle` of a bearing's balls (`BallResults`), without derivative."""
+    return jax.lax.stop_gradient(ball_validity.low_shoulder_angle(bearing, balls.inner_load, balls.inner_contact_angle,
+                                                                  balls.outer_load, balls.outer_contact_angle))
 
 
 def validity_errors(approach, angle, subject: str, lowest=None) -> list[str]:

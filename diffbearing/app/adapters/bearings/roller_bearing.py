@@ -31,7 +31,7 @@ from ....bearings.roller.roller_equilibrium import (
     solve_roller_equilibrium,
     tapered_axial_load_needed,
 )
-from ....bearings.roller.roller_geometry import ROLLER_KINDS
+from ....bearings.roller.roller_geometry import ROLLER_KINDS, mean_roller_diameter
 from ....bearings.roller.roller_support import RollerSupport
 from ....params import check_axial_force_free, check_radial_force_free, check_range
 from ...formatting import element_table_lines, format_number, state_column, stiffness_lines, swept_display, to_display
@@ -167,7 +167,7 @@ def _influence_rollers(v, built) -> dict:
 
 def approach_ratio(bearing, rollers):
     """The largest lamina approach / mean roller diameter [-] (limit `MAX_APPROACH_FRACTION`)."""
-    return rollers.largest_approach / (0.5 * (bearing.small_diameter + bearing.large_diameter))
+    return rollers.largest_approach / mean_roller_diameter(bearing)
 
 
 def _equilibrium(inputs: dict, settings: dict, results: dict) -> dict:

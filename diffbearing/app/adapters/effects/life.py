@@ -6,7 +6,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ....bearings.roller.roller_geometry import ROLLER_KINDS
+from ....bearings.roller.roller_geometry import ROLLER_KINDS, mean_roller_diameter
 from ....params import BALL_BEARING_KINDS, check_range
 from ....ratings import life, life_modification, radial_load_factors, roller_life, static_safety
 from ...formatting import column
@@ -40,28 +40,21 @@ def table3_angle(settings: dict, inputs: dict) -> None:
                          f"bearings up to 45°, got {np.degrees(float(angle)):.4g}°")
 
 
-def ball_load_rating(bearing):
-    """C_r [N] used for a ball bearing: its own, else ISO 281's from the geometry."""
-    return life.basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else bearing.dynamic_load_rating
-
-
 def ball_bearing_life(bearing, inner_loads, outer_loads):
-    """ISO/TS 16281 L10r [10⁶ rev] of a ball bearing from its ball loads [N] (`ball_load_rating`)."""
-    return life.reference_rating_life(bearing, ball_load_rating(bearing), inner_loads, outer_loads)
+    """ISO/TS 16281 L10r [10⁶ rev] of a ball bearing from its ball loads [N] (`life.ball_load_rating`)."""
+    return life.reference_rating_life(bearing, life.ball_load_rating(bearing), inner_loads, outer_loads)
 
 
 def roller_load_ratings(bearing, raceways, given_rating=None):
     """(C_r used [N], C_r by ISO 281 [N]) of a whole roller bearing: the scene's, else ISO 281's."""
-    diameter = 0.5 * (bearing.small_diameter + bearing.large_diameter)
-    computed = roller_life.roller_dynamic_load_rating(bearing.roller_count, diameter, bearing.length,
-                                                      raceways.cup_angle, raceways.pitch_diameter)
+    computed = roller_life.roller_bearing_load_rating(bearing, raceways)
     return (computed if given_rating is None else given_rating), computed
 
 
 def roller_bearing_life(bearing, raceways, inner_lamina_load, outer_lamina_load, given_rating=None):
     """(C_r used [N], C_r by ISO 281 [N], ISO/TS 16281 L10r [10⁶ rev]) of a whole roller bearing from
     its lamina loads per unit length (rollers × laminae) [N/m]."""
-    count, diameter = bearing.roller_count, 0.5 * (bearing.small_diameter + bearing.large_diameter)
+    count, diameter = bearing.roller_count, mean_roller_diameter(bearing)
     angle, pitch = raceways.cup_angle, raceways.pitch_diameter
     rating, computed = roller_load_ratings(bearing, raceways, given_rating)
     width = bearing.length / inner_lamina_load.shape[-1]
@@ -89,7 +82,7 @@ def _set_life(inputs: dict, settings: dict, results: dict) -> dict:
     bearing = inputs["bearing"]
     lives = [ball_bearing_life(bearing, results[f"set.bearings.{number}.balls.inner.load"],
                                results[f"set.bearings.{number}.balls.outer.load"]) for number in range(SET_SIZE)]
-    return {"life.basic_dynamic_load_rating": ball_load_rating(bearing),
+    return {"life.basic_dynamic_load_rating": life.ball_load_rating(bearing),
             **{f"set.bearings.{number}.L10r": value for number, value in enumerate(lives)},
             "set.L10r": life.system_life(jnp.stack(lives))}
 
@@ -230,7 +223,7 @@ def _shaft_modified(inputs: dict, settings: dict, results: dict) -> dict:
             rating, _ = roller_load_ratings(roller, raceways)
         else:
             element, pitch = "ball", bearing.pitch_diameter
-            static_rating, rating = static_safety.ball_bearing_static_load_rating(bearing), ball_load_rating(bearing)
+            static_rating, rating = static_safety.ball_bearing_static_load_rating(bearing), life.ball_load_rating(bearing)
         lubrication = _lubrication(element, pitch, static_rating, inputs, layout.speed)
         _, a_iso, modified = _reference_modified(element, lubrication, rating, results["bearings.L10r"][number], inputs)
         kappas.append(lubrication["life.viscosity_ratio"])

@@ -12,7 +12,7 @@ from ....ratings import life, roller_life, static_safety
 from ....ratings.minimum_load import minimum_load
 from ...registry import SHAFT, Adapter, Block, Key, Output, register
 from ..systems.bearing_set import SET, SET_SIZE
-from .life import ball_load_rating, roller_load_ratings, table3_angle
+from .life import roller_load_ratings, table3_angle
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
 
 HYBRID_OUTPUT = Output("safety.hybrid", "", "", "1 where the balls are silicon nitride: C0, s0 and p_limit are then "
@@ -61,7 +61,8 @@ def _safety(bearing, raceways, force, pressure, equivalent_load, minimum, operat
 def _ball_safety(inputs: dict, settings: dict, results: dict) -> dict:
     bearing, force = inputs["bearing"], results["force"][:3]
     return _safety(bearing, None, force, _largest_pressure(results, "balls"), life.equivalent_dynamic_load(bearing, force),
-                   minimum_load(ball_load_rating(bearing), "ball"), inputs["operating"]) | {"safety.hybrid": _hybrid(bearing)}
+                   minimum_load(life.ball_load_rating(bearing), "ball"),
+                   inputs["operating"]) | {"safety.hybrid": _hybrid(bearing)}
 
 
 def _roller_safety(inputs: dict, settings: dict, results: dict) -> dict:
