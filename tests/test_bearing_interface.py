@@ -67,6 +67,18 @@ class SpringSupport(AbstractSupport):
     def contact_ratings(self, rating, contacts):
         return jnp.stack([rating, 1.2 * rating])
 
+    def static_load_rating(self):
+        return jnp.asarray(4e4)
+
+    def equivalent_static_load(self, force):
+        return jnp.sqrt(force[0] ** 2 + force[1] ** 2) + 0.5 * jnp.abs(force[2])
+
+    def pressure_safety(self, max_pressure):
+        return jnp.asarray(jnp.inf)
+
+    def rolling_element(self):
+        return "ball"
+
     def envelope(self, contacts):
         return jnp.array([0.0, 0.0, 0.5 * jnp.pi])
 

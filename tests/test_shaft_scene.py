@@ -8,7 +8,8 @@ import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
-from diffbearing.app.adapters.systems.shaft import PERMISSIBLE_MISALIGNMENT, _supports, misalignment_warnings
+from diffbearing.app.adapters.systems.shaft import PERMISSIBLE_MISALIGNMENT, misalignment_warnings
+from diffbearing.app.adapters.systems.shaft_layout import layout_supports
 from diffbearing.systems.flexible_shaft import flexible_shaft, solve_flexible_shaft
 from diffbearing.systems.shaft_equilibrium import Shaft
 
@@ -235,7 +236,7 @@ def test_flexible_shaft_scene(tmp_path):
     result = _run(tmp_path, text, "flexible.toml")
     assert bool(result.values["shaft.converged"])
     layout = result.model.inputs["shaft"]
-    flexible = flexible_shaft(Shaft(_supports(layout, result.model.settings), layout.loads, layout.speed),
+    flexible = flexible_shaft(Shaft(layout_supports(layout, result.model.settings), layout.loads, layout.speed),
                               layout.sections, 0.03, 0.02)
     own = solve_flexible_shaft(flexible)
     np.testing.assert_allclose(result.values["bearings.force"], np.stack(own.bearing_forces), rtol=1e-12, atol=1e-9)

@@ -90,6 +90,9 @@ def build_model(scene: Scene) -> Model:
     builders' array operations (fits and temperatures, a cage's geometry) compile too, and a later
     process loads them."""
     use_compilation_cache()
+    if not registry.selectable(scene.bearing_type, scene.values) and scene.bearing_type in registry.mountings():
+        raise ValueError(f"bearing.type: a {scene.bearing_type} bearing is modelled on a shaft only: give it as a "
+                         "[[bearings]] entry (with its position) and its load as a [[loads]] entry")
     blocks, missing = registry.resolve(scene.bearing_type, scene.table("effects"), present=scene.values)
     values = Reads(scene.values)
     inputs = build_inputs(scene.bearing_type, blocks, values)

@@ -16,7 +16,9 @@ system needs of it (docs/extending.md, "Adding a bearing type"):
 * its contacts at a solved state, one typed result for every type (`ContactLoads`: per rolling
   element and contact the load, laminae, pressure, angle, approach; which raceway; point or line),
   which the effects read (`ratings.reference_life`), its ratings' inputs (`dynamic_load_rating`,
-  `contact_ratings`), where a state stands against its envelope and its overrolling frequencies;
+  `contact_ratings`; ISO 76's `static_load_rating`, `equivalent_static_load`, `pressure_safety`;
+  `rolling_element` for ISO 281's a_ISO; the friction models' rows, `friction_kind`), where a
+  state stands against its envelope and its overrolling frequencies;
 * where its rolling elements leave the static split at speed (`carries_elements`), their state
   as unknowns of the system's own Newton: a start, the elements condensed onto the ring
   (`CondensedElements`), a step limit and tolerance, and their own residual.
@@ -152,6 +154,44 @@ class AbstractSupport(eqx.Module):
         """(C,) [N]: each contact column's ISO/TS 16281 rating per lamina, the lamina load of a
         raceway life of 10⁶ revolutions, from the dynamic load rating `rating` [N]
         (`ratings.reference_life`)."""
+
+    @abc.abstractmethod
+    def static_load_rating(self):
+        """C₀ [N]: the bearing's basic static load rating (ISO 76)."""
+
+    @abc.abstractmethod
+    def equivalent_static_load(self, force):
+        """P₀ [N]: ISO 76's equivalent static load of the load [Fx, Fy, Fz] [N] the bearing carries
+        (its own frame), with the type's own X₀, Y₀."""
+
+    @abc.abstractmethod
+    def pressure_safety(self, max_pressure):
+        """The static safety [-] of the largest contact pressure p_max [Pa] against ISO 76's
+        permissible pressure of the type, as a load ratio (`ratings.static_safety.pressure_safety`)."""
+
+    @abc.abstractmethod
+    def rolling_element(self) -> str:
+        """"ball" or "roller": which of ISO 281's life modification factors (a_ISO, e_C) apply."""
+
+    def hybrid(self) -> bool:
+        """Whether its rolling elements are ceramic while its rings are steel (the ISO 76 ratings
+        above are then the all-steel ones); False unless the type says otherwise."""
+        return False
+
+    def friction_kind(self, model: str) -> str | None:
+        """The bearing kind whose rows the friction model `model` ("palmgren": `friction.friction_torque`,
+        "skf": `friction.skf_friction`) reads for this bearing; None where the model covers it not."""
+        return None
+
+    def friction_series(self) -> str | None:
+        """The series of SKF's friction model the type's design fixes (None: the scene's or the
+        kind's default)."""
+        return None
+
+    def nominal_contact_angle(self):
+        """α [rad]: the nominal contact angle its ratings and friction loads read (0 for radial
+        contact; a tapered roller bearing's cup angle)."""
+        return 0.0
 
     @abc.abstractmethod
     def envelope(self, contacts: ContactLoads):

@@ -10,7 +10,8 @@ contact pressures against ISO 76's permissible stresses.
   (4 000 MPa on the inner raceway, the same factor 5).
 * `ball_equivalent_static_load`, `roller_equivalent_static_load` — ISO 76, Table 2:
   P₀r = max(X₀ F_r + Y₀ F_a, F_r), X₀ = 0.6, Y₀ = 0.5 for radial-contact groove bearings, X₀ = 0.5 and
-  Y₀ of Table 2 (5°…45°) for single-row angular-contact ones; X₀ = 0.5, Y₀ = 0.22 cot α for tapered
+  Y₀ of Table 2 (5°…45°) for single-row angular-contact ones (`double_row_equivalent_static_load`:
+  X₀ = 1, Y₀ twice that for double-row ones and pairs); X₀ = 0.5, Y₀ = 0.22 cot α for tapered
   roller bearings, P₀r = F_r for cylindrical ones.
 * `pressure_safety` — the static safety from the largest computed contact pressure,
   (p_limit / p_max)³ for point contacts and (p_limit / p_max)² for line contacts (load ∝ p³ and
@@ -92,6 +93,17 @@ def ball_equivalent_static_load(force, contact_angle, radial_contact: bool):
         inside = (contact_angle >= Y0_ANGLE[0] - 1e-9) & (contact_angle <= Y0_ANGLE[-1] + 1e-9)
         x0, y0 = 0.5, jnp.where(inside, jnp.interp(contact_angle, Y0_ANGLE, Y0_VALUE), jnp.nan)
     return jnp.maximum(x0 * radial + y0 * axial, radial)
+
+
+def double_row_equivalent_static_load(force, contact_angle):
+    """ISO 76 equivalent static radial load P₀r [N] of a double-row angular-contact ball bearing
+    (and of a pair back to back or face to face) under [Fx, Fy, Fz] [N]: Table 2's double-row
+    column, X₀ = 1 and Y₀ twice the single row's at the nominal angle α [rad] (5°…45°; NaN
+    outside), P₀r = F_r + Y₀ F_a (never below F_r)."""
+    radial, axial = _radial_and_axial(force)
+    inside = (contact_angle >= Y0_ANGLE[0] - 1e-9) & (contact_angle <= Y0_ANGLE[-1] + 1e-9)
+    y0 = jnp.where(inside, 2.0 * jnp.interp(contact_angle, Y0_ANGLE, Y0_VALUE), jnp.nan)
+    return radial + y0 * axial
 
 
 def roller_equivalent_static_load(force, contact_angle):

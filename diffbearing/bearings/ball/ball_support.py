@@ -12,8 +12,8 @@ import jax
 import jax.numpy as jnp
 
 from ... import overrolling
-from ...params import BallBearing, Operating, _as_float, groove_curvature_centre_distance
-from ...ratings import life
+from ...params import SILICON_NITRIDE, BallBearing, Operating, _as_float, groove_curvature_centre_distance
+from ...ratings import life, static_safety
 from ..interface import AbstractSupport, CondensedElements, ContactLoads, check_orientation
 from . import ball_equilibrium, ball_validity
 from .ball_equilibrium import BallModel, BallResults
@@ -78,6 +78,33 @@ class BallSupport(AbstractSupport):
     def contact_ratings(self, rating, contacts: ContactLoads):
         """Q_ci, Q_ce [N] (ISO/TS 16281 eqs. (19)–(20), `life.raceway_ratings`)."""
         return jnp.stack(life.raceway_ratings(self.bearing, rating))
+
+    def static_load_rating(self):
+        """ISO 76 C₀r at the nominal contact angle (`static_safety.ball_bearing_static_load_rating`)."""
+        return static_safety.ball_bearing_static_load_rating(self.bearing)
+
+    def equivalent_static_load(self, force):
+        """ISO 76 P₀r, single row (`static_safety.ball_bearing_equivalent_static_load`)."""
+        return static_safety.ball_bearing_equivalent_static_load(self.bearing, force)
+
+    def pressure_safety(self, max_pressure):
+        """(4 200 MPa / p_max)³."""
+        return static_safety.pressure_safety(max_pressure, static_safety.BALL_PRESSURE_LIMIT,
+                                             static_safety.POINT_CONTACT_EXPONENT)
+
+    def rolling_element(self) -> str:
+        return "ball"
+
+    def hybrid(self) -> bool:
+        """Silicon nitride balls (the material's static name)."""
+        return self.bearing.ball_material is not None and self.bearing.ball_material.name == SILICON_NITRIDE.name
+
+    def friction_kind(self, model: str) -> str | None:
+        """Its own kind (deep groove or angular contact) in both friction models."""
+        return self.bearing.kind
+
+    def nominal_contact_angle(self):
+        return self.bearing.nominal_contact_angle
 
     def envelope(self, contacts: ContactLoads):
         """`ball_validity`: the largest approach / D_w, the largest loaded |α|, and an angular-contact

@@ -18,7 +18,8 @@ S = Σ_r M_rᵀ S_r M_r, the balls' coupling J_XX⁻¹ J_XΔ_r M_r.
 Contacts: four columns a ball position, (row 1 inner, row 1 outer, row 2 inner, row 2 outer); the
 turned row's ball at its own azimuth ψ sits at −ψ in the bearing's frame, so its balls are
 re-indexed to the first row's azimuths. Its ISO/TS 16281 ratings per raceway are each row's
-(`life.raceway_ratings` at the row's C_r = C_r / 2^0.7: ISO 281 eq. (2) with i = 2).
+(`life.raceway_ratings` at the row's C_r = C_r / 2^0.7: ISO 281 eq. (2) with i = 2); ISO 76 rates
+it with i = 2 and Table 2's double-row X₀ = 1, Y₀ (twice a single row's).
 """
 
 import equinox as eqx
@@ -27,7 +28,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ...params import BallBearing, _as_float, check_range
-from ...ratings import life
+from ...ratings import life, static_safety
 from ..interface import (
     AbstractSupport,
     CondensedElements,
@@ -153,6 +154,36 @@ class DoubleRowSupport(AbstractSupport):
     def contact_ratings(self, rating, contacts: ContactLoads):
         """Each row's Q_ci, Q_ce at its own C_r = C_r / 2^0.7, in the contacts' column order."""
         return jnp.tile(jnp.stack(life.raceway_ratings(self.bearing, rating / ROWS**0.7)), ROWS)
+
+    def static_load_rating(self):
+        """ISO 76 C₀r with i = 2 rows (`static_safety.ball_static_load_rating`)."""
+        bearing = self.bearing
+        return static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
+                                                     bearing.nominal_contact_angle, rows=ROWS)
+
+    def equivalent_static_load(self, force):
+        """ISO 76 P₀r = F_r + Y₀ F_a, Table 2's double-row column (`double_row_equivalent_static_load`)."""
+        return static_safety.double_row_equivalent_static_load(force, self.bearing.nominal_contact_angle)
+
+    def pressure_safety(self, max_pressure):
+        return self.rows()[0].pressure_safety(max_pressure)
+
+    def rolling_element(self) -> str:
+        return "ball"
+
+    def hybrid(self) -> bool:
+        return self.rows()[0].hybrid()
+
+    def friction_kind(self, model: str) -> str | None:
+        """SKF's model only (its angular-contact "double_row" series); Palmgren's tables hold no
+        double-row row."""
+        return self.bearing.kind if model == "skf" else None
+
+    def friction_series(self) -> str | None:
+        return "double_row"
+
+    def nominal_contact_angle(self):
+        return self.bearing.nominal_contact_angle
 
     def envelope(self, contacts: ContactLoads):
         """The rows' `BallSupport.envelope`, the worst of the two."""

@@ -8,7 +8,7 @@ import jax.numpy as jnp
 
 from ... import overrolling
 from ...params import _as_float, _is_concrete
-from ...ratings import roller_life
+from ...ratings import roller_life, static_safety
 from ..interface import AbstractSupport, ContactLoads, check_orientation
 from . import roller_equilibrium
 from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways, RollerResults
@@ -73,6 +73,31 @@ class RollerSupport(AbstractSupport):
         return jnp.stack(roller_life.lamina_ratings(rating, self.bearing.roller_count, mean_roller_diameter(self.bearing),
                                                     self.raceways.cup_angle, self.raceways.pitch_diameter,
                                                     contacts.lamina_load.shape[-1]))
+
+    def static_load_rating(self):
+        """ISO 76 C₀r (`static_safety.roller_bearing_static_load_rating`: the mean roller diameter,
+        the cup angle)."""
+        return static_safety.roller_bearing_static_load_rating(self.bearing, self.raceways)
+
+    def equivalent_static_load(self, force):
+        """ISO 76 P₀r at the cup angle (`static_safety.roller_equivalent_static_load`)."""
+        return static_safety.roller_equivalent_static_load(force, self.raceways.cup_angle)
+
+    def pressure_safety(self, max_pressure):
+        """(4 000 MPa / p_max)² of its largest lamina pressure."""
+        return static_safety.pressure_safety(max_pressure, static_safety.ROLLER_PRESSURE_LIMIT,
+                                             static_safety.LINE_CONTACT_EXPONENT)
+
+    def rolling_element(self) -> str:
+        return "roller"
+
+    def friction_kind(self, model: str) -> str | None:
+        """Its own kind (cylindrical or tapered) in both friction models."""
+        return self.bearing.kind
+
+    def nominal_contact_angle(self):
+        """The cup angle (0 for a cylindrical roller bearing)."""
+        return self.raceways.cup_angle
 
     def envelope(self, contacts: ContactLoads):
         """The largest lamina approach / mean roller diameter (limit

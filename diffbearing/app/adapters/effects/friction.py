@@ -15,6 +15,7 @@ from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quanti
 from ..systems.bearing_set import SET, SET_SIZE
 from .life import SUPPLY_KEY
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+from ..systems.shaft_layout import layout_supports
 
 FRICTION_MODELS = ("palmgren", "skf")
 DEFAULT_SUPPLY = "oil_bath"
@@ -118,36 +119,47 @@ def _seals(v, kind: str) -> tuple:
     return row, counterface, seals
 
 
+def _friction_kinds(layout, model: str) -> list[str]:
+    """Each of the shaft's bearings' kind in the friction model `model` (`AbstractSupport.friction_kind`);
+    ValueError naming the bearing a model does not cover."""
+    kinds = []
+    for number, support in enumerate(layout_supports(layout)):
+        kind = support.friction_kind(model)
+        if kind is None:
+            raise ValueError(f"effects.friction: bearings[{number}] ({layout.kinds[number]}) is not covered by the "
+                             f"{model!r} friction model" + (" (try \"skf\")" if model == "palmgren" else ""))
+        kinds.append(kind)
+    return kinds
+
+
 def _shaft_skf_bearings(v, built) -> dict:
-    """Each of the shaft's bearings' SKF inputs (a tuple): the scene's friction.series where it is one
-    of every bearing's kind's, else each kind's default; d and D from each [[bearings]] entry. The oil
-    bath's drag and seals are a single bearing's keys (a shaft's bearings have their own)."""
+    """Each of the shaft's bearings' SKF inputs (a tuple): its type's series where its design fixes
+    one, else the scene's friction.series where it is one of every bearing's kind's, else each kind's
+    default; d and D from each [[bearings]] entry. The oil bath's drag and seals are a single
+    bearing's keys (a shaft's bearings have their own)."""
     layout, supply = built["shaft"], v.get("lubricant.supply", DEFAULT_SUPPLY)
     for key in ("friction.drag_loss_factor", "friction.seal"):
         if key in v:
             raise ValueError(f"{key}: a single bearing's key, not taken on a shaft (its bearings each have their own)")
     series = v.get("friction.series")
     bearings = []
-    for number, (bearing, (bore, outside)) in enumerate(zip(layout.bearings, layout.envelopes)):
-        kind = _kind(bearing)
-        if series is not None and series not in skf_friction.SERIES_CONSTANTS[kind]:
+    for number, (support, kind, (bore, outside)) in enumerate(zip(layout_supports(layout),
+                                                                  _friction_kinds(layout, "skf"), layout.envelopes)):
+        own = support.friction_series()
+        if series is not None and own is None and series not in skf_friction.SERIES_CONSTANTS[kind]:
             raise ValueError(f"friction.series: a series of every bearing's kind in SKF's friction model; bearings[{number}] "
                              f"is {kind}, whose series are {tuple(skf_friction.SERIES_CONSTANTS[kind])}, got {series!r}")
         if bore is None or outside is None:
             raise ValueError(f"bearings[{number}]: bore and outer_diameter are needed by effects.friction = 'skf' "
                              "(SKF's model reads d and D)")
-        bearings.append(SkfBearing(series or SKF_DEFAULT_SERIES[kind], SKF_SUPPLY[supply], bore, outside, None, None))
+        bearings.append(SkfBearing(own or series or SKF_DEFAULT_SERIES[kind], SKF_SUPPLY[supply], bore, outside, None,
+                                   None))
     return {"skf_bearing": tuple(bearings)}
-
-
-def _kind(bearing) -> str:
-    """The kind of a shaft layout's bearing (a BallBearing, or a (RollerBearing, RollerRaceways) pair)."""
-    return bearing[0].kind if isinstance(bearing, tuple) else bearing.kind
 
 
 def _shaft_constants(v, built) -> dict:
     """f₀ of each of the shaft's bearings (a tuple), the scene's f₁ or None."""
-    return {"friction_constants": {"f0": tuple(_f0(v, _kind(bearing)) for bearing in built["shaft"].bearings),
+    return {"friction_constants": {"f0": tuple(_f0(v, kind) for kind in _friction_kinds(built["shaft"], "palmgren")),
                                    "f1": _f1(v)}}
 
 
@@ -207,30 +219,38 @@ def _skf_outputs(moment: skf_friction.FrictionalMoment) -> dict:
             "friction.sliding_coefficient": moment.sliding_coefficient}
 
 
-def _skf_moment(bearing, skf: SkfBearing, lubricant, speed, force) -> skf_friction.FrictionalMoment:
-    """SKF's moments of a ball bearing, or a (RollerBearing, RollerRaceways) pair, under [Fx, Fy, Fz]
-    [N] at the relative ring speed [rad/s]: C₀ of ISO 76 for a ball bearing's α_F, Y = 0.4 cot α
-    of the cup for a tapered one (ISO 281)."""
-    options = (dict(axial_load_factor=roller_life.axial_load_factor(bearing[1].cup_angle))
-               if isinstance(bearing, tuple) else
-               dict(static_load_rating=static_safety.ball_bearing_static_load_rating(bearing)))
+def _skf_moment(kind, static_rating, angle, skf: SkfBearing, lubricant, speed, force) -> skf_friction.FrictionalMoment:
+    """SKF's moments of a bearing of `kind` under [Fx, Fy, Fz] [N] at the relative ring speed [rad/s]:
+    its C₀ [N] for a ball bearing's α_F, Y = 0.4 cot α of the cup (`angle` [rad]) for a tapered one
+    (ISO 281)."""
+    options = (dict(axial_load_factor=roller_life.axial_load_factor(angle)) if kind in ROLLER_KINDS
+               else dict(static_load_rating=static_rating))
     return skf_friction.frictional_moment(
-        _kind(bearing), skf.series, *_split(force), speed, lubricant.viscosity / lubricant.density, skf.bore,
+        kind, skf.series, *_split(force), speed, lubricant.viscosity / lubricant.density, skf.bore,
         skf.outside_diameter, supply=skf.supply, drag_loss_factor=skf.drag_loss_factor,
         inner_ring_width=skf.inner_ring_width, seal=skf.seal, counterface_diameter=skf.counterface_diameter,
         seals=skf.seals, **options)
 
 
+def _ball_skf_moment(bearing, skf, lubricant, speed, force):
+    return _skf_moment(bearing.kind, static_safety.ball_bearing_static_load_rating(bearing), None, skf, lubricant,
+                       speed, force)
+
+
+def _roller_skf_moment(bearing, raceways, skf, lubricant, speed, force):
+    return _skf_moment(bearing.kind, None, raceways.cup_angle, skf, lubricant, speed, force)
+
+
 def _ball_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    return _skf_outputs(_skf_moment(inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"],
-                                    _speed(inputs["operating"]), results["force"][:3]))
+    return _skf_outputs(_ball_skf_moment(inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"],
+                                         _speed(inputs["operating"]), results["force"][:3]))
 
 
 def _set_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's SKF moment from its own load, and the set's together."""
     speed = _speed(inputs["operating"])
-    torques = [_skf_moment(inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"], speed,
-                           results[f"set.bearings.{number}.force"][:3]).total for number in range(SET_SIZE)]
+    torques = [_ball_skf_moment(inputs["bearing"], inputs["skf_bearing"], inputs["lubricant"], speed,
+                                results[f"set.bearings.{number}.force"][:3]).total for number in range(SET_SIZE)]
     return _set_totals(torques, speed)
 
 
@@ -241,15 +261,17 @@ def _set_totals(torques, speed) -> dict:
 
 def _roller_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """SKF's moments of a roller bearing from its carried load."""
-    return _skf_outputs(_skf_moment((inputs["bearing"], inputs["raceways"]), inputs["skf_bearing"], inputs["lubricant"],
-                                    _speed(inputs["operating"]), results["force"][:3]))
+    return _skf_outputs(_roller_skf_moment(inputs["bearing"], inputs["raceways"], inputs["skf_bearing"],
+                                           inputs["lubricant"], _speed(inputs["operating"]), results["force"][:3]))
 
 
 def _shaft_skf_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each of the shaft's bearings' SKF moment from its own load, and the shaft's together."""
     layout = inputs["shaft"]
-    torques = [_skf_moment(bearing, skf, inputs["lubricant"], layout.speed, results["bearings.force"][number][:3]).total
-               for number, (bearing, skf) in enumerate(zip(layout.bearings, inputs["skf_bearing"]))]
+    supports = layout_supports(layout, settings)
+    torques = [_skf_moment(support.friction_kind("skf"), support.static_load_rating(), support.nominal_contact_angle(),
+                           skf, inputs["lubricant"], layout.speed, results["bearings.force"][number][:3]).total
+               for number, (support, skf) in enumerate(zip(supports, inputs["skf_bearing"]))]
     return _shaft_totals(torques, layout.speed)
 
 
@@ -267,14 +289,15 @@ def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
 
 
 def _shaft_friction(inputs: dict, settings: dict, results: dict) -> dict:
-    """Each of the shaft's bearings' Palmgren torque from its own load, and the shaft's together."""
+    """Each of the shaft's bearings' Palmgren torque from its own load (its P₀, C₀ and contact angle
+    as its type rates them), and the shaft's together."""
     layout, constants, lubricant = inputs["shaft"], inputs["friction_constants"], inputs["lubricant"]
     torques = []
-    for number, (bearing, f0) in enumerate(zip(layout.bearings, constants["f0"])):
+    for number, (support, f0) in enumerate(zip(layout_supports(layout, settings), constants["f0"])):
         force = results["bearings.force"][number][:3]
-        found = (_roller_torques(*bearing, f0, constants["f1"], lubricant, layout.speed, force)
-                 if isinstance(bearing, tuple) else
-                 _ball_torques(bearing, f0, constants["f1"], lubricant, layout.speed, force))
+        found = _torques(support.friction_kind("palmgren"), f0, constants["f1"], lubricant, layout.speed,
+                         2.0 * support.pitch_radius(), *_split(force), support.equivalent_static_load(force),
+                         support.static_load_rating(), support.nominal_contact_angle())
         torques.append(found["friction.torque"])
     return _shaft_totals(torques, layout.speed)
 

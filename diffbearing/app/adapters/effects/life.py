@@ -13,6 +13,7 @@ from ...formatting import column
 from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
 from ..systems.bearing_set import SET, SET_SIZE
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+from ..systems.shaft_layout import layout_supports
 
 
 def _life(inputs: dict, settings: dict, results: dict) -> dict:
@@ -212,20 +213,15 @@ def _set_modified(inputs: dict, settings: dict, results: dict) -> dict:
 
 def _shaft_modified(inputs: dict, settings: dict, results: dict) -> dict:
     """Each of the shaft's bearings' κ, a_ISO at its P_ref and L10rm (ISO 281 Annex B's C_u), and the
-    shaft's L10rm."""
+    shaft's L10rm, each bearing's ratings as its type gives them."""
     layout = inputs["shaft"]
     kappas, factors, lives = [], [], []
-    for number, bearing in enumerate(layout.bearings):
-        if isinstance(bearing, tuple):
-            roller, raceways = bearing
-            element, pitch = "roller", raceways.pitch_diameter
-            static_rating = static_safety.roller_bearing_static_load_rating(roller, raceways)
-            rating, _ = roller_load_ratings(roller, raceways)
-        else:
-            element, pitch = "ball", bearing.pitch_diameter
-            static_rating, rating = static_safety.ball_bearing_static_load_rating(bearing), life.ball_load_rating(bearing)
-        lubrication = _lubrication(element, pitch, static_rating, inputs, layout.speed)
-        _, a_iso, modified = _reference_modified(element, lubrication, rating, results["bearings.L10r"][number], inputs)
+    for number, support in enumerate(layout_supports(layout, settings)):
+        element = support.rolling_element()
+        lubrication = _lubrication(element, 2.0 * support.pitch_radius(), support.static_load_rating(), inputs,
+                                   layout.speed)
+        _, a_iso, modified = _reference_modified(element, lubrication, support.dynamic_load_rating(),
+                                                 results["bearings.L10r"][number], inputs)
         kappas.append(lubrication["life.viscosity_ratio"])
         factors.append(a_iso)
         lives.append(modified)

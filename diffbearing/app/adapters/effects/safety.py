@@ -14,6 +14,7 @@ from ...registry import SHAFT, Adapter, Block, Key, Output, register
 from ..systems.bearing_set import SET, SET_SIZE
 from .life import roller_load_ratings, table3_angle
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+from ..systems.shaft_layout import layout_supports
 
 HYBRID_OUTPUT = Output("safety.hybrid", "", "", "1 where the balls are silicon nitride: C0, s0 and p_limit are then "
                        "ISO 76's all-steel values", in_report=False)
@@ -87,16 +88,17 @@ def _set_safety(inputs: dict, settings: dict, results: dict) -> dict:
 
 
 def _shaft_safety(inputs: dict, settings: dict, results: dict) -> dict:
-    """Each of the shaft's bearings' C₀, P₀, s₀ and pressure safety from its own load (own frame)."""
-    found = [static_safety.bearing_static_safety(*(bearing if isinstance(bearing, tuple) else (bearing, None)),
-                                                 results["bearings.force"][number][:3],
-                                                 results["bearings.max_pressure"][number])
-             for number, bearing in enumerate(inputs["shaft"].bearings)]
-    rating, load, safety = (jnp.stack(column) for column in zip(*found))
-    hybrid = jnp.max(jnp.stack([_hybrid(bearing[0] if isinstance(bearing, tuple) else bearing)
-                                for bearing in inputs["shaft"].bearings]))
+    """Each of the shaft's bearings' C₀, P₀, s₀ and pressure safety from its own load (own frame),
+    as its type rates it (`AbstractSupport.static_load_rating` and the rest)."""
+    supports = layout_supports(inputs["shaft"], settings)
+    rating = jnp.stack([support.static_load_rating() for support in supports])
+    load = jnp.stack([support.equivalent_static_load(results["bearings.force"][number][:3])
+                      for number, support in enumerate(supports)])
+    safety = jnp.stack([support.pressure_safety(results["bearings.max_pressure"][number])
+                        for number, support in enumerate(supports)])
     return {"bearings.static_load_rating": rating, "bearings.equivalent_static_load": load,
-            "bearings.iso76": rating / load, "bearings.static_safety": safety, "safety.hybrid": hybrid}
+            "bearings.iso76": rating / load, "bearings.static_safety": safety,
+            "safety.hybrid": jnp.asarray(float(any(support.hybrid() for support in supports)))}
 
 
 def _hybrid_warning(values: dict) -> list[str]:

@@ -2,24 +2,23 @@
 with all bearings together, rigid (`shaft_equilibrium`, five unknowns) or, where the scene gives
 its `[[shaft.sections]]`, a Timoshenko beam (`flexible_shaft`); each bearing's loads, the shaft's
 deflection line, the system stiffness at a point, each bearing's life and the system's. A scene
-with `[[bearings]]` is a shaft: each entry holds the keys of a `[bearing]` table (ball, cylindrical
-or tapered roller bearings; a roller bearing's crowning as its own `profile` sub-table) plus its
+with `[[bearings]]` is a shaft: each entry holds the keys of a `[bearing]` table of a type with a
+`registry.Mounting` (ball, cylindrical or tapered roller, double-row angular-contact ball bearings;
+a roller bearing's crowning as its own `profile` sub-table) plus its
 `position` along the shaft, `orientation` ("+z" or "−z") and an optional axial `offset` (preload);
 the scene's `[material]` applies to all."""
 
 import dataclasses
 
-import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ....params import _as_float
 from ....ratings import life
 from ....ratings.reference_life import contact_reference_life
 from ....systems.flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, shaft_mesh, solve_flexible_shaft
 from ....systems.operating_clearance import SEAT_MATERIALS
-from ....systems.shaft_beam import BeamMesh, ShaftSections
+from ....systems.shaft_beam import ShaftSections
 from ....systems.shaft_equilibrium import (
     RESIDUAL_TOLERANCE,
     Shaft,
@@ -32,6 +31,7 @@ from ....systems.shaft_equilibrium import (
 from ...formatting import format_number, stiffness_lines
 from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, mountings, quantity, register
 from ...units import to_si
+from .shaft_layout import ShaftLayout, layout_supports
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import (
     ISO76_BALL_PRESSURE_LIMIT,
@@ -105,29 +105,6 @@ def _section_entry(index: int, table: dict, convert) -> dict:
             for name in ("from", "to", "outer_diameter", "inner_diameter")}
 
 
-class ShaftLayout(eqx.Module):
-    """The scene's shaft: its bearings (each its type's parameters, `Mounting.parameters`: a
-    BallBearing, or a (RollerBearing, RollerRaceways) pair) and their types (`bearing.type`), their
-    positions and offsets [m] and orientations (±1), the loads, the shaft speed
-    [rad/s], the reference point of the displacement and stiffness [m], each bearing's bore and
-    outer diameter [m] (None where its entry gives none; read by the ratings that need them), each
-    ball bearing's shoulder depths [h_i, h_o] [m] (None where its entry gives no shoulder diameters,
-    and for a roller bearing), and for a flexible shaft its sections and mesh (None: rigid)."""
-
-    bearings: tuple
-    positions: jax.Array = eqx.field(converter=_as_float)
-    offsets: jax.Array = eqx.field(converter=_as_float)
-    loads: ShaftLoads
-    speed: jax.Array = eqx.field(converter=_as_float)
-    stiffness_at: jax.Array = eqx.field(converter=_as_float)
-    orientations: tuple = eqx.field(static=True)
-    envelopes: tuple = ()
-    shoulders: tuple = ()
-    sections: ShaftSections | None = None
-    mesh: BeamMesh | None = eqx.field(static=True, default=None)
-    kinds: tuple = eqx.field(static=True, default=())
-
-
 def _sections(v, positions, loads) -> tuple:
     """(ShaftSections, BeamMesh) of `[[shaft.sections]]`, or (None, None) for a rigid shaft."""
     if "shaft.sections" not in v:
@@ -143,7 +120,8 @@ def _sections(v, positions, loads) -> tuple:
 
 def _check_spacing(entries) -> None:
     """Two bearings' centres at least one rolling element apart (closer, their rows would overlap: a
-    double-row bearing is not two [[bearings]] at one position); ValueError names the later one."""
+    double-row bearing is one entry of type double_row_angular_contact_ball, not two at one
+    position); ValueError names the later one."""
     size = lambda entry: max(entry.get(f"bearing.{name}", 0.0) for name in ("ball_diameter", "roller_diameter",
                                                                             "roller_large_diameter"))
     order = sorted(range(len(entries)), key=lambda index: entries[index]["position"])
@@ -162,7 +140,10 @@ def _layout(v, built) -> dict:
         reads = Reads({**shared, **entry})
         envelopes.append((reads.get("bearing.bore"), reads.get("bearing.outer_diameter")))
         mounting = mountings()[entry["bearing.type"]]
-        bearings.append(mounting.parameters(reads))
+        try:
+            bearings.append(mounting.parameters(reads))
+        except ValueError as error:
+            raise ValueError(f"bearings[{index}]: {str(error).replace('bearing.', '')}") from None
         shoulders.append(None)
         if mounting.shoulders is not None:
             try:
@@ -186,13 +167,6 @@ def _layout(v, built) -> dict:
         tuple(entry["bearing.type"] for entry in v["bearings"]))}
 
 
-def _supports(layout: ShaftLayout, settings: dict):
-    """Each bearing as its type mounts it (`Mounting.support`)."""
-    return tuple(mountings()[kind].support(bearing, position, offset, orientation, settings)
-                 for kind, bearing, position, offset, orientation in zip(layout.kinds, layout.bearings, layout.positions,
-                                                                         layout.offsets, layout.orientations))
-
-
 def _life(support, contacts):
     """ISO/TS 16281 L10r [10⁶ rev] of one bearing from its contacts (`ratings.reference_life`)."""
     return contact_reference_life(contacts, support.contact_ratings(support.dynamic_load_rating(), contacts))
@@ -211,13 +185,23 @@ def _padded(own, count: int):
     return jnp.pad(own, (0, count - own.shape[0]), constant_values=jnp.nan)
 
 
+def _raceway_values(contacts, raceway: str) -> dict:
+    """Each element's load, peak pressure and (point contacts) angle at its most loaded contact on
+    `raceway` (a bearing with one contact column a raceway: that column's; a double-row bearing's:
+    the more loaded row's ball at that azimuth)."""
+    columns = contacts.on(raceway)
+    if len(columns) == 1:
+        pick = lambda values: values[:, columns[0]]
+    else:
+        chosen = jnp.asarray(columns)[jnp.argmax(contacts.load[:, columns], axis=1)][:, None]
+        pick = lambda values: jnp.take_along_axis(values, chosen, axis=1)[:, 0]
+    return {f"{raceway}_load": pick(contacts.load), f"{raceway}_max_pressure": pick(contacts.max_pressure),
+            f"{raceway}_contact_angle": None if contacts.angle is None else pick(contacts.angle)}
+
+
 def _element_values(contacts) -> dict:
-    """One bearing's per-element outputs from its contacts (one contact column per raceway)."""
-    inner, outer = contacts.on("inner")[0], contacts.on("outer")[0]
-    angles = (None, None) if contacts.angle is None else (contacts.angle[:, inner], contacts.angle[:, outer])
-    return {"azimuth": contacts.azimuth, "inner_load": contacts.load[:, inner], "outer_load": contacts.load[:, outer],
-            "inner_max_pressure": contacts.max_pressure[:, inner], "outer_max_pressure": contacts.max_pressure[:, outer],
-            "inner_contact_angle": angles[0], "outer_contact_angle": angles[1]}
+    """One bearing's per-element outputs from its contacts (`_raceway_values` of each raceway)."""
+    return {"azimuth": contacts.azimuth} | _raceway_values(contacts, "inner") | _raceway_values(contacts, "outer")
 
 
 def _elements(per_bearing) -> dict:
@@ -274,7 +258,7 @@ def _solve(layout: ShaftLayout, shaft: Shaft, stiffness: bool) -> dict:
 
 def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     layout = inputs["shaft"]
-    shaft = Shaft(_supports(layout, settings), layout.loads, layout.speed)
+    shaft = Shaft(layout_supports(layout, settings), layout.loads, layout.speed)
     solved = _solve(layout, shaft, settings["effects"].get("stiffness", False) is True)
     solution = solved.pop("solution")
     per_bearing = [support.contacts(local, layout.speed, own, state) for support, local, state, own

@@ -1,0 +1,69 @@
+"""Double-row angular-contact ball bearings (O arrangement, `bearings.ball.double_row`) on a shaft:
+a `[[bearings]]` entry of type "double_row_angular_contact_ball" holds one row's geometry (the keys
+of an angular-contact `[bearing]` table: its free contact angle, groove radii, balls a row), the
+rows' spacing and the bearing's axial clearance; its dynamic load rating, where given, is the whole
+bearing's. The shaft's effects read it through its interface: ISO/TS 16281 life over its four
+raceways, ISO 76 with i = 2 and Table 2's double-row X₀, Y₀, SKF's friction model (its "double_row"
+series), its overrolling frequencies."""
+
+import numpy as np
+
+from ....bearings.ball.double_row import DoubleRowSupport
+from ....params import ball_bearing
+from ...registry import Adapter, Mounting, quantity, register
+from ..materials import material
+from .ball import ball_model
+
+DOUBLE_ROW_TYPE = "double_row_angular_contact_ball"
+ROW_TYPE = "angular_contact_ball"  # each row's model
+REQUIRED = ("bearing.ball_diameter", "bearing.pitch_diameter", "bearing.balls", "bearing.contact_angle",
+            "bearing.row_spacing")
+
+
+def _parameters(reads):
+    """(one row's BallBearing, row spacing [m], axial clearance [m]) of a [[bearings]] entry;
+    ValueError naming the key of a bad value."""
+    assert reads["bearing.type"] == DOUBLE_ROW_TYPE
+    for key in REQUIRED:
+        if key not in reads:
+            raise ValueError(f"missing required key '{key}'")
+    ring = material(reads)
+    row = ball_bearing(
+        kind=ROW_TYPE, ball_diameter=reads["bearing.ball_diameter"], pitch_diameter=reads["bearing.pitch_diameter"],
+        balls=reads["bearing.balls"],
+        inner_groove_ratio=reads.get("bearing.inner_groove_ratio"), outer_groove_ratio=reads.get("bearing.outer_groove_ratio"),
+        inner_groove_radius=reads.get("bearing.inner_groove_radius"),
+        outer_groove_radius=reads.get("bearing.outer_groove_radius"),
+        contact_angle=reads["bearing.contact_angle"], ball_material=material(reads, "ball_", ring), ring_material=ring,
+        bore=reads.get("bearing.bore"), outer_diameter=reads.get("bearing.outer_diameter"),
+        dynamic_load_rating=reads.get("bearing.dynamic_load_rating"),
+    )
+    spacing, clearance = reads["bearing.row_spacing"], reads.get("bearing.axial_clearance", 0.0)
+    DoubleRowSupport(row, spacing, 0.0, clearance)  # its checks (bearing.row_spacing > 0, a finite clearance)
+    return row, spacing, clearance
+
+
+def _support(parameters, position, offset, orientation, settings) -> DoubleRowSupport:
+    row, spacing, clearance = parameters
+    return DoubleRowSupport(row, spacing, position, clearance, offset, model=ball_model(settings),
+                            orientation=orientation)
+
+
+def _describe(parameters) -> str:
+    row, spacing, clearance = parameters
+    return (f"double-row angular contact (O), 2 × {row.ball_count} balls, Dw = {float(row.ball_diameter) * 1e3:.4f} mm, "
+            f"α0 = {np.degrees(float(row.free_contact_angle)):.2f}°, rows {float(spacing) * 1e3:.2f} mm apart, axial "
+            f"clearance {float(clearance) * 1e6:.1f} µm")
+
+
+ADAPTER = register(Adapter(
+    name="double_row",
+    bearing_types=(DOUBLE_ROW_TYPE,),
+    keys={
+        "bearing.row_spacing": quantity("length", "double-row bearings: the axial distance between the rows' ball "
+                                                  "centres"),
+        "bearing.axial_clearance": quantity("length", "double-row angular-contact bearings: the inner ring's axial play "
+                                                      "between the rows' contacts at α0 (negative: preloaded; default 0)"),
+    },
+    mounting=Mounting(parameters=_parameters, support=_support, describe=_describe),
+))

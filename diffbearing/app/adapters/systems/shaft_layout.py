@@ -1,0 +1,48 @@
+"""A shaft scene's layout (`ShaftLayout`: its bearings as their types' parameters, their placement,
+the loads) and its bearings as supports (`layout_supports`), which the shaft's block and the
+shaft-level effects read (adapters/systems/shaft.py builds the layout)."""
+
+import equinox as eqx
+import jax
+
+from ....params import _as_float
+from ....systems.shaft_beam import BeamMesh, ShaftSections
+from ....systems.shaft_equilibrium import ShaftLoads
+from ...registry import mountings
+
+
+class ShaftLayout(eqx.Module):
+    """The scene's shaft: its bearings (each its type's parameters, `Mounting.parameters`, which
+    only its type's `Mounting` reads) and their types (`bearing.type`), their
+    positions and offsets [m] and orientations (±1), the loads, the shaft speed
+    [rad/s], the reference point of the displacement and stiffness [m], each bearing's bore and
+    outer diameter [m] (None where its entry gives none; read by the ratings that need them), each
+    ball bearing's shoulder depths [h_i, h_o] [m] (None where its entry gives no shoulder diameters,
+    and for a roller bearing), and for a flexible shaft its sections and mesh (None: rigid)."""
+
+    bearings: tuple
+    positions: jax.Array = eqx.field(converter=_as_float)
+    offsets: jax.Array = eqx.field(converter=_as_float)
+    loads: ShaftLoads
+    speed: jax.Array = eqx.field(converter=_as_float)
+    stiffness_at: jax.Array = eqx.field(converter=_as_float)
+    orientations: tuple = eqx.field(static=True)
+    envelopes: tuple = ()
+    shoulders: tuple = ()
+    sections: ShaftSections | None = None
+    mesh: BeamMesh | None = eqx.field(static=True, default=None)
+    kinds: tuple = eqx.field(static=True, default=())
+
+
+# The model options of the supports an input builder asks for their ratings and friction rows,
+# which no option changes (a builder has no settings; the blocks pass the scene's).
+NO_OPTIONS = {"effects": {}, "fidelity": {}}
+
+
+def layout_supports(layout: ShaftLayout, settings: dict = NO_OPTIONS):
+    """Each bearing as its type mounts it (`Mounting.support`): what the shaft and its effects read."""
+    return tuple(mountings()[kind].support(bearing, position, offset, orientation, settings)
+                 for kind, bearing, position, offset, orientation in zip(layout.kinds, layout.bearings, layout.positions,
+                                                                         layout.offsets, layout.orientations))
+
+
