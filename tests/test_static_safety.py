@@ -77,6 +77,18 @@ def test_equivalent_static_loads():
     assert float(roller(jnp.array([3000.0, 4000.0, 5000.0]), 0.0)) == pytest.approx(5000.0, rel=1e-14)
 
 
+def test_double_row_equivalent_static_loads():
+    """ISO 76 Table 2's double-row column, X₀ = 1 and Y₀ twice the single row's: P₀ = F_r + 0.92,
+    0.76, 0.66, 0.52 F_a at 15°, 25°, 30°, 40° (the values LYC prints for pairs back to back and SKF
+    for its 32 A series, 0.66), never below F_r, NaN outside 5°…45°."""
+    double = static_safety.double_row_equivalent_static_load
+    for angle, y0 in ((15.0, 0.92), (25.0, 0.76), (30.0, 0.66), (40.0, 0.52)):
+        assert float(double(jnp.array([600.0, 800.0, 2000.0]), np.radians(angle))) == pytest.approx(1000.0 + y0 * 2000.0,
+                                                                                                  rel=1e-12)
+    assert float(double(jnp.array([3000.0, 0.0, 0.0]), np.radians(30.0))) == pytest.approx(3000.0, rel=1e-15)
+    assert np.isnan(float(double(jnp.array([0.0, 0.0, 1.0]), np.radians(50.0))))
+
+
 def test_pressure_safety_at_the_static_rating():
     """A zero-clearance deep-groove bearing of ISO 76's conformity under F_r = C₀r: ISO 76 takes
     Q_max = 5 F_r / Z, the rigid rings give Q_max = F_r / Σ cos^{5/2} ψ_j (4.386 F_r / Z for 9
