@@ -85,6 +85,8 @@ def test_each_positions_element_load_is_its_more_loaded_rows(pulley):
     (('axial_clearance = "10 um"', 'inner_groove_radius = "5.8 mm"'),
      "bearings[0]: bearing: give exactly one of inner_groove_ratio and inner_groove_radius"),
     (('contact_angle = "30 deg"', ''), "bearings[0]: missing required key 'contact_angle'"),
+    (('contact_angle = "30 deg"', 'contact_angle = "50 deg"'),
+     "bearings[0].contact_angle: 50° is outside ISO 76 Table 2's 5° to 45°"),
 ])
 def test_bad_double_row_entries_are_refused(capsys, tmp_path, change, named):
     path = tmp_path / "bad.toml"

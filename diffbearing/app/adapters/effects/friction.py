@@ -15,7 +15,7 @@ from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quanti
 from ..systems.bearing_set import SET, SET_SIZE
 from .life import SUPPLY_KEY
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
-from ..systems.shaft_layout import layout_supports
+from ..systems.shaft_layout import check_static_ratings, layout_supports
 
 FRICTION_MODELS = ("palmgren", "skf")
 DEFAULT_SUPPLY = "oil_bath"
@@ -119,11 +119,11 @@ def _seals(v, kind: str) -> tuple:
     return row, counterface, seals
 
 
-def _friction_kinds(layout, model: str) -> list[str]:
-    """Each of the shaft's bearings' kind in the friction model `model` (`AbstractSupport.friction_kind`);
-    ValueError naming the bearing a model does not cover."""
+def _friction_kinds(layout, supports, model: str) -> list[str]:
+    """Each of the shaft's bearings' (`supports`) kind in the friction model `model`
+    (`AbstractSupport.friction_kind`); ValueError naming the bearing a model does not cover."""
     kinds = []
-    for number, support in enumerate(layout_supports(layout)):
+    for number, support in enumerate(supports):
         kind = support.friction_kind(model)
         if kind is None:
             raise ValueError(f"effects.friction: bearings[{number}] ({layout.kinds[number]}) is not covered by the "
@@ -143,8 +143,9 @@ def _shaft_skf_bearings(v, built) -> dict:
             raise ValueError(f"{key}: a single bearing's key, not taken on a shaft (its bearings each have their own)")
     series = v.get("friction.series")
     bearings = []
-    for number, (support, kind, (bore, outside)) in enumerate(zip(layout_supports(layout),
-                                                                  _friction_kinds(layout, "skf"), layout.envelopes)):
+    supports = layout_supports(layout)
+    for number, (support, kind, (bore, outside)) in enumerate(zip(supports, _friction_kinds(layout, supports, "skf"),
+                                                                  layout.envelopes)):
         own = support.friction_series()
         if series is not None and own is None and series not in skf_friction.SERIES_CONSTANTS[kind]:
             raise ValueError(f"friction.series: a series of every bearing's kind in SKF's friction model; bearings[{number}] "
@@ -159,7 +160,8 @@ def _shaft_skf_bearings(v, built) -> dict:
 
 def _shaft_constants(v, built) -> dict:
     """f₀ of each of the shaft's bearings (a tuple), the scene's f₁ or None."""
-    return {"friction_constants": {"f0": tuple(_f0(v, kind) for kind in _friction_kinds(built["shaft"], "palmgren")),
+    return {"friction_constants": {"f0": tuple(_f0(v, kind) for kind in _friction_kinds(
+        built["shaft"], layout_supports(built["shaft"]), "palmgren")),
                                    "f1": _f1(v)}}
 
 
@@ -388,7 +390,7 @@ ADAPTER = register(Adapter(
             _set_block("skf", "skf_bearing", _set_skf_friction),
             Block(name="shaft_friction", bearing_types=SHAFT, enabled_by=("friction", "palmgren"), requires=("shaft",),
                   inputs=("shaft", "lubricant", "friction_constants"), outputs=_shaft_outputs("M0 + M1"),
-                  compute=_shaft_friction),
+                  compute=_shaft_friction, validate=check_static_ratings),
             Block(name="shaft_skf_friction", bearing_types=SHAFT, enabled_by=("friction", "skf"), requires=("shaft",),
                   inputs=("shaft", "lubricant", "skf_bearing"), outputs=_shaft_outputs("(SKF)"),
                   compute=_shaft_skf_friction)),

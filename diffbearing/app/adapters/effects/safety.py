@@ -14,7 +14,7 @@ from ...registry import SHAFT, Adapter, Block, Key, Output, register
 from ..systems.bearing_set import SET, SET_SIZE
 from .life import roller_load_ratings, table3_angle
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
-from ..systems.shaft_layout import layout_supports
+from ..systems.shaft_layout import check_static_ratings, layout_supports
 
 HYBRID_OUTPUT = Output("safety.hybrid", "", "", "1 where the balls are silicon nitride: C0, s0 and p_limit are then "
                        "ISO 76's all-steel values", in_report=False)
@@ -191,5 +191,6 @@ ADAPTER = register(Adapter(
                         "(p_limit/p_max)^3 (ball) or ^2 (roller)", in_report=False), HYBRID_OUTPUT),
         compute=_shaft_safety,
         checks=_shaft_checks,
+        validate=check_static_ratings,
     )),
 ))

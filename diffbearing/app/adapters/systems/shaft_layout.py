@@ -4,6 +4,8 @@ shaft-level effects read (adapters/systems/shaft.py builds the layout)."""
 
 import equinox as eqx
 import jax
+import jax.numpy as jnp
+import numpy as np
 
 from ....params import _as_float
 from ....systems.shaft_beam import BeamMesh, ShaftSections
@@ -46,3 +48,15 @@ def layout_supports(layout: ShaftLayout, settings: dict = NO_OPTIONS):
                                                                          layout.offsets, layout.orientations))
 
 
+
+
+def check_static_ratings(settings: dict, inputs: dict) -> None:
+    """ValueError naming the [[bearings]] entry whose ISO 76 equivalent static load is undefined
+    (a ball bearing's nominal contact angle outside Table 2's 5°…45°), before a shaft's safety or
+    friction reads it (a `Block.validate`)."""
+    for number, support in enumerate(layout_supports(inputs["shaft"], settings)):
+        load = support.equivalent_static_load(jnp.array([0.0, 0.0, 1.0]))
+        if not isinstance(load, jax.core.Tracer) and not bool(jnp.isfinite(load)):
+            angle = float(np.degrees(support.nominal_contact_angle()))
+            raise ValueError(f"bearings[{number}].contact_angle: {angle:.4g}° is outside ISO 76 Table 2's 5° to 45° "
+                             "(its equivalent static load, read by effects.safety and effects.friction)")
