@@ -20,6 +20,7 @@ from .bearings.ball.ball_equilibrium import (
 )
 from .bearings.ball.ball_support import BallSupport as BallSupport
 from .bearings.ball.double_row import DoubleRowSupport as DoubleRowSupport
+from .bearings.ball.four_point import FourPointSupport as FourPointSupport
 from .bearings.ball.groove_chamfer import chamfer_height as chamfer_height, limit_point_angle as limit_point_angle
 from .bearings.ball.raceway_contact import (
     contact_constants as contact_constants,
@@ -165,6 +166,11 @@ from .systems.shaft_equilibrium import (
     shaft_force as shaft_force,
     shaft_stiffness as shaft_stiffness,
     solve_shaft as solve_shaft,
+)
+from .systems.static_capacity import (
+    CapacityPoint as CapacityPoint,
+    capacity_curve as capacity_curve,
+    capacity_point as capacity_point,
 )
 from .app.model import build_model as build_model, run_model as run_model
 from .app.rotor_handoff import (

@@ -245,7 +245,8 @@ def test_examples_lists_every_packaged_scene(capsys):
     assert code == 0 and set(listed) == {"aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
                                          "starved_roller", "tapered_roller", "tapered_roller_bearing",
                                          "cylindrical_roller_bearing", "mounted_6411", "spindle_pair", "gearbox_shaft",
-                                         "gearbox_6411_ratings", "flexible_shaft", "double_row_pulley"}
+                                         "gearbox_6411_ratings", "flexible_shaft", "double_row_pulley",
+                                         "slewing_ring"}
     for name, description in listed.items():
         assert description and f"{name}" in out and description in out
     assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)
@@ -258,7 +259,8 @@ def test_examples_lists_every_packaged_scene(capsys):
                                   pytest.param("spindle_pair", marks=pytest.mark.slow),
                                   pytest.param("gearbox_shaft", marks=pytest.mark.slow),
                                   pytest.param("flexible_shaft", marks=pytest.mark.slow),
-                                  pytest.param("double_row_pulley", marks=pytest.mark.slow)])
+                                  pytest.param("double_row_pulley", marks=pytest.mark.slow),
+                                  pytest.param("slewing_ring", marks=pytest.mark.slow)])
 def test_every_example_runs_by_name(capsys, tmp_path, name):
     """`diffbearing run NAME` runs each packaged example to exit 0 and writes its JSON."""
     path = tmp_path / "out.json"

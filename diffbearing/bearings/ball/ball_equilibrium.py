@@ -387,7 +387,7 @@ def _ball_step(positions, args):
     return -_solve_ball_blocks(_ball_blocks(linear, positions.shape), residual[..., None], free.scale)[..., 0]
 
 
-def _ball_tangent_solve(linear, rhs):
+def ball_tangent_solve(linear, rhs):
     """x (Z, 2) with linear(x) = rhs for the balls' linearised residual, block by block (`_ball_blocks`)."""
     return jnp.linalg.solve(_ball_blocks(linear, rhs.shape), rhs[..., None])[..., 0]
 
@@ -462,7 +462,7 @@ def _balls_in_equilibrium(start, displacement, bearing, operating, model, table,
     centres = inner_groove_centres(bearing, displacement)
     free = jax.lax.stop_gradient(_free_ball_equations(bearing, operating, centres, model, table))
     return implicit_root(_ball_equations, start, (centres, bearing, operating, model, table, free), solve,
-                         _ball_tangent_solve)
+                         ball_tangent_solve)
 
 
 def solved_ball_positions(ball_centres, displacement, bearing: BallBearing, operating: Operating, model: BallModel,

@@ -145,21 +145,16 @@ class DoubleRowSupport(AbstractSupport):
                             columns("angle"), columns("approach"), found[0].raceways * ROWS, "point")
 
     def dynamic_load_rating(self):
-        """`bearing.dynamic_load_rating` where given (the whole bearing's, as a catalogue gives it),
-        else ISO 281 eq. (2) with i = 2 rows: 2^0.7 × one row's."""
-        if self.bearing.dynamic_load_rating is not None:
-            return self.bearing.dynamic_load_rating
-        return ROWS**0.7 * life.basic_dynamic_load_rating(self.bearing)
+        """`two_row_dynamic_load_rating`."""
+        return two_row_dynamic_load_rating(self.bearing)
 
     def contact_ratings(self, rating, contacts: ContactLoads):
-        """Each row's Q_ci, Q_ce at its own C_r = C_r / 2^0.7, in the contacts' column order."""
-        return jnp.tile(jnp.stack(life.raceway_ratings(self.bearing, rating / ROWS**0.7)), ROWS)
+        """Each row's Q_ci, Q_ce at its own C_r, in the contacts' column order (`two_row_contact_ratings`)."""
+        return two_row_contact_ratings(self.bearing, rating)
 
     def static_load_rating(self):
-        """ISO 76 C₀r with i = 2 rows (`static_safety.ball_static_load_rating`)."""
-        bearing = self.bearing
-        return static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
-                                                     bearing.nominal_contact_angle, rows=ROWS)
+        """`two_row_static_load_rating`."""
+        return two_row_static_load_rating(self.bearing)
 
     def equivalent_static_load(self, force):
         """ISO 76 P₀r = F_r + Y₀ F_a, Table 2's double-row column (`double_row_equivalent_static_load`)."""
@@ -196,6 +191,27 @@ class DoubleRowSupport(AbstractSupport):
         found = [self.rows()[0].frequencies(speed, _row_columns(contacts, row)) for row in range(ROWS)]
         first = jnp.sum(contacts.load[:, 0]) >= jnp.sum(contacts.load[:, 2])
         return jax.tree.map(lambda one, two: jnp.where(first, one, two), *found)
+
+
+def two_row_dynamic_load_rating(bearing: BallBearing):
+    """C_r [N] of a bearing of two rows of `bearing`'s balls: `bearing.dynamic_load_rating` where
+    given (the whole bearing's, as a catalogue gives it), else ISO 281 eq. (2) with i = 2 rows,
+    2^0.7 × one row's."""
+    if bearing.dynamic_load_rating is not None:
+        return bearing.dynamic_load_rating
+    return ROWS**0.7 * life.basic_dynamic_load_rating(bearing)
+
+
+def two_row_contact_ratings(bearing: BallBearing, rating):
+    """(4,) [N] each row's Q_ci, Q_ce (ISO/TS 16281 eqs. (19)–(20)) at its own C_r = C_r / 2^0.7,
+    columns (inner, outer) row by row."""
+    return jnp.tile(jnp.stack(life.raceway_ratings(bearing, rating / ROWS**0.7)), ROWS)
+
+
+def two_row_static_load_rating(bearing: BallBearing):
+    """ISO 76 C₀r [N] with i = 2 rows at the nominal contact angle (`static_safety.ball_static_load_rating`)."""
+    return static_safety.ball_static_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
+                                                 bearing.nominal_contact_angle, rows=ROWS)
 
 
 def _row_columns(contacts: ContactLoads, row: int) -> ContactLoads:

@@ -272,9 +272,10 @@ def validity_errors(approach, angle, subject: str, lowest=None) -> list[str]:
     contact angle [rad] (`low_shoulder_angle`)."""
     errors = []
     if lowest is not None and float(lowest) < -LOW_SHOULDER_ROUNDING:
-        errors.append(f"{subject} outside the model: a ball loaded at α = {np.degrees(float(lowest)):.1f}° on the "
-                      "angular-contact bearing's low-shoulder side (its axial load, −z, pushes the inner ring towards "
-                      "the open side: reverse operating.force[2] or the bearing)")
+        errors.append(f"{subject} outside the model: a ball loaded at α = {np.degrees(float(lowest)):.1f}° past its "
+                      "raceway's edge (an angular-contact bearing's low-shoulder side, where its axial load, −z, pushes "
+                      "the inner ring towards the open side: reverse operating.force[2] or the bearing; a four-point "
+                      "bearing's groove bottom, past which the other half takes the contact)")
     if float(approach) > ball_validity.MAX_APPROACH_FRACTION:
         errors.append(f"{subject} outside the model: a contact approach of {float(approach) * 100:.3g} % of Dw passes "
                       f"the limit of {ball_validity.MAX_APPROACH_FRACTION * 100:g} % of Dw (Hertz theory's small "
