@@ -21,6 +21,11 @@ from .bearings.ball.ball_equilibrium import (
 from .bearings.ball.ball_support import BallSupport as BallSupport
 from .bearings.ball.double_row import DoubleRowSupport as DoubleRowSupport
 from .bearings.ball.four_point import FourPointSupport as FourPointSupport
+from .bearings.ball.self_aligning import (
+    SelfAligningSupport as SelfAligningSupport,
+    self_aligning_row as self_aligning_row,
+    self_aligning_support as self_aligning_support,
+)
 from .bearings.ball.groove_chamfer import chamfer_height as chamfer_height, limit_point_angle as limit_point_angle
 from .bearings.ball.raceway_contact import (
     contact_constants as contact_constants,

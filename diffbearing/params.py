@@ -22,6 +22,7 @@ import jax.numpy as jnp
 import numpy as np
 
 BALL_BEARING_KINDS = ("deep_groove_ball", "angular_contact_ball")
+OUTER_RACEWAYS = ("groove", "sphere")  # a ball bearing's outer raceway (`BallBearing.outer_raceway`)
 MAX_MISALIGNMENT = 0.05  # rad: the small-angle limit of an imposed ring tilt (sin θ ≈ θ within 0.04 %)
 
 
@@ -157,6 +158,9 @@ class BallBearing(eqx.Module):
     # A negative clearance (preloaded bearing): the diametral interference ι = −G_r ≥ 0 [m]; the
     # free contact angle is then 0 and every ball is squeezed by ι/2 at Δ = 0.
     interference: np.ndarray = eqx.field(converter=_as_float, default=0.0)
+    # "groove": the outer raceway a groove of radius f_o D_w (f_o ≤ 1); "sphere": a self-aligning
+    # bearing's spherical raceway, of radius f_o D_w about the bearing's centre (f_o > 1)
+    outer_raceway: str = eqx.field(static=True, default="groove")
 
     def __check_init__(self):
         check_range("bearing.radial_clearance", -self.interference if _is_concrete(self.interference) else None,
@@ -168,7 +172,12 @@ class BallBearing(eqx.Module):
         check_range("bearing.ball_diameter", self.ball_diameter, low=0.0, unit=" m")
         check_range("bearing.pitch_diameter", self.pitch_diameter, low=0.0, unit=" m")
         check_range("bearing.inner_groove_ratio", self.inner_groove_ratio, low=0.5, high=1.0, high_open=False)
-        check_range("bearing.outer_groove_ratio", self.outer_groove_ratio, low=0.5, high=1.0, high_open=False)
+        if self.outer_raceway not in OUTER_RACEWAYS:
+            raise ValueError(f"outer_raceway must be one of {OUTER_RACEWAYS}, got {self.outer_raceway!r}")
+        if self.outer_raceway == "groove":
+            check_range("bearing.outer_groove_ratio", self.outer_groove_ratio, low=0.5, high=1.0, high_open=False)
+        else:
+            check_range("bearing.outer_groove_ratio", self.outer_groove_ratio, low=1.0, why="a sphere about the centre")
         check_range("bearing.contact_angle", self.free_contact_angle, low=0.0, high=math.pi / 2, low_open=False, unit=" rad")
         check_range("bearing.dynamic_load_rating", self.dynamic_load_rating, low=0.0, unit=" N")
         if _is_concrete(self.ball_diameter, self.pitch_diameter):
@@ -252,6 +261,7 @@ def ball_bearing(
     bore=None,
     outer_diameter=None,
     dynamic_load_rating=None,
+    outer_raceway: str = "groove",
 ) -> BallBearing:
     """Build a `BallBearing` from the quantities a drawing gives (SI units).
 
@@ -283,7 +293,7 @@ def ball_bearing(
         outer_groove_ratio=fo, free_contact_angle=contact_angle, ball_material=ball_material,
         ring_material=ring_material, ball_count=balls, kind=kind, bore=bore,
         outer_diameter=outer_diameter, dynamic_load_rating=dynamic_load_rating,
-        interference=0.0 if radial_clearance is None else interference,
+        interference=0.0 if radial_clearance is None else interference, outer_raceway=outer_raceway,
     )
 
 

@@ -96,8 +96,8 @@ def test_an_axial_load_against_the_low_shoulder_exits_3(tmp_path, capsys):
     path.write_text(LOW_SHOULDER_SCENE)
     assert cli.main(["run", str(path)]) == 3
     err = capsys.readouterr().err
-    assert "equilibrium outside the model: a ball loaded at α = -41.6° on the angular-contact bearing's " \
-           "low-shoulder side" in err and len(err.strip().splitlines()) == 1
+    assert "equilibrium outside the model: a ball loaded at α = -41.6° past its raceway's edge (an angular-contact " \
+           "bearing's low-shoulder side" in err and len(err.strip().splitlines()) == 1
     assert cli.main(["run", str(path), "--set", 'operating.force=["0 N", "0 N", "2 kN"]']) == 0
 
 

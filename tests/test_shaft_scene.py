@@ -8,7 +8,8 @@ import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
-from diffbearing.app.adapters.systems.shaft import PERMISSIBLE_MISALIGNMENT, misalignment_warnings
+from diffbearing.app.adapters.systems.shaft import misalignment_warnings
+from diffbearing.bearings.interface import RIGID_MISALIGNMENT
 from diffbearing.app.adapters.systems.shaft_layout import layout_supports
 from diffbearing.systems.flexible_shaft import flexible_shaft, solve_flexible_shaft
 from diffbearing.systems.shaft_equilibrium import Shaft
@@ -82,16 +83,17 @@ def test_one_bearing_shaft_is_the_single_bearing_run(tmp_path):
     # short of the 10′ a rigid bearing permits
     tilt = float(np.hypot(*single.values["displacement"][3:]))
     assert any(f"tilts freely by {tilt * 1e3:.3g} mrad" in line for line in single.problems[1])
-    assert (tilt > PERMISSIBLE_MISALIGNMENT) == any("its rings tilt" in line for line in shaft.problems[1])
+    assert (tilt > RIGID_MISALIGNMENT) == any("its rings tilt" in line for line in shaft.problems[1])
 
 
 def test_a_bearing_tilted_beyond_ten_arcmin_is_warned_of():
     """A bearing's rings tilted against each other by more than 10′ (2.909 mrad), on either axis:
-    a warning naming the bearing and the tilt; within it, none."""
+    a warning naming the bearing and the tilt; within it, none; a bearing that permits 2.5° (a
+    self-aligning one) tilted by 1.01 × 10′, none."""
     limit = np.radians(10.0 / 60.0)
     tilts = np.array([[0.0, 0.0, 0.0, 0.99 * limit, 0.0], [0.0, 0.0, 0.0, 0.6 * limit, 0.9 * limit],
-                      [0.0, 0.0, 0.0, 0.0, -1.01 * limit]])
-    warnings = misalignment_warnings(tilts)
+                      [0.0, 0.0, 0.0, 0.0, -1.01 * limit], [0.0, 0.0, 0.0, 0.0, -1.01 * limit]])
+    warnings = misalignment_warnings(tilts, [limit, limit, limit, np.radians(2.5)])
     assert len(warnings) == 2
     assert warnings[0].startswith(f"bearing 1: its rings tilt {np.hypot(0.6, 0.9) * limit * 1e3:.3g} mrad")
     assert warnings[1].startswith("bearing 2: its rings tilt 2.94 mrad (10.1′)")

@@ -43,6 +43,7 @@ SPEED_STAGES = tuple(((1.0 + stage) / 4.0) ** 0.5 for stage in range(4))  # plai
 RING_STEP_TOLERANCE = 1e-11  # a stage stops when every scaled ring step component is below this × (1 + |y|)
 RING_MAX_STEPS = 100  # Newton steps per stage
 TURNED = np.array([1.0, -1.0, -1.0, 1.0, -1.0])  # P: a bearing turned by π about x
+RIGID_MISALIGNMENT = float(np.radians(10.0 / 60.0))  # rad: `AbstractSupport.permissible_misalignment`'s default
 
 
 class CondensedElements(eqx.Module):
@@ -192,6 +193,13 @@ class AbstractSupport(eqx.Module):
         """α [rad]: the nominal contact angle its ratings and friction loads read (0 for radial
         contact; a tapered roller bearing's cup angle)."""
         return 0.0
+
+    def permissible_misalignment(self):
+        """The largest tilt [rad] of its inner ring against its outer ring the catalogues permit:
+        10′ for a rigid rolling bearing (deep-groove ball 2′–10′, angular-contact 2′, cylindrical
+        roller 3′–4′: SKF Rolling bearings catalogue, 2018, "Permissible misalignment" of each
+        type) unless the type says otherwise."""
+        return RIGID_MISALIGNMENT
 
     @abc.abstractmethod
     def envelope(self, contacts: ContactLoads):

@@ -26,15 +26,35 @@ FC_RATIO = np.array([0.01, 0.02, 0.03, 0.04, 0.05, 0.06, 0.07, 0.08, 0.09, 0.10,
                       0.20, 0.22, 0.24, 0.26, 0.28, 0.30, 0.32, 0.34, 0.36, 0.38, 0.40])
 FC_VALUE = np.array([29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5, 57.5, 58.8, 59.6, 59.9,
                       59.9, 59.6, 59.0, 58.2, 57.1, 56.0, 54.6, 53.2, 51.7, 50.0, 48.4])
-BM_BALL = 1.3
+# ISO 281:2007 Table 2, self-aligning ball bearings, at every 0.01 of D_w cos α / D_pw from 0.01
+# to 0.40 (GOST 18855-2013; its 16.6 at 0.06, out of the column's steady rise, read as 18.6)
+SELF_ALIGNING_FC_RATIO = np.round(np.arange(1, 41) * 0.01, 2)
+SELF_ALIGNING_FC_VALUE = np.array([9.9, 12.4, 14.3, 15.9, 17.3, 18.6, 19.9, 21.1, 22.3, 23.4, 24.5, 25.6, 26.6, 27.7,
+                                   28.7, 29.7, 30.7, 31.7, 32.6, 33.5, 34.4, 35.2, 36.1, 36.8, 37.5, 38.2, 38.8, 39.4,
+                                   39.9, 40.3, 40.6, 40.9, 41.1, 41.2, 41.3, 41.3, 41.2, 41.0, 40.7, 40.4])
+BM_BALL = 1.3  # ISO 281 Table 1: radial and angular-contact ball bearings, self-aligning ones too
 
 def basic_dynamic_load_rating(bearing: BallBearing):
     """ISO 281 basic dynamic radial load rating C_r [N] of a single-row ball bearing from its geometry."""
-    angle = bearing.nominal_contact_angle
+    return _dynamic_load_rating(bearing, jnp.interp(_diameter_ratio(bearing), FC_RATIO, FC_VALUE), rows=1)
+
+
+def self_aligning_load_rating(bearing: BallBearing, rows=2):
+    """ISO 281 C_r [N] of a self-aligning ball bearing of `rows` rows of `bearing`'s balls, f_c of
+    Table 2's self-aligning column."""
+    return _dynamic_load_rating(bearing, jnp.interp(_diameter_ratio(bearing), SELF_ALIGNING_FC_RATIO,
+                                                    SELF_ALIGNING_FC_VALUE), rows)
+
+
+def _diameter_ratio(bearing: BallBearing):
+    return bearing.ball_diameter * jnp.cos(bearing.nominal_contact_angle) / bearing.pitch_diameter
+
+
+def _dynamic_load_rating(bearing: BallBearing, fc, rows):
+    """ISO 281 eq. (2): b_m f_c (i cos α)^0.7 Z^{2/3} D_w^1.8 (D_w ≤ 25.4 mm), else 3.647 b_m f_c
+    (i cos α)^0.7 Z^{2/3} D_w^1.4 [N]."""
     ball_mm = bearing.ball_diameter * 1e3
-    ratio = bearing.ball_diameter * jnp.cos(angle) / bearing.pitch_diameter
-    fc = jnp.interp(ratio, FC_RATIO, FC_VALUE)
-    common = BM_BALL * fc * jnp.cos(angle) ** 0.7 * bearing.ball_count ** (2.0 / 3.0)
+    common = BM_BALL * fc * (rows * jnp.cos(bearing.nominal_contact_angle)) ** 0.7 * bearing.ball_count ** (2.0 / 3.0)
     return jnp.where(ball_mm <= 25.4, common * ball_mm**1.8, common * 3.647 * ball_mm**1.4)
 
 

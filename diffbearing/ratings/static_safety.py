@@ -37,7 +37,13 @@ F0_VALUE = np.array([14.7, 14.9, 15.1, 15.3, 15.5, 15.7, 15.9, 16.1, 16.3, 16.5,
 # ISO 76:2006 Table 2, single-row angular-contact ball bearings (X₀ = 0.5): α → Y₀.
 Y0_ANGLE = np.radians(np.arange(5.0, 50.0, 5.0))
 Y0_VALUE = np.array([0.52, 0.50, 0.46, 0.42, 0.38, 0.33, 0.29, 0.26, 0.22])
+# ISO 76:2006 Table 1, self-aligning ball bearings: γ → f₀ (GOST 18854-2013, the same table)
+SELF_ALIGNING_F0_VALUE = np.array([1.9, 2.0, 2.0, 2.1, 2.1, 2.1, 2.2, 2.2, 2.3, 2.3, 2.4, 2.4, 2.4, 2.5, 2.5, 2.6,
+                                   2.6, 2.7, 2.7, 2.8, 2.8, 2.8, 2.9, 2.9, 3.0, 3.0, 3.1, 3.1, 3.2, 3.2, 3.3, 3.3,
+                                   3.4, 3.4, 3.5, 3.5, 3.6, 3.6, 3.7, 3.8, 3.8])
+SELF_ALIGNING_Y0_FACTOR = 0.44  # ISO 76 Table 2, double-row self-aligning: X₀ = 1, Y₀ = 0.44 cot α
 BALL_PRESSURE_LIMIT = 4.2e9  # Pa, ISO 76 §3.3: ball bearings other than self-aligning
+SELF_ALIGNING_PRESSURE_LIMIT = 4.6e9  # Pa, ISO 76 §3.3: self-aligning ball bearings
 ROLLER_PRESSURE_LIMIT = 4.0e9  # Pa, ISO 76 §3.3: roller bearings
 ROLLER_FACTOR = 44.0  # ISO 76 eq. (4) [N/mm²]
 POINT_CONTACT_EXPONENT, LINE_CONTACT_EXPONENT = 3.0, 2.0  # Q ∝ p³ (point), q ∝ p² (line), Hertz
@@ -50,6 +56,21 @@ def ball_static_load_rating(ball_count, ball_diameter, pitch_diameter, contact_a
     gamma = ball_diameter * jnp.cos(contact_angle) / pitch_diameter
     f0 = jnp.interp(gamma, F0_RATIO, F0_VALUE)
     return f0 * rows * ball_count * (ball_diameter * 1e3) ** 2 * jnp.cos(contact_angle)
+
+
+def self_aligning_static_load_rating(ball_count, ball_diameter, pitch_diameter, contact_angle, rows=2):
+    """ISO 76 C₀r = f₀ i Z D_w² cos α [N] of a self-aligning ball bearing, f₀ of Table 1's
+    self-aligning column at γ = D_w cos α / D_pw (held at its end beyond γ = 0.40)."""
+    gamma = ball_diameter * jnp.cos(contact_angle) / pitch_diameter
+    f0 = jnp.interp(gamma, F0_RATIO, SELF_ALIGNING_F0_VALUE)
+    return f0 * rows * ball_count * (ball_diameter * 1e3) ** 2 * jnp.cos(contact_angle)
+
+
+def self_aligning_equivalent_static_load(force, contact_angle):
+    """ISO 76 P₀r = max(F_r + 0.44 cot α F_a, F_r) [N] of a double-row self-aligning ball bearing
+    (Table 2: X₀ = 1, Y₀ = 0.44 cot α) under [Fx, Fy, Fz] [N], nominal angle α [rad] > 0."""
+    radial, axial = _radial_and_axial(force)
+    return radial + SELF_ALIGNING_Y0_FACTOR / jnp.tan(contact_angle) * axial
 
 
 def roller_static_load_rating(roller_count, roller_diameter, effective_length, pitch_diameter, contact_angle, rows=1):

@@ -1,19 +1,21 @@
-"""A double-row angular-contact ball bearing, O arrangement: two rows of balls between one solid
-inner ring and one solid outer ring, as `AbstractSupport`.
+"""A double-row angular-contact ball bearing: two rows of balls between one solid inner ring and
+one solid outer ring, as `AbstractSupport`.
 
 Row r (r = 1, 2) is the single-row ball model (`ball_equilibrium`, one row's geometry `bearing`)
-with its centre at z_r = ∓a/2 from the bearing's centre (a the row spacing) and its lines of
-contact diverging away from the bearing (back to back: row 1 faces +z, row 2 is turned, −z). The
+with its reference plane (its plane of inner groove centres) at z_r = ∓a/2 from the bearing's
+centre, a the row spacing. In O arrangement (back to back) the rows' lines of contact diverge
+away from the bearing (row 1 faces +z, row 2 is turned, −z); in X arrangement (face to face) they
+converge (row 1 turned, row 2 facing +z: a self-aligning bearing's rows, `self_aligning`). The
 rigid inner ring's displacement Δ about the bearing's centre moves row r's inner ring by
 
     Δ_r = P_r G(z_r) Δ + e ẑ,        F(Δ) = Σ_r G(z_r)ᵀ P_r F_row(Δ_r)
 
 (G, P as for a shaft's bearings, bearings/interface.py), with e = −s_a/2 from the bearing's axial
-clearance s_a [m] (each row backed off by half; negative: preloaded): the bearing is the
-back-to-back pair of its rows with the offset e and no spacer, its rows sharing one table of Hertz
-constants. With speed effects both rows' balls are carried as unknowns, stacked (2, Z, 2) [m], and
-condensed onto the ring row by row (M_r = P_r G(z_r) = dΔ_r/dΔ, `support_move`):
-S = Σ_r M_rᵀ S_r M_r, the balls' coupling J_XX⁻¹ J_XΔ_r M_r.
+clearance s_a [m] (each row backed off by half; negative: preloaded): the bearing is the pair of
+its rows (back to back or face to face) with the offset e and no spacer, its rows sharing one
+table of Hertz constants. With speed effects both rows' balls are carried as unknowns, stacked
+(2, Z, 2) [m], and condensed onto the ring row by row (M_r = P_r G(z_r) = dΔ_r/dΔ,
+`support_move`): S = Σ_r M_rᵀ S_r M_r, the balls' coupling J_XX⁻¹ J_XΔ_r M_r.
 
 Contacts: four columns a ball position, (row 1 inner, row 1 outer, row 2 inner, row 2 outer); the
 turned row's ball at its own azimuth ψ sits at −ψ in the bearing's frame, so its balls are
@@ -41,14 +43,18 @@ from .ball_equilibrium import BallModel
 from .ball_support import BallSupport
 
 ROWS = 2
-ROW_ORIENTATIONS = (1, -1)  # back to back (O): row 1 at −a/2 faces +z, row 2 at +a/2 faces −z
+# each row's facing (+1: +z) by arrangement: back to back (O), row 1 at −a/2 faces +z and row 2 at
+# +a/2 faces −z, their lines of contact diverging away from the bearing; face to face (X), turned
+ROW_ORIENTATIONS = {"back_to_back": (1, -1), "face_to_face": (-1, 1)}
 
 
 class DoubleRowSupport(AbstractSupport):
-    """A double-row angular-contact ball bearing in O arrangement on the shaft: each row's geometry
-    `bearing` (a single row's, its free contact angle α₀), the rows' centres `row_spacing` [m]
-    apart, its `axial_clearance` [m] (the inner ring's axial play between the rows' contacts at α₀;
-    negative: preloaded); placement as `BallSupport`."""
+    """A double-row angular-contact ball bearing on the shaft: each row's geometry `bearing` (a
+    single row's, its free contact angle α₀), the rows' reference planes `row_spacing` [m] apart
+    (each row's plane of inner groove centres, its `BallSupport`'s z), its `axial_clearance` [m]
+    (the inner ring's axial play between the rows' contacts at α₀; negative: preloaded), its rows
+    back to back (O, `arrangement` "back_to_back") or face to face (X, "face_to_face"); placement
+    as `BallSupport`."""
 
     bearing: BallBearing
     row_spacing: jax.Array = eqx.field(converter=_as_float)
@@ -57,9 +63,12 @@ class DoubleRowSupport(AbstractSupport):
     offset: jax.Array = eqx.field(converter=_as_float, default=0.0)
     model: BallModel = eqx.field(static=True, default=BallModel())
     orientation: int = eqx.field(static=True, default=1)
+    arrangement: str = eqx.field(static=True, default="back_to_back")
 
     def __check_init__(self):
         check_orientation(self.orientation)
+        if self.arrangement not in ROW_ORIENTATIONS:
+            raise ValueError(f"arrangement must be one of {tuple(ROW_ORIENTATIONS)}, got {self.arrangement!r}")
         check_range("bearing.row_spacing", self.row_spacing, low=0.0, unit=" m")
         check_range("bearing.axial_clearance", self.axial_clearance, unit=" m")
         if self.bearing.kind != "angular_contact_ball":
@@ -70,7 +79,7 @@ class DoubleRowSupport(AbstractSupport):
         """The two rows as single-row supports in the bearing's own frame (module docstring)."""
         half = 0.5 * self.row_spacing
         return tuple(BallSupport(self.bearing, side * half, -0.5 * self.axial_clearance, self.model, orientation)
-                     for side, orientation in zip((-1.0, 1.0), ROW_ORIENTATIONS))
+                     for side, orientation in zip((-1.0, 1.0), ROW_ORIENTATIONS[self.arrangement]))
 
     def _row_displacements(self, displacement):
         return tuple(support_displacement(displacement, row) for row in self.rows())

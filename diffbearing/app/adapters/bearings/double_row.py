@@ -9,7 +9,7 @@ series), its overrolling frequencies."""
 import numpy as np
 
 from ....bearings.ball.double_row import DoubleRowSupport
-from ....params import ball_bearing
+from ....params import ball_bearing, check_range
 from ...registry import Adapter, Mounting, quantity, register
 from ..materials import material
 from .ball import ball_model
@@ -39,8 +39,13 @@ def _parameters(reads):
         dynamic_load_rating=reads.get("bearing.dynamic_load_rating"),
     )
     spacing, clearance = reads["bearing.row_spacing"], reads.get("bearing.axial_clearance", 0.0)
-    DoubleRowSupport(row, spacing, 0.0, clearance)  # its checks (bearing.row_spacing > 0, a finite clearance)
-    return row, spacing, clearance
+    # the rows' planes of inner groove centres, where each row's model sits: in O arrangement each
+    # lies (f_i − ½) D_w sin α₀ inside its balls' plane
+    inset = float((row.inner_groove_ratio - 0.5) * row.ball_diameter * np.sin(row.free_contact_angle))
+    check_range("bearing.row_spacing", spacing, low=2.0 * inset, unit=" m",
+                why="2 (f_i − ½)·D_w·sin α0, the rows' inner groove centres apart")
+    DoubleRowSupport(row, spacing - 2.0 * inset, 0.0, clearance)  # its checks (a finite clearance)
+    return row, spacing - 2.0 * inset, clearance
 
 
 def _support(parameters, position, offset, orientation, settings) -> DoubleRowSupport:
@@ -51,8 +56,9 @@ def _support(parameters, position, offset, orientation, settings) -> DoubleRowSu
 
 def _describe(parameters) -> str:
     row, spacing, clearance = parameters
+    balls = float(spacing + 2.0 * (row.inner_groove_ratio - 0.5) * row.ball_diameter * np.sin(row.free_contact_angle))
     return (f"double-row angular contact (O), 2 × {row.ball_count} balls, Dw = {float(row.ball_diameter) * 1e3:.4f} mm, "
-            f"α0 = {np.degrees(float(row.free_contact_angle)):.2f}°, rows {float(spacing) * 1e3:.2f} mm apart, axial "
+            f"α0 = {np.degrees(float(row.free_contact_angle)):.2f}°, rows {balls * 1e3:.2f} mm apart, axial "
             f"clearance {float(clearance) * 1e6:.1f} µm")
 
 
@@ -61,7 +67,8 @@ ADAPTER = register(Adapter(
     bearing_types=(DOUBLE_ROW_TYPE,),
     keys={
         "bearing.row_spacing": quantity("length", "double-row bearings: the axial distance between the rows' ball "
-                                                  "centres"),
+                                                  "centres (the model's rows sit at their planes of inner groove "
+                                                  "centres, 2 (f_i − ½) D_w sin α0 closer)"),
         "bearing.axial_clearance": quantity("length", "double-row angular-contact bearings: the inner ring's axial play "
                                                       "between the rows' contacts at α0 (negative: preloaded; default 0)"),
     },

@@ -276,6 +276,8 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
         "bearings.max_pressure": jnp.stack([jnp.max(contacts.max_pressure) for contacts in per_bearing]),
         "bearings.validity": jax.lax.stop_gradient(jnp.stack([support.envelope(contacts) for support, contacts
                                                               in zip(shaft.supports, per_bearing)])),
+        "bearings.permissible_misalignment": jnp.stack([jnp.asarray(support.permissible_misalignment())
+                                                        for support in shaft.supports]),
     } | _elements(per_bearing) | _shoulders(layout, shaft, solution, per_bearing)
     if settings["effects"].get("life", False) is True:
         lives = [_life(support, contacts) for support, contacts in zip(shaft.supports, per_bearing)]
@@ -287,21 +289,16 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
     return out
 
 
-# rad: 10 arcmin, the largest permissible misalignment the catalogues give for rigid (not
-# self-aligning) rolling bearings: deep-groove ball bearings 2′–10′, angular-contact 2′, cylindrical
-# roller 3′–4′ (SKF Rolling bearings catalogue, 2018, "Permissible misalignment" of each type)
-PERMISSIBLE_MISALIGNMENT = np.radians(10.0 / 60.0)
-
-
-def misalignment_warnings(displacements) -> list[str]:
-    """A warning for each bearing whose inner ring tilts against its outer ring by more than
-    `PERMISSIBLE_MISALIGNMENT` (`displacements` (bearings, 5): [x, y, z, θx, θy] [m, rad]) — a shaft
-    on one bearing, or one bending steeply at it, which the catalogues do not allow."""
+def misalignment_warnings(displacements, limits) -> list[str]:
+    """A warning for each bearing whose inner ring tilts against its outer ring by more than its
+    `limits` [rad] (`AbstractSupport.permissible_misalignment`; `displacements` (bearings, 5):
+    [x, y, z, θx, θy] [m, rad]) — a shaft on one bearing, or one bending steeply at it, which the
+    catalogues do not allow."""
     tilts = np.hypot(np.asarray(displacements)[:, 3], np.asarray(displacements)[:, 4])
     return [f"bearing {number}: its rings tilt {tilt * 1e3:.3g} mrad ({np.degrees(tilt) * 60:.3g}′) against each other, "
-            f"beyond the {np.degrees(PERMISSIBLE_MISALIGNMENT) * 60:.0f}′ a rigid rolling bearing permits (a shaft held "
-            "by one bearing pivots on it: add a second bearing, or check the layout)"
-            for number, tilt in enumerate(tilts) if tilt > PERMISSIBLE_MISALIGNMENT]
+            f"beyond the {np.degrees(limit) * 60:.0f}′ the bearing permits (a shaft held by one bearing pivots on it: "
+            "add a second bearing, or check the layout)"
+            for number, (tilt, limit) in enumerate(zip(tilts, np.asarray(limits))) if tilt > limit]
 
 
 def _checks(values: dict) -> tuple[list[str], list[str]]:
@@ -314,7 +311,7 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
                 f"{ISO76_BALL_PRESSURE_LIMIT / 1e9:g} GPa"
                 for number, pressure in enumerate(np.asarray(values["bearings.max_pressure"]))
                 if pressure > ISO76_BALL_PRESSURE_LIMIT]
-    warnings += misalignment_warnings(values["bearings.displacement"])
+    warnings += misalignment_warnings(values["bearings.displacement"], values["bearings.permissible_misalignment"])
     for number, overrun in enumerate(np.asarray(values.get("bearings.shoulder_overrun", []))):
         shares = {f"balls.{side}.shoulder_share": np.nan_to_num(values[f"bearings.elements.{side}_shoulder_share"][number])
                   for side in ("inner", "outer")}
@@ -387,6 +384,8 @@ BLOCK = Block(
                "each bearing's largest approach / Dw (a roller bearing's / its mean roller diameter), largest "
                "|contact angle| and lowest loaded contact angle of an angular-contact bearing (model limits 1 %, "
                "90°, 0)", in_report=False),
+        Output("bearings.permissible_misalignment", "rad", "deg", "each bearing's largest tilt of its rings "
+               "the catalogues permit (10′ a rigid bearing, 2.5° a self-aligning one)", in_report=False),
         Output("bearings.elements.azimuth", "rad", "deg", "each bearing's element azimuths ψ in its own frame "
                "(NaN beyond its element count)", in_report=False),
         *(output for side in ("inner", "outer") for output in (
