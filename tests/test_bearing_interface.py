@@ -70,6 +70,9 @@ class SpringSupport(AbstractSupport):
     def static_load_rating(self):
         return jnp.asarray(4e4)
 
+    def equivalent_dynamic_load(self, force):
+        return jnp.sqrt(force[0] ** 2 + force[1] ** 2) + jnp.abs(force[2])
+
     def equivalent_static_load(self, force):
         return jnp.sqrt(force[0] ** 2 + force[1] ** 2) + 0.5 * jnp.abs(force[2])
 

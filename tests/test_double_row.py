@@ -114,6 +114,15 @@ def test_the_shaft_displacement_derivative_in_the_row_spacing_matches_central_di
     assert_jvp_matches_central_difference(displacement, jnp.asarray(SPACING), jnp.asarray(1.0), step=1e-6, rtol=1e-6)
 
 
+def test_its_equivalent_dynamic_load_is_iso_281s_double_row_column():
+    """ISO 281 Table 3, double row at 30°: P = F_r + 0.78 F_a up to e = 0.80, then 0.63 F_r + 1.24 F_a (1e-12)."""
+    bearing = _double_row()
+    np.testing.assert_allclose(bearing.equivalent_dynamic_load(jnp.array([3000.0, 0.0, 2000.0])),
+                               3000.0 + 0.78 * 2000.0, rtol=1e-12)
+    np.testing.assert_allclose(bearing.equivalent_dynamic_load(jnp.array([3000.0, 0.0, 2500.0])),
+                               0.63 * 3000.0 + 1.24 * 2500.0, rtol=1e-12)
+
+
 def test_bad_rows_are_refused():
     deep = ball_bearing(ball_diameter=11.1e-3, pitch_diameter=62.5e-3, balls=13, kind="deep_groove_ball",
                         inner_groove_ratio=0.52, outer_groove_ratio=0.53, radial_clearance=20e-6)

@@ -88,11 +88,16 @@ def test_each_positions_element_load_is_its_more_loaded_rows(pulley):
      "bearings[0]: bearing: give exactly one of inner_groove_ratio and inner_groove_radius"),
     (('contact_angle = "30 deg"', ''), "bearings[0]: missing required key 'contact_angle'"),
     (('contact_angle = "30 deg"', 'contact_angle = "50 deg"'),
+     "bearings[0].contact_angle: 50° is outside ISO 281 Table 3's 0° to 45°"),
+    (('contact_angle = "30 deg"', 'contact_angle = "50 deg"', 'life = true', 'life = false'),
      "bearings[0].contact_angle: 50° is outside ISO 76 Table 2's 5° to 45°"),
 ])
 def test_bad_double_row_entries_are_refused(capsys, tmp_path, change, named):
     path = tmp_path / "bad.toml"
-    path.write_text(SCENE.read_text().replace(*change))
+    text = SCENE.read_text()
+    for old, new in zip(change[::2], change[1::2]):
+        text = text.replace(old, new)
+    path.write_text(text)
     code = cli.main(["run", str(path)])
     err = capsys.readouterr().err
     assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err

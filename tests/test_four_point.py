@@ -237,3 +237,13 @@ def test_the_capacity_curve_meets_the_pressure_limit_and_rigid_ring_theory():
     np.testing.assert_allclose(points[2].moment, moment_end, rtol=3e-3)
     np.testing.assert_allclose([points[1].axial_load, points[1].moment], _rigid_ring_point(0.2, limit_load), rtol=3e-3)
     assert points[1].axial_load / axial_end + points[1].moment / moment_end == pytest.approx(1.14, abs=0.01)
+
+
+def test_its_equivalent_dynamic_load_is_the_qj_catalogue_rule():
+    """P = F_r + 0.66 F_a for F_a/F_r ≤ 0.95, else 0.6 F_r + 1.07 F_a at 35° (SKF and Schaeffler for
+    QJ bearings: ISO 281 Table 3's double-row row), 1e-12."""
+    support = _support()
+    np.testing.assert_allclose(support.equivalent_dynamic_load(jnp.array([3000.0, 4000.0, 4000.0])),
+                               5000.0 + 0.66 * 4000.0, rtol=1e-12)
+    np.testing.assert_allclose(support.equivalent_dynamic_load(jnp.array([0.0, 2000.0, 4000.0])),
+                               0.6 * 2000.0 + 1.07 * 4000.0, rtol=1e-12)

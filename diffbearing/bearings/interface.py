@@ -16,7 +16,8 @@ system needs of it (docs/extending.md, "Adding a bearing type"):
 * its contacts at a solved state, one typed result for every type (`ContactLoads`: per rolling
   element and contact the load, laminae, pressure, angle, approach; which raceway; point or line),
   which the effects read (`ratings.reference_life`), its ratings' inputs (`dynamic_load_rating`,
-  `contact_ratings`; ISO 76's `static_load_rating`, `equivalent_static_load`, `pressure_safety`;
+  `contact_ratings`, ISO 281's `equivalent_dynamic_load`; ISO 76's `static_load_rating`,
+  `equivalent_static_load`, `pressure_safety`;
   `rolling_element` for ISO 281's a_ISO; the friction models' rows, `friction_kind`), where a
   state stands against its envelope and its overrolling frequencies;
 * where its rolling elements leave the static split at speed (`carries_elements`), their state
@@ -155,6 +156,12 @@ class AbstractSupport(eqx.Module):
         """(C,) [N]: each contact column's ISO/TS 16281 rating per lamina, the lamina load of a
         raceway life of 10⁶ revolutions, from the dynamic load rating `rating` [N]
         (`ratings.reference_life`)."""
+
+    @abc.abstractmethod
+    def equivalent_dynamic_load(self, force):
+        """P [N]: ISO 281's equivalent dynamic load of the load [Fx, Fy, Fz] [N] the bearing carries
+        (its own frame), with the type's own X, Y (Table 3 or 8), for its basic rating life
+        L10 = (C_r/P)^p (`ratings.life.basic_life_exponent`)."""
 
     @abc.abstractmethod
     def static_load_rating(self):

@@ -49,19 +49,21 @@ def viscous_torque(f0, kinematic_viscosity, speed, pitch_diameter):
     return jnp.where(product >= LOW_SPEED_LIMIT, fast, 160e-7 * f0 * dm3) * 1e-3
 
 
+# bearing kind → P₁ [N] of HR 1 before its floor F_r, from (F_r, F_a [N], the contact angle [rad])
+FRICTION_LOADS = {
+    "deep_groove_ball": lambda radial, axial, angle: 3.3 * axial - 0.1 * radial,
+    "angular_contact_ball": lambda radial, axial, angle: axial - 0.1 * radial,
+    "tapered_roller": lambda radial, axial, angle: 2.0 * axial_load_factor(angle) * axial,
+    "cylindrical_roller": lambda radial, axial, angle: radial,
+}
+
+
 def friction_load(kind: str, radial, axial, contact_angle=0.0):
-    """P₁ [N] of HR 1 for F_r, F_a [N] (module docstring); `contact_angle` [rad] of a tapered bearing."""
-    if kind == "deep_groove_ball":
-        load = 3.3 * axial - 0.1 * radial
-    elif kind == "angular_contact_ball":
-        load = axial - 0.1 * radial
-    elif kind == "tapered_roller":
-        load = 2.0 * axial_load_factor(contact_angle) * axial
-    elif kind == "cylindrical_roller":
-        load = radial
-    else:
+    """P₁ [N] of HR 1 for F_r, F_a [N] (module docstring, `FRICTION_LOADS`), never below F_r;
+    `contact_angle` [rad] of a tapered bearing."""
+    if kind not in FRICTION_LOADS:
         raise ValueError(f"kind must be one of {tuple(PALMGREN_CONSTANTS)}, got {kind!r}")
-    return jnp.maximum(load, radial)
+    return jnp.maximum(FRICTION_LOADS[kind](radial, axial, contact_angle), radial)
 
 
 def load_torque(f1, load, pitch_diameter):

@@ -50,7 +50,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ..numerics import positive_power
-from ..params import BALL_BEARING_KINDS, _is_concrete, check_range
+from ..params import _is_concrete, check_range
 from .friction_torque import friction_power
 
 # Geometry constants by bearing series (SKF General Catalogue 6000, Friction, Table 3).
@@ -142,6 +142,9 @@ SEAL_CONSTANTS = {
 }
 
 SEALS = ("RS1", "RSH", "LS")  # the seal designations of SEAL_CONSTANTS
+# the kinds whose K_L (rollers' length) the replenishment and drag terms need
+ROLLER_LENGTH_KINDS = tuple(dict.fromkeys(key.split(".")[0] for key, (_, length) in BEARING_TYPE_CONSTANTS.items()
+                                          if length is not None))
 KINDS = tuple(SERIES_CONSTANTS)
 SUPPLIES = tuple(REPLENISHMENT_CONSTANTS)
 
@@ -251,19 +254,35 @@ def frictional_variables(kind: str, constants, radial, axial, speed, pitch_diame
     ω [rad/s], d_m [m]; `constants` a series of `SERIES_CONSTANTS[kind]` or the tuple of Table 3 itself;
     C₀ [N] for deep-groove ball bearings, Y [-] for tapered roller bearings."""
     constants = series_constants(kind, constants)
-    if kind == "deep_groove_ball":
-        _require("static_load_rating", static_load_rating, "deep-groove ball bearings (α_F = 24.6 (F_a/C₀)^0.24)")
-        return deep_groove_ball_variables(constants, radial, axial, pitch_diameter, static_load_rating)
-    if kind == "angular_contact_ball":
-        return angular_contact_ball_variables(constants, radial, axial, speed, pitch_diameter)
-    if kind == "cylindrical_roller":
-        return cylindrical_roller_variables(constants, radial, axial, pitch_diameter)
-    if kind == "tapered_roller":
-        _require("axial_load_factor", axial_load_factor, "tapered roller bearings (the bearing's Y)")
-        return tapered_roller_variables(constants, radial, axial, pitch_diameter, axial_load_factor)
+    variables, needs = FRICTIONAL_VARIABLES[kind]
+    given = {"static_load_rating": static_load_rating, "axial_load_factor": axial_load_factor}
+    for name, why in needs:
+        _require(name, given[name], why)
+    return variables(constants, radial, axial, speed, pitch_diameter, **{name: given[name] for name, _ in needs})
+
+
+def _spherical_roller_pair(constants, radial, axial, pitch_diameter):
+    """(G_rr, G_sl) of a spherical roller bearing: the catalogue's ".e" pair where G_rr.e < G_rr.l."""
     rolling_e, rolling_l, sliding_e, sliding_l = spherical_roller_variables(constants, radial, axial, pitch_diameter)
-    elastic = rolling_e < rolling_l  # the catalogue: "when G_rr.e < G_rr.l", the .e pair
+    elastic = rolling_e < rolling_l
     return jnp.where(elastic, rolling_e, rolling_l), jnp.where(elastic, sliding_e, sliding_l)
+
+
+# bearing kind → ((constants, F_r, F_a, ω, d_m, **needed) → (G_rr, G_sl), the inputs it needs with why)
+FRICTIONAL_VARIABLES = {
+    "deep_groove_ball": (
+        lambda c, radial, axial, speed, dm, static_load_rating: deep_groove_ball_variables(
+            c, radial, axial, dm, static_load_rating),
+        (("static_load_rating", "deep-groove ball bearings (α_F = 24.6 (F_a/C₀)^0.24)"),)),
+    "angular_contact_ball": (
+        lambda c, radial, axial, speed, dm: angular_contact_ball_variables(c, radial, axial, speed, dm), ()),
+    "cylindrical_roller": (lambda c, radial, axial, speed, dm: cylindrical_roller_variables(c, radial, axial, dm), ()),
+    "tapered_roller": (
+        lambda c, radial, axial, speed, dm, axial_load_factor: tapered_roller_variables(
+            c, radial, axial, dm, axial_load_factor),
+        (("axial_load_factor", "tapered roller bearings (the bearing's Y)"),)),
+    "spherical_roller": (lambda c, radial, axial, speed, dm: _spherical_roller_pair(c, radial, axial, dm), ()),
+}
 
 
 def series_constants(kind: str, series):
@@ -285,12 +304,8 @@ def series_constants(kind: str, series):
 def bearing_type_constants(kind: str, series):
     """(K_Z, K_L) of the bearing type (`BEARING_TYPE_CONSTANTS`; K_L None for ball bearings) from the kind and
     its series: the design of an angular-contact bearing, "full_complement" for a cylindrical one."""
-    if kind == "angular_contact_ball":
-        key = f"{kind}.{series}"
-    elif kind == "cylindrical_roller" and series == "full_complement":
-        key = "cylindrical_roller.full_complement"
-    else:
-        key = kind
+    designed = f"{kind}.{series}"  # an angular-contact design, a full-complement cylindrical bearing
+    key = designed if designed in BEARING_TYPE_CONSTANTS else kind
     if key not in BEARING_TYPE_CONSTANTS:
         raise ValueError(f"K_Z: no bearing type {key!r} in {tuple(BEARING_TYPE_CONSTANTS)}; give geometry_constant")
     return BEARING_TYPE_CONSTANTS[key]
@@ -433,7 +448,7 @@ def frictional_moment(kind: str, constants, radial, axial, speed, kinematic_visc
     if seals not in (1, 2):
         raise ValueError(f"seals must be 1 or 2, got {seals!r}")
 
-    needs_length = kind not in BALL_BEARING_KINDS
+    needs_length = kind in ROLLER_LENGTH_KINDS
     if geometry_constant is None or (needs_length and roller_length_constant is None):
         if not isinstance(constants, str):
             raise ValueError("geometry_constant: K_Z (and K_L for roller bearings) must be given with a tuple of constants")
@@ -475,7 +490,7 @@ def _drag(kind, series, supply, drag_loss_factor, speed, bore, outside_diameter,
     if supply != "oil_bath":
         raise ValueError(f"drag_loss_factor: the drag loss applies to supply 'oil_bath' only, got supply {supply!r}")
     check_range("drag_loss_factor", drag_loss_factor, low=0.0, low_open=False, why="V_M of the catalogue's diagram")
-    if kind in BALL_BEARING_KINDS:
+    if kind not in ROLLER_LENGTH_KINDS:
         rows = (2 if series == "double_row" else 1) if rows is None else rows
         return drag_moment_ball(drag_loss_factor, speed, bore, outside_diameter, geometry_constant, rows)
     _require("inner_ring_width", inner_ring_width, "the drag loss of roller bearings (B [m])")

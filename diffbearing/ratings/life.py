@@ -75,6 +75,36 @@ def equivalent_dynamic_load(bearing: BallBearing, force):
     return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative)
 
 
+def double_row_equivalent_dynamic_load(bearing: BallBearing, force):
+    """ISO 281 P = X F_r + Y F_a [N] of a double-row ball bearing of `bearing`'s rows (Table 3's
+    double-row column at the nominal angle, the relative axial load of one row's balls: f₀ i F_a/C₀r
+    = F_a/(Z D_w² cos α))."""
+    radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
+    axial = jnp.abs(force[2])
+    angle = bearing.nominal_contact_angle
+    relative = radial_load_factors.relative_axial_load(axial, bearing.ball_count, bearing.ball_diameter, angle)
+    return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative, double_row=True)
+
+
+def self_aligning_equivalent_dynamic_load(force, contact_angle):
+    """ISO 281 Table 3, double-row self-aligning ball bearings: P = F_r + 0.42 cot α F_a where
+    F_a/F_r ≤ e = 1.5 tan α, else 0.65 F_r + 0.65 cot α F_a [N] (α [rad] > 0)."""
+    radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
+    axial = jnp.abs(force[2])
+    cotangent = 1.0 / jnp.tan(contact_angle)
+    light = axial <= 1.5 * jnp.tan(contact_angle) * radial
+    return jnp.where(light, radial + 0.42 * cotangent * axial, 0.65 * radial + 0.65 * cotangent * axial)
+
+
+# ISO 281 eq. (4): L10 = (C/P)^p, p by rolling element
+BASIC_LIFE_EXPONENTS = {"ball": 3.0, "roller": 10.0 / 3.0}
+
+
+def basic_life_exponent(rolling_element: str) -> float:
+    """p of ISO 281 eq. (4) for "ball" (3) or "roller" (10/3) bearings."""
+    return BASIC_LIFE_EXPONENTS[rolling_element]
+
+
 def basic_rating_life(rating, equivalent_load):
     """ISO 281 basic rating life L10 = (C/P)³ [10⁶ revolutions] of a ball bearing."""
     return (rating / equivalent_load) ** 3

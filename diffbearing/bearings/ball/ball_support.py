@@ -79,6 +79,10 @@ class BallSupport(AbstractSupport):
         """Q_ci, Q_ce [N] (ISO/TS 16281 eqs. (19)–(20), `life.raceway_ratings`)."""
         return jnp.stack(life.raceway_ratings(self.bearing, rating))
 
+    def equivalent_dynamic_load(self, force):
+        """ISO 281 P, single row (`life.equivalent_dynamic_load`)."""
+        return life.equivalent_dynamic_load(self.bearing, force)
+
     def static_load_rating(self):
         """ISO 76 C₀r at the nominal contact angle (`static_safety.ball_bearing_static_load_rating`)."""
         return static_safety.ball_bearing_static_load_rating(self.bearing)

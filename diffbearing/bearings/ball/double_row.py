@@ -161,6 +161,10 @@ class DoubleRowSupport(AbstractSupport):
         """Each row's Q_ci, Q_ce at its own C_r, in the contacts' column order (`two_row_contact_ratings`)."""
         return two_row_contact_ratings(self.bearing, rating)
 
+    def equivalent_dynamic_load(self, force):
+        """ISO 281 P, Table 3's double-row column (`life.double_row_equivalent_dynamic_load`)."""
+        return life.double_row_equivalent_dynamic_load(self.bearing, force)
+
     def static_load_rating(self):
         """`two_row_static_load_rating`."""
         return two_row_static_load_rating(self.bearing)

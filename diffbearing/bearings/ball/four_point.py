@@ -49,7 +49,7 @@ from ...contact import hertz
 from ...newton import implicit_root, minimise_convex, newton
 from ...numerics import positive_power
 from ...params import BallBearing, _as_float, _is_concrete, check_range, groove_curvature_centre_distance
-from ...ratings import static_safety
+from ...ratings import life, static_safety
 from ..interface import AbstractSupport, ContactLoads, check_orientation
 from . import ball_equilibrium
 from .ball_equilibrium import DISPLACEMENT_SCALE, BallModel
@@ -296,6 +296,11 @@ class FourPointSupport(AbstractSupport):
         """ISO 76 C₀r with i = 2 at α₀ (`double_row.two_row_static_load_rating`; the catalogues' P₀
         = F_r + 0.58 F_a at 35° is ISO 76 Table 2's double-row row)."""
         return two_row_static_load_rating(self.bearing)
+
+    def equivalent_dynamic_load(self, force):
+        """ISO 281 P of Table 3's double-row column at α₀ (the catalogues' QJ factors, X = 1, Y = 0.66
+        and X = 0.6, Y = 1.07 beyond e = 0.95 at 35°; `life.double_row_equivalent_dynamic_load`)."""
+        return life.double_row_equivalent_dynamic_load(self.bearing, force)
 
     def equivalent_static_load(self, force):
         """P₀r = F_r + Y₀ F_a with ISO 76 Table 2's double-row Y₀ at α₀ (its two diagonals carry

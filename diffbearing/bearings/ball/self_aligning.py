@@ -130,6 +130,10 @@ class SelfAligningSupport(AbstractSupport):
         radius as r_e)."""
         return self.rows.contact_ratings(rating, contacts)
 
+    def equivalent_dynamic_load(self, force):
+        """ISO 281 P, Table 3's double-row self-aligning row (`life.self_aligning_equivalent_dynamic_load`)."""
+        return life.self_aligning_equivalent_dynamic_load(force, self.rows.bearing.free_contact_angle)
+
     def static_load_rating(self):
         """ISO 76 C₀r = f₀ · 2 Z D_w² cos α₀ with Table 1's f₀ for self-aligning ball bearings."""
         row = self.rows.bearing

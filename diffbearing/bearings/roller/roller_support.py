@@ -79,6 +79,10 @@ class RollerSupport(AbstractSupport):
         the cup angle)."""
         return static_safety.roller_bearing_static_load_rating(self.bearing, self.raceways)
 
+    def equivalent_dynamic_load(self, force):
+        """ISO 281 P at the cup angle (`roller_life.roller_equivalent_dynamic_load`)."""
+        return roller_life.roller_equivalent_dynamic_load(force, self.raceways.cup_angle)
+
     def equivalent_static_load(self, force):
         """ISO 76 P₀r at the cup angle (`static_safety.roller_equivalent_static_load`)."""
         return static_safety.roller_equivalent_static_load(force, self.raceways.cup_angle)

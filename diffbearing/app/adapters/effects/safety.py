@@ -14,7 +14,7 @@ from ...registry import SHAFT, Adapter, Block, Key, Output, register
 from ..systems.bearing_set import SET, SET_SIZE
 from .life import roller_load_ratings, table3_angle
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
-from ..systems.shaft_layout import check_static_ratings, layout_supports
+from ..systems.shaft_layout import MOMENT_RATIO, check_static_ratings, layout_supports
 
 HYBRID_OUTPUT = Output("safety.hybrid", "", "", "1 where the balls are silicon nitride: C0, s0 and p_limit are then "
                        "ISO 76's all-steel values", in_report=False)
@@ -96,15 +96,10 @@ def _shaft_safety(inputs: dict, settings: dict, results: dict) -> dict:
                       for number, support in enumerate(supports)])
     safety = jnp.stack([support.pressure_safety(results["bearings.max_pressure"][number])
                         for number, support in enumerate(supports)])
-    arm = jnp.stack([support.pitch_radius() for support in supports])
-    moment = jnp.linalg.norm(results["bearings.force"][:, 3:], axis=-1)
     return {"bearings.static_load_rating": rating, "bearings.equivalent_static_load": load,
             "bearings.iso76": rating / load, "bearings.static_safety": safety,
-            "bearings.moment_ratio": moment / (load * arm),
+
             "safety.hybrid": jnp.asarray(float(any(support.hybrid() for support in supports)))}
-
-
-MOMENT_RATIO = 0.1  # |M| / (P₀ d_m/2) above which a bearing's s₀ is worth a word
 
 
 def _hybrid_warning(values: dict) -> list[str]:
@@ -112,8 +107,8 @@ def _hybrid_warning(values: dict) -> list[str]:
 
 
 def _shaft_checks(values: dict) -> tuple[list[str], list[str]]:
-    moments = [f"bearing {number}: s0 leaves out the tilting moment it carries (M = {ratio:.2g} P0·dm/2; ISO 76's P0 "
-               "is of forces alone): s(p), from its contact pressures, includes it"
+    moments = [f"bearing {number}: s0 leaves out the tilting moment it carries (M = {ratio:.2g} (F_r + F_a)·dm/2; "
+               "ISO 76's P0 is of forces alone): s(p), from its contact pressures, includes it"
                for number, ratio in enumerate(np.asarray(values["bearings.moment_ratio"])) if ratio > MOMENT_RATIO]
     return [], [f"bearing {number}: {name} is {value:.3g}, below 1" for key, name in SAFETY_NAMES
                 for number, value in enumerate(np.asarray(values[f"bearings.{key}"])) if value < 1.0] \
@@ -197,9 +192,7 @@ ADAPTER = register(Adapter(
                  Output("bearings.equivalent_static_load", "N", "kN", "each bearing's ISO 76 P0", in_report=False),
                  Output("bearings.iso76", "", "", "each bearing's ISO 76 s0 = C0/P0", in_report=False),
                  Output("bearings.static_safety", "", "", "each bearing's static safety of its largest pressure, "
-                        "(p_limit/p_max)^3 (ball) or ^2 (roller)", in_report=False),
-                 Output("bearings.moment_ratio", "", "", "each bearing's tilting moment over P0·dm/2 (ISO 76's P0 "
-                        "leaves it out)", in_report=False), HYBRID_OUTPUT),
+                        "(p_limit/p_max)^3 (ball) or ^2 (roller)", in_report=False), HYBRID_OUTPUT),
         compute=_shaft_safety,
         checks=_shaft_checks,
         validate=check_static_ratings,

@@ -31,7 +31,7 @@ from ....systems.shaft_equilibrium import (
 from ...formatting import format_number, stiffness_lines
 from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, mountings, quantity, register
 from ...units import to_si
-from .shaft_layout import ShaftLayout, layout_supports
+from .shaft_layout import MOMENT_RATIO, ShaftLayout, check_dynamic_ratings, layout_supports
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import (
     ISO76_BALL_PRESSURE_LIMIT,
@@ -172,6 +172,19 @@ def _life(support, contacts):
     return contact_reference_life(contacts, support.contact_ratings(support.dynamic_load_rating(), contacts))
 
 
+def _moment_ratio(support, force):
+    """|M| / ((F_r + F_a) d_m/2) [-] of the load [Fx, Fy, Fz, Mx, My] a bearing carries (0 unloaded)."""
+    forces = jnp.hypot(force[0], force[1]) + jnp.abs(force[2])
+    moment = jnp.hypot(force[3], force[4])
+    return jnp.where(forces > 0.0, moment / (jnp.where(forces > 0.0, forces, 1.0) * support.pitch_radius()), 0.0)
+
+
+def _basic_life(support, force):
+    """ISO 281 L10 = (C_r/P)^p [10⁶ rev] of one bearing from the load it carries, its own X, Y."""
+    return ((support.dynamic_load_rating() / support.equivalent_dynamic_load(force[:3]))
+            ** life.basic_life_exponent(support.rolling_element()))
+
+
 FREQUENCIES = ("cage", "ball_pass_outer", "ball_pass_inner", "ball_spin")
 # per-element outputs: from every bearing's contacts, and the contact angles of point contacts
 ELEMENT_FIELDS = ("azimuth", "inner_load", "outer_load", "inner_max_pressure", "outer_max_pressure")
@@ -278,10 +291,14 @@ def _shaft(inputs: dict, settings: dict, results: dict) -> dict:
                                                               in zip(shaft.supports, per_bearing)])),
         "bearings.permissible_misalignment": jnp.stack([jnp.asarray(support.permissible_misalignment())
                                                         for support in shaft.supports]),
+        "bearings.moment_ratio": jnp.stack([_moment_ratio(support, force)
+                                            for support, force in zip(shaft.supports, solution.bearing_forces)]),
     } | _elements(per_bearing) | _shoulders(layout, shaft, solution, per_bearing)
     if settings["effects"].get("life", False) is True:
         lives = [_life(support, contacts) for support, contacts in zip(shaft.supports, per_bearing)]
         out["bearings.L10r"] = jnp.stack(lives)
+        out["bearings.L10"] = jnp.stack([_basic_life(support, force) for support, force
+                                         in zip(shaft.supports, solution.bearing_forces)])
         out["shaft.L10r"] = life.system_life(jnp.stack(lives))
     if settings["effects"].get("frequencies", False) is True:
         found = [support.frequencies(layout.speed, contacts) for support, contacts in zip(shaft.supports, per_bearing)]
@@ -312,6 +329,10 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
                 for number, pressure in enumerate(np.asarray(values["bearings.max_pressure"]))
                 if pressure > ISO76_BALL_PRESSURE_LIMIT]
     warnings += misalignment_warnings(values["bearings.displacement"], values["bearings.permissible_misalignment"])
+    if "bearings.L10" in values:
+        warnings += [f"bearing {number}: L10 leaves out the tilting moment it carries (M = {ratio:.2g} (F_r + F_a)·dm/2; "
+                     "ISO 281's P is of forces alone): L10r, from its contacts, includes it"
+                     for number, ratio in enumerate(np.asarray(values["bearings.moment_ratio"])) if ratio > MOMENT_RATIO]
     for number, overrun in enumerate(np.asarray(values.get("bearings.shoulder_overrun", []))):
         shares = {f"balls.{side}.shoulder_share": np.nan_to_num(values[f"bearings.elements.{side}_shoulder_share"][number])
                   for side in ("inner", "outer")}
@@ -384,6 +405,8 @@ BLOCK = Block(
                "each bearing's largest approach / Dw (a roller bearing's / its mean roller diameter), largest "
                "|contact angle| and lowest loaded contact angle of an angular-contact bearing (model limits 1 %, "
                "90°, 0)", in_report=False),
+        Output("bearings.moment_ratio", "", "", "each bearing's tilting moment over (F_r + F_a)·dm/2 (ISO 281's P and "
+               "ISO 76's P0 leave it out)", in_report=False),
         Output("bearings.permissible_misalignment", "rad", "deg", "each bearing's largest tilt of its rings "
                "the catalogues permit (10′ a rigid bearing, 2.5° a self-aligning one)", in_report=False),
         Output("bearings.elements.azimuth", "rad", "deg", "each bearing's element azimuths ψ in its own frame "
@@ -401,6 +424,8 @@ BLOCK = Block(
         *(Output(f"bearings.elements.{side}_shoulder_share", "", "", f"each ball's share of its {side} contact load "
                  "beyond the shoulder edge (NaN for a bearing without shoulder diameters)", in_report=False)
           for side in ("inner", "outer")),
+        Output("bearings.L10", "1e6 rev", "1e6 rev", "each bearing's ISO 281 basic rating life (C_r/P)^p, P = X F_r "
+               "+ Y F_a with its type's X, Y, from the load it carries", effect="life", in_report=False),
         Output("bearings.L10r", "1e6 rev", "1e6 rev", "each bearing's ISO/TS 16281 L10r", effect="life",
                in_report=False),
         *(Output(f"bearings.frequencies.{field}", "Hz", "Hz", f"each bearing's {text} at its solved contact angles",
@@ -412,6 +437,7 @@ BLOCK = Block(
     compute=_shaft,
     checks=_checks,
     plot=_plot,
+    validate=check_dynamic_ratings,
 )
 
 
@@ -447,7 +473,7 @@ def _report(result) -> list[str]:
              f"θx = {u[3] * 1e3:.4f} mrad, θy = {u[4] * 1e3:.4f} mrad",
              "", "Bearings (loads from the shaft, shaft frame; Qmax the largest ball or roller load)",
              f"  {'#':<4}{'Fx [kN]':>10}{'Fy [kN]':>10}{'Fz [kN]':>10}{'Mx [N·m]':>10}{'My [N·m]':>10}{'Qmax [kN]':>11}"
-             f"{'p0 [GPa]':>10}" + (f"{'L10r [1e6 rev]':>16}" if "bearings.L10r" in values else "")
+             f"{'p0 [GPa]':>10}" + (f"{'L10 [1e6 rev]':>15}{'L10r [1e6 rev]':>16}" if "bearings.L10r" in values else "")
              + (f"{'s0':>8}{'s(p)':>8}" if "bearings.iso76" in values else "")
              + (f"{'M [N·mm]':>10}" if "bearings.friction.torque" in values else "")]
     for number, reaction in enumerate(np.asarray(values["bearings.reaction"])):
@@ -456,7 +482,7 @@ def _report(result) -> list[str]:
                + f"{float(values['bearings.max_element_load'][number]) / 1e3:>11.4f}"
                + f"{float(values['bearings.max_pressure'][number]) / 1e9:>10.4f}")
         if "bearings.L10r" in values:
-            row += f"{format_number(values['bearings.L10r'][number]):>16}"
+            row += f"{format_number(values['bearings.L10'][number]):>15}{format_number(values['bearings.L10r'][number]):>16}"
         if "bearings.iso76" in values:
             row += "".join(f"{format_number(values[key][number]):>8}" for key in ("bearings.iso76",
                                                                                   "bearings.static_safety"))

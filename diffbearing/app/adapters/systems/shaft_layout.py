@@ -50,6 +50,26 @@ def layout_supports(layout: ShaftLayout, settings: dict = NO_OPTIONS):
 
 
 
+# |M| / ((F_r + F_a) d_m/2) above which ISO 281's P and ISO 76's P₀, of forces alone, leave out much:
+# for rigid rings the moment adds 4.37 M / (d_m Z) to the largest element load, at 0.25 about half
+# of (F_r + F_a) / Z
+MOMENT_RATIO = 0.25
+
+
+def check_dynamic_ratings(settings: dict, inputs: dict) -> None:
+    """ValueError naming the [[bearings]] entry whose ISO 281 equivalent dynamic load is undefined
+    (a nominal contact angle outside Table 3's 0°…45°) where the shaft's life is asked for (a
+    `Block.validate`)."""
+    if settings["effects"].get("life", False) is not True:
+        return
+    for number, support in enumerate(layout_supports(inputs["shaft"], settings)):
+        load = support.equivalent_dynamic_load(jnp.array([1.0, 0.0, 1.0]))
+        if not isinstance(load, jax.core.Tracer) and not bool(jnp.isfinite(load)):
+            angle = float(np.degrees(support.nominal_contact_angle()))
+            raise ValueError(f"bearings[{number}].contact_angle: {angle:.4g}° is outside ISO 281 Table 3's 0° to 45° "
+                             "(its equivalent dynamic load, read by effects.life)")
+
+
 def check_static_ratings(settings: dict, inputs: dict) -> None:
     """ValueError naming the [[bearings]] entry whose ISO 76 equivalent static load is undefined
     (a ball bearing's nominal contact angle outside Table 2's 5°…45°), before a shaft's safety or
