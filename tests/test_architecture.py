@@ -184,14 +184,10 @@ KIND_LISTS = {"BALL_BEARING_KINDS", "ROLLER_KINDS"}
 # A bearing type's own modules: its physics package and its adapters (and the parameter module
 # that defines the ball bearing's kinds); a branch on a type anywhere else is what the seam forbids.
 OWN_MODULES = ("diffbearing.bearings.", "diffbearing.app.adapters.bearings.", "diffbearing.params")
-# Branches still waiting for single-bearing scenes read through the interface (issue 48): the set,
-# mounting and friction adapters read the scene's bearing.type; each entry is removed as its module
-# moves behind the interface. (The friction models look their rows up by the kind a bearing's
-# `friction_kind` names, in tables.)
-PENDING = {
-    "diffbearing.app.adapters.systems.bearing_set", "diffbearing.app.adapters.systems.mounting",
-    "diffbearing.app.adapters.effects.friction",
-}
+# Branches still waiting to move behind the interface (none left: the friction models look their
+# rows up by the kind a bearing's `friction_kind` names, in tables; a bearing type's adapter says
+# which scene keys its model refuses, `Adapter.refused`). A module listed here must still branch.
+PENDING: set[str] = set()
 
 
 def _type_branches(path: Path) -> list[str]:

@@ -147,7 +147,7 @@ def test_life_of_the_set():
     ('bearing.arrangement="tandem"', "tandem pair cannot be preloaded"),
     ('operating.outer_speed="100 rpm"', "operating.outer_speed"),
     ("bearing.set_size=3", "bearing.set_size"),
-    ('bearing.type="deep_groove_ball"', "angular_contact_ball"),
+    ('bearing.type="deep_groove_ball"', "bearing.arrangement: sets are of angular_contact_ball bearings"),
     ('operating.preload_offset="5 um"', "one of preload and preload_offset"),
     ('operating.misalignment=["0 mrad", "0 mrad"]', "operating.misalignment: not with a bearing set"),
 ])

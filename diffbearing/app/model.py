@@ -93,6 +93,7 @@ def build_model(scene: Scene) -> Model:
     if not registry.selectable(scene.bearing_type, scene.values) and scene.bearing_type in registry.mountings():
         raise ValueError(f"bearing.type: a {scene.bearing_type} bearing is modelled on a shaft only: give it as a "
                          "[[bearings]] entry (with its position) and its load as a [[loads]] entry")
+    registry.check_refused(scene.bearing_type, scene.values)
     blocks, missing = registry.resolve(scene.bearing_type, scene.table("effects"), present=scene.values)
     values = Reads(scene.values)
     inputs = build_inputs(scene.bearing_type, blocks, values)

@@ -170,9 +170,20 @@ class Adapter:
     report: Callable | None = None  # (result) → lines after the output tables
     sweep_columns: Callable | None = None  # ({key: (N, ...) values}) → [(header, cells)]
     mounting: Mounting | None = None  # a bearing type's: how its entries go on a shaft
+    # a bearing type's: {(its type, scene key): why}, keys its model does not take (a scene of that
+    # type holding one, with any value but false, is refused naming the key)
+    refused: dict[tuple[str, str], str] = dataclasses.field(default_factory=dict)
 
 
 ADAPTERS: dict[str, Adapter] = {}
+
+
+def check_refused(bearing_type: str, values) -> None:
+    """ValueError naming a scene key a bearing type's adapter refuses (`Adapter.refused`)."""
+    for adapter in ADAPTERS.values():
+        for (kind, key), why in adapter.refused.items():
+            if kind == bearing_type and key in values and values[key] is not False:
+                raise ValueError(f"{key}: {why}")
 
 
 def register(adapter: Adapter) -> Adapter:

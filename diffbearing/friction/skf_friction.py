@@ -261,6 +261,12 @@ def frictional_variables(kind: str, constants, radial, axial, speed, pitch_diame
     return variables(constants, radial, axial, speed, pitch_diameter, **{name: given[name] for name, _ in needs})
 
 
+def needed_inputs(kind: str) -> tuple[str, ...]:
+    """The keywords `frictional_variables` needs for `kind` beyond the loads ("static_load_rating",
+    "axial_load_factor")."""
+    return tuple(name for name, _ in FRICTIONAL_VARIABLES[kind][1])
+
+
 def _spherical_roller_pair(constants, radial, axial, pitch_diameter):
     """(G_rr, G_sl) of a spherical roller bearing: the catalogue's ".e" pair where G_rr.e < G_rr.l."""
     rolling_e, rolling_l, sliding_e, sliding_l = spherical_roller_variables(constants, radial, axial, pitch_diameter)

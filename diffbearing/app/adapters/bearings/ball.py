@@ -644,6 +644,8 @@ MOUNTING = Mounting(
 ADAPTER = register(Adapter(
     name="ball",
     bearing_types=BALL_BEARING_KINDS,
+    refused={("deep_groove_ball", "bearing.arrangement"): "sets are of angular_contact_ball bearings, got "
+                                                          "'deep_groove_ball'"},
     keys={
         "bearing.bore": quantity("length"),
         "bearing.outer_diameter": quantity("length"),

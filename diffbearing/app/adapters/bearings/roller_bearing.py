@@ -642,6 +642,8 @@ MOUNTING = Mounting(
 ADAPTER = register(Adapter(
     name="roller_bearing",
     bearing_types=ROLLER_KINDS,
+    refused={("tapered_roller", "effects.mounting"): "ball and cylindrical roller bearings (a tapered roller "
+                                                     "bearing's clearance is its axial setting)"},
     keys={
         "bearing.rollers": Key("integer"),
         "bearing.pitch_diameter": quantity("length"),

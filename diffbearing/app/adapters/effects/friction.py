@@ -84,7 +84,7 @@ def _skf_bearing(v, built) -> dict:
         if supply != "oil_bath":
             raise ValueError(f"friction.drag_loss_factor: the drag loss is an oil bath's (lubricant.supply = "
                              f"'oil_bath'), got lubricant.supply = {supply!r}")
-        if kind in ROLLER_KINDS:
+        if kind in skf_friction.ROLLER_LENGTH_KINDS:  # the model's roller drag reads the inner ring's width
             if "bearing.width" not in v:
                 raise ValueError("bearing.width is needed by friction.drag_loss_factor on a roller bearing "
                                  "(SKF's roller drag reads the inner ring width B)")
@@ -223,10 +223,11 @@ def _skf_outputs(moment: skf_friction.FrictionalMoment) -> dict:
 
 def _skf_moment(kind, static_rating, angle, skf: SkfBearing, lubricant, speed, force) -> skf_friction.FrictionalMoment:
     """SKF's moments of a bearing of `kind` under [Fx, Fy, Fz] [N] at the relative ring speed [rad/s]:
-    its C₀ [N] for a ball bearing's α_F, Y = 0.4 cot α of the cup (`angle` [rad]) for a tapered one
-    (ISO 281)."""
-    options = (dict(axial_load_factor=roller_life.axial_load_factor(angle)) if kind in ROLLER_KINDS
-               else dict(static_load_rating=static_rating))
+    its C₀ [N] (a deep-groove ball bearing's α_F reads it; None where unknown), Y = 0.4 cot α of the
+    cup (`angle` [rad]) where the kind's rows read it (a tapered one, ISO 281)."""
+    options = {"static_load_rating": static_rating}  # what the model's rows need of these (`needed_inputs`)
+    if "axial_load_factor" in skf_friction.needed_inputs(kind):
+        options["axial_load_factor"] = roller_life.axial_load_factor(angle)
     return skf_friction.frictional_moment(
         kind, skf.series, *_split(force), speed, lubricant.viscosity / lubricant.density, skf.bore,
         skf.outside_diameter, supply=skf.supply, drag_loss_factor=skf.drag_loss_factor,

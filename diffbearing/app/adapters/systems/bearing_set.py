@@ -51,8 +51,6 @@ class SetLayout(eqx.Module):
 
 
 def _layout(v, built) -> dict:
-    if v["bearing.type"] != "angular_contact_ball":
-        raise ValueError(f"bearing.arrangement: sets are of angular_contact_ball bearings, got {v['bearing.type']!r}")
     if v.get("bearing.set_size", SET_SIZE) != SET_SIZE:
         raise ValueError(f"bearing.set_size: sets of {SET_SIZE} bearings are modelled, got {v['bearing.set_size']!r}")
     if "bearing.width" not in v:

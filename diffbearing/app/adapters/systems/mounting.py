@@ -38,9 +38,6 @@ def _mounting(v, built) -> dict:
     builder and reported by the blocks below."""
     if v.get(EFFECT_ON, False) is not True:
         return {"mounting": None}
-    if v["bearing.type"] == "tapered_roller":
-        raise ValueError("effects.mounting: ball and cylindrical roller bearings (a tapered roller bearing's clearance "
-                         "is its axial setting)")
     if "bearing.bore" not in v or "bearing.outer_diameter" not in v:
         raise ValueError("effects.mounting needs bearing.bore and bearing.outer_diameter (the rings' thickness "
                          "for the fits)")
@@ -64,7 +61,7 @@ def _mounting(v, built) -> dict:
     # the rings run from the bore to d_m − D and from d_m + D to the outside (D the ball, or the
     # cylindrical roller, diameter)
     pitch = v["bearing.pitch_diameter"]
-    element = v["bearing.ball_diameter"] if v["bearing.type"] in BALL_BEARING_KINDS else v["bearing.roller_diameter"]
+    element = v["bearing.ball_diameter"] if "bearing.ball_diameter" in v else v["bearing.roller_diameter"]
     return {"mounting": operating_clearance_change(
         mounting, v["bearing.bore"], pitch - element, pitch + element, v["bearing.outer_diameter"], element,
         material(v), v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))}
