@@ -42,21 +42,31 @@ def _bearing(v, built) -> dict:
                                                                           v["bearing.pitch_diameter"], v))}
 
 
-def catalogue_bearing(v, ring):
-    """The scene's bearing as its [bearing] table gives it (SI values), rings of `ring`."""
+def catalogue_bearing(v, ring, kind=None, clearance=True):
+    """The scene's bearing as its [bearing] table gives it (SI values), rings of `ring`; `kind` for
+    a row of another type's (default: the table's type), its clearance not read with `clearance`
+    False (a type that takes the key itself)."""
     return ball_bearing(
-        kind=v["bearing.type"],
+        kind=kind or v["bearing.type"],
         ball_diameter=v["bearing.ball_diameter"], pitch_diameter=v["bearing.pitch_diameter"],
         balls=v["bearing.balls"],
         inner_groove_ratio=v.get("bearing.inner_groove_ratio"),
         outer_groove_ratio=v.get("bearing.outer_groove_ratio"),
         inner_groove_radius=v.get("bearing.inner_groove_radius"),
         outer_groove_radius=v.get("bearing.outer_groove_radius"),
-        contact_angle=v.get("bearing.contact_angle"), radial_clearance=v.get("bearing.radial_clearance"),
+        contact_angle=v.get("bearing.contact_angle"),
+        radial_clearance=v.get("bearing.radial_clearance") if clearance else None,
         ball_material=material(v, "ball_", ring), ring_material=ring,
         bore=v.get("bearing.bore"), outer_diameter=v.get("bearing.outer_diameter"),
         dynamic_load_rating=v.get("bearing.dynamic_load_rating"),
     )
+
+
+def require(v, keys) -> None:
+    """ValueError naming the first of `keys` the scene's table (or a [[bearings]] entry) lacks."""
+    for key in keys:
+        if key not in v:
+            raise ValueError(f"missing required key '{key}'")
 
 
 # n·d_m [mm·r/min]: above the first, oil-lubricated ball bearings need special designs (the

@@ -9,10 +9,10 @@ series), its overrolling frequencies."""
 import numpy as np
 
 from ....bearings.ball.double_row import DoubleRowSupport
-from ....params import ball_bearing, check_range
+from ....params import check_range
 from ...registry import Adapter, Mounting, quantity, register
 from ..materials import material
-from .ball import ball_model
+from .ball import ball_model, catalogue_bearing, require
 
 DOUBLE_ROW_TYPE = "double_row_angular_contact_ball"
 ROW_TYPE = "angular_contact_ball"  # each row's model
@@ -24,20 +24,8 @@ def _parameters(reads):
     """(one row's BallBearing, row spacing [m], axial clearance [m]) of a [[bearings]] entry;
     ValueError naming the key of a bad value."""
     assert reads["bearing.type"] == DOUBLE_ROW_TYPE
-    for key in REQUIRED:
-        if key not in reads:
-            raise ValueError(f"missing required key '{key}'")
-    ring = material(reads)
-    row = ball_bearing(
-        kind=ROW_TYPE, ball_diameter=reads["bearing.ball_diameter"], pitch_diameter=reads["bearing.pitch_diameter"],
-        balls=reads["bearing.balls"],
-        inner_groove_ratio=reads.get("bearing.inner_groove_ratio"), outer_groove_ratio=reads.get("bearing.outer_groove_ratio"),
-        inner_groove_radius=reads.get("bearing.inner_groove_radius"),
-        outer_groove_radius=reads.get("bearing.outer_groove_radius"),
-        contact_angle=reads["bearing.contact_angle"], ball_material=material(reads, "ball_", ring), ring_material=ring,
-        bore=reads.get("bearing.bore"), outer_diameter=reads.get("bearing.outer_diameter"),
-        dynamic_load_rating=reads.get("bearing.dynamic_load_rating"),
-    )
+    require(reads, REQUIRED)
+    row = catalogue_bearing(reads, material(reads), kind=ROW_TYPE, clearance=False)
     spacing, clearance = reads["bearing.row_spacing"], reads.get("bearing.axial_clearance", 0.0)
     # the rows' planes of inner groove centres, where each row's model sits: in O arrangement each
     # lies (f_i − ½) D_w sin α₀ inside its balls' plane

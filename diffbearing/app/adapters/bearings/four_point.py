@@ -10,10 +10,9 @@ double-row column), SKF's friction model (its "four_point" series), its overroll
 import numpy as np
 
 from ....bearings.ball.four_point import FourPointSupport, axial_clearance
-from ....params import ball_bearing
 from ...registry import Adapter, Mounting, register
 from ..materials import material
-from .ball import ball_model
+from .ball import ball_model, catalogue_bearing, require
 
 FOUR_POINT_TYPE = "four_point_contact_ball"
 ARCH_TYPE = "angular_contact_ball"  # the arches' geometry
@@ -25,20 +24,8 @@ def _parameters(reads):
     """(the arches' BallBearing, radial clearance [m]) of a [[bearings]] entry; ValueError naming the
     key of a bad value."""
     assert reads["bearing.type"] == FOUR_POINT_TYPE
-    for key in REQUIRED:
-        if key not in reads:
-            raise ValueError(f"missing required key '{key}'")
-    ring = material(reads)
-    arches = ball_bearing(
-        kind=ARCH_TYPE, ball_diameter=reads["bearing.ball_diameter"], pitch_diameter=reads["bearing.pitch_diameter"],
-        balls=reads["bearing.balls"],
-        inner_groove_ratio=reads.get("bearing.inner_groove_ratio"), outer_groove_ratio=reads.get("bearing.outer_groove_ratio"),
-        inner_groove_radius=reads.get("bearing.inner_groove_radius"),
-        outer_groove_radius=reads.get("bearing.outer_groove_radius"),
-        contact_angle=reads["bearing.contact_angle"], ball_material=material(reads, "ball_", ring), ring_material=ring,
-        bore=reads.get("bearing.bore"), outer_diameter=reads.get("bearing.outer_diameter"),
-        dynamic_load_rating=reads.get("bearing.dynamic_load_rating"),
-    )
+    require(reads, REQUIRED)
+    arches = catalogue_bearing(reads, material(reads), kind=ARCH_TYPE, clearance=False)
     clearance = reads["bearing.radial_clearance"]
     FourPointSupport(arches, 0.0, clearance)  # its checks (the clearance within ± the arches' centre distance)
     return arches, clearance

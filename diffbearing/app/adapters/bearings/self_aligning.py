@@ -12,7 +12,7 @@ import numpy as np
 from ....bearings.ball.self_aligning import self_aligning_row, self_aligning_support
 from ...registry import Adapter, Mounting, register
 from ..materials import material
-from .ball import ball_model
+from .ball import ball_model, require
 
 SELF_ALIGNING_TYPE = "self_aligning_ball"
 REQUIRED = ("bearing.ball_diameter", "bearing.pitch_diameter", "bearing.balls", "bearing.contact_angle",
@@ -23,9 +23,7 @@ def _parameters(reads):
     """(one row's BallBearing, radial clearance [m]) of a [[bearings]] entry; ValueError naming the
     key of a bad value."""
     assert reads["bearing.type"] == SELF_ALIGNING_TYPE
-    for key in REQUIRED:
-        if key not in reads:
-            raise ValueError(f"missing required key '{key}'")
+    require(reads, REQUIRED)
     ratio, radius = reads.get("bearing.inner_groove_ratio"), reads.get("bearing.inner_groove_radius")
     if (ratio is None) == (radius is None):
         raise ValueError("bearing: give exactly one of inner_groove_ratio and inner_groove_radius")

@@ -60,23 +60,24 @@ def check_dynamic_ratings(settings: dict, inputs: dict) -> None:
     """ValueError naming the [[bearings]] entry whose ISO 281 equivalent dynamic load is undefined
     (a nominal contact angle outside Table 3's 0°…45°) where the shaft's life is asked for (a
     `Block.validate`)."""
-    if settings["effects"].get("life", False) is not True:
-        return
-    for number, support in enumerate(layout_supports(inputs["shaft"], settings)):
-        load = support.equivalent_dynamic_load(jnp.array([1.0, 0.0, 1.0]))
-        if not isinstance(load, jax.core.Tracer) and not bool(jnp.isfinite(load)):
-            angle = float(np.degrees(support.nominal_contact_angle()))
-            raise ValueError(f"bearings[{number}].contact_angle: {angle:.4g}° is outside ISO 281 Table 3's 0° to 45° "
-                             "(its equivalent dynamic load, read by effects.life)")
+    if settings["effects"].get("life", False) is True:
+        _check_equivalent_loads(settings, inputs, "equivalent_dynamic_load", "ISO 281 Table 3's 0° to 45°",
+                                "its equivalent dynamic load, read by effects.life")
 
 
 def check_static_ratings(settings: dict, inputs: dict) -> None:
     """ValueError naming the [[bearings]] entry whose ISO 76 equivalent static load is undefined
     (a ball bearing's nominal contact angle outside Table 2's 5°…45°), before a shaft's safety or
     friction reads it (a `Block.validate`)."""
+    _check_equivalent_loads(settings, inputs, "equivalent_static_load", "ISO 76 Table 2's 5° to 45°",
+                            "its equivalent static load, read by effects.safety and effects.friction")
+
+
+def _check_equivalent_loads(settings, inputs, method: str, table: str, reader: str) -> None:
+    """ValueError naming the first [[bearings]] entry whose support's `method` gives no finite load
+    for F_r = F_a = 1 N (its nominal angle outside the standard's `table`)."""
     for number, support in enumerate(layout_supports(inputs["shaft"], settings)):
-        load = support.equivalent_static_load(jnp.array([0.0, 0.0, 1.0]))
+        load = getattr(support, method)(jnp.array([1.0, 0.0, 1.0]))
         if not isinstance(load, jax.core.Tracer) and not bool(jnp.isfinite(load)):
             angle = float(np.degrees(support.nominal_contact_angle()))
-            raise ValueError(f"bearings[{number}].contact_angle: {angle:.4g}° is outside ISO 76 Table 2's 5° to 45° "
-                             "(its equivalent static load, read by effects.safety and effects.friction)")
+            raise ValueError(f"bearings[{number}].contact_angle: {angle:.4g}° is outside {table} ({reader})")
