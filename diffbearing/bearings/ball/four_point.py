@@ -24,11 +24,12 @@ Each ball's balance Σ_k Q_k u_k = 0 has two unknowns X (its position); with no 
 model is static: slewing rings and the low speeds four-point bearings run at) they are found per
 ball by minimising the convex energy Σ_k (2/5) K_k(α₀) max(δ_k, 0)^{5/2} + (ε/2) |X − X_ref|²
 (`newton.minimise_convex`), then by Newton on the exact balance with K(α) at the contacts'
-angles (held within a step, as `ball_equilibrium` does). ε = 10⁻¹² K_n √D_w [N/m] makes a ball
+angles (held within a step, as `ball_equilibrium` does). ε = 10⁻¹⁴ K_n √D_w [N/m] makes a ball
 that touches nothing (in the clearance) sit at the nearest free point to X_ref = (0, −G_r/4) and
-keeps every 2×2 block regular; in a loaded ball it moves the balance by ε |X − X_ref| (≈ 10⁻⁷ N
-at 100 µm for a 15 mm ball). Their derivative is the implicit one, ball by ball
-(`newton.implicit_root`). The ring's load is what the inner halves exert on the balls,
+keeps every 2×2 block regular; in a loaded ball it moves the balance by ε |X − X_ref| (ε =
+1.5·10⁻⁵ N/m for the 15 mm balls of tests/test_four_point.py: 1.5·10⁻⁹ N at 100 µm). Their
+derivative is the implicit one, ball by ball (`newton.implicit_root`). The ring's load is what
+the inner halves exert on the balls,
 
     F = Σ_j Σ_{k inner} L_kᵀ Q_k u_k   ([Fz, Fr] at the point (z_k, R): M_t = z_k F_r − R F_z along e_t),
 
@@ -142,8 +143,7 @@ class FourPointSupport(AbstractSupport):
         """(approach δ (Z, 4) [m], angle α (Z, 4) [rad], unit u (Z, 4, 2) from the ball towards C_k)."""
         to_centre = centres - positions[:, None, :]
         distance = jnp.linalg.norm(to_centre, axis=-1)
-        toward = TOWARD_CONTACT[None, :] * 1.0
-        angle = jnp.arctan2(toward * to_centre[..., 0], toward * to_centre[..., 1])
+        angle = jnp.arctan2(TOWARD_CONTACT * to_centre[..., 0], TOWARD_CONTACT * to_centre[..., 1])
         return distance - self.raceway_radii(), angle, to_centre / distance[..., None]
 
     def hertz_constants(self, angle, constants):
