@@ -19,7 +19,8 @@ system needs of it (docs/extending.md, "Adding a bearing type"):
   `contact_ratings`, ISO 281's `equivalent_dynamic_load`; ISO 76's `static_load_rating`,
   `equivalent_static_load`, `pressure_safety`;
   `rolling_element` for ISO 281's a_ISO; the friction models' rows, `friction_kind`), where a
-  state stands against its envelope and its overrolling frequencies;
+  state stands against its envelope, the tilt it permits (`permissible_misalignment`) and its
+  overrolling frequencies;
 * where its rolling elements leave the static split at speed (`carries_elements`), their state
   as unknowns of the system's own Newton: a start, the elements condensed onto the ring
   (`CondensedElements`), a step limit and tolerance, and their own residual.
