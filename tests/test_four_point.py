@@ -14,6 +14,7 @@ import scipy.optimize
 
 from diffbearing import BallSupport, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 from diffbearing.bearings.ball.ball_equilibrium import BallModel
+from diffbearing.bearings.ball import four_point
 from diffbearing.bearings.ball.four_point import FourPointSupport, axial_clearance
 from diffbearing.bearings.ball.raceway_contact import ball_raceway_modulus, both_curvatures
 from diffbearing.contact import hertz
@@ -247,3 +248,19 @@ def test_its_equivalent_dynamic_load_is_the_qj_catalogue_rule():
                                5000.0 + 0.66 * 4000.0, rtol=1e-12)
     np.testing.assert_allclose(support.equivalent_dynamic_load(jnp.array([0.0, 2000.0, 4000.0])),
                                0.6 * 2000.0 + 1.07 * 4000.0, rtol=1e-12)
+
+
+def test_a_ball_solve_stopped_short_says_so(monkeypatch):
+    """The shaft counts each ball's balance (`balance_residual`) in its convergence: solved, every
+    ball balanced to 1e-6 N and the shaft's residual below 1e-9; with the exact-balance Newton
+    skipped (the convex start alone, Hertz constants at α₀) the balls are off by the constants'
+    angle dependence and the shaft reports not converged, with finite values."""
+    loads = ShaftLoads(np.zeros(1), np.array([[1000.0, 0.0, 3000.0]]), np.zeros((1, 2)))
+    solution = solve_shaft(Shaft((_support(),), loads))
+    assert bool(solution.converged) and float(solution.residual) < 1e-9
+    support = _support()
+    assert float(support.balance_residual(solution.bearing_displacements[0], 0.0, support.constants(), 1.0)) < 1e-6
+    monkeypatch.setattr(four_point, "BALL_NEWTON_STEPS", 0)
+    short = solve_shaft(Shaft((_support(),), loads))
+    assert not bool(short.converged)
+    assert np.all(np.isfinite(np.asarray(short.displacement)))

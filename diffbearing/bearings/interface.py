@@ -220,6 +220,12 @@ class AbstractSupport(eqx.Module):
         """The overrolling frequencies [Hz] (`overrolling.OverrollingFrequencies`) at shaft speed
         `speed` [rad/s], outer ring fixed, at the contacts' angles."""
 
+    def balance_residual(self, displacement, speed, constants, load_scale):
+        """The largest balance residual [-] of what the type solves inside its own ring force (its
+        elements' equilibrium where a system does not carry them), over `load_scale` [N], at Δ: a
+        system counts it in its convergence. 0 unless the type solves something there."""
+        return jnp.zeros(())
+
     def reference_offset(self):
         """c [m]: where Δ = 0 sits along the bearing's axis when the shaft is at rest, from the
         type's own reference (Δ_k = P_k G_k u + (e_k + c_k) ẑ); 0 unless the type says otherwise."""

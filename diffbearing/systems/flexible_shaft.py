@@ -53,6 +53,7 @@ from .shaft_equilibrium import (
     shaft_scales,
     solve_jointly,
     support_constants,
+    supports_balance,
     support_energy,
     support_force,
     support_stiffness,
@@ -215,6 +216,7 @@ def solve_flexible_shaft(flexible: FlexibleShaft) -> FlexibleShaftEquilibrium:
                                                      Structure(stiffness, force, moves), unknown, weight, load_scale)
     u_b = unknown * y
     locals_ = _bearing_locals(u_b, flexible)
+    residual = jnp.maximum(residual, supports_balance(shaft.supports, locals_, shaft.speed, constants, load_scale))
     forces = tuple(support_force(local, support, shaft.speed, own, state)
                    for local, support, own, state in zip(locals_, shaft.supports, constants, elements))
     nodes = recover(u_b)

@@ -382,10 +382,19 @@ def solve_shaft(shaft: Shaft) -> ShaftEquilibrium:
                                                      weight, load_scale)
     u = unknown * y
     locals_ = tuple(support_displacement(u, support) for support in shaft.supports)
+    residual = jnp.maximum(residual, supports_balance(shaft.supports, locals_, shaft.speed, constants, load_scale))
     forces = tuple(support_force(local, support, shaft.speed, own, state)
                    for local, support, own, state in zip(locals_, shaft.supports, constants, elements))
     return ShaftEquilibrium(u, locals_, forces, residual < RESIDUAL_TOLERANCE, residual, static_steps,
                             steps.astype(static_steps.dtype), elements, constants)
+
+
+def supports_balance(supports, local_displacements, speed, constants, load_scale):
+    """The largest of the bearings' own balance residuals at their solved displacements
+    (`AbstractSupport.balance_residual`), without derivative."""
+    return jax.lax.stop_gradient(jnp.max(jnp.stack([
+        support.balance_residual(local, speed, own, load_scale)
+        for support, local, own in zip(supports, local_displacements, constants)])))
 
 
 def shaft_stiffness(shaft_displacement, shaft: Shaft, at=0.0, elements=None, constants=None):

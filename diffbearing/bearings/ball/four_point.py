@@ -233,6 +233,13 @@ class FourPointSupport(AbstractSupport):
 
     # --- AbstractSupport -------------------------------------------------------------------------
 
+    def balance_residual(self, displacement, speed, constants, load_scale):
+        """The largest ball's force balance (`ball_residual`, exact Hertz constants) at its solved
+        position over `load_scale` [-]: a ball solve stopped short shows here."""
+        positions = self.ball_positions(displacement, constants)
+        residual = self.ball_residual(positions, (self.groove_centres(displacement), constants, None))
+        return jnp.max(jnp.abs(residual)) / load_scale
+
     def constants(self):
         """The table of Hertz constants (`ball_equilibrium.constant_table`; None held at α₀)."""
         return ball_equilibrium.constant_table(self.bearing, self.model)
