@@ -64,33 +64,21 @@ def ball_load_rating(bearing: BallBearing):
     return basic_dynamic_load_rating(bearing) if bearing.dynamic_load_rating is None else bearing.dynamic_load_rating
 
 
-def equivalent_dynamic_load(bearing: BallBearing, force):
-    """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row ball bearing for
-    force [Fx, Fy, Fz] [N]: Table 3 at its nominal contact angle (`BallBearing.nominal_contact_angle`; 0°…45°, NaN
-    beyond) and relative axial load F_a/(Z D_w² cos α) (`radial_load_factors`)."""
-    radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
-    axial = jnp.abs(force[2])
+def equivalent_dynamic_load(bearing: BallBearing, force, double_row: bool = False):
+    """ISO 281 equivalent dynamic radial load P = X F_r + Y F_a [N] of a single-row ball bearing (or,
+    `double_row`, of two rows of `bearing`'s) for force [Fx, Fy, Fz] [N]: Table 3 at its nominal
+    contact angle (`BallBearing.nominal_contact_angle`; 0°…45°, NaN beyond) and relative axial load
+    of one row's balls, f₀ i F_a/C₀r = F_a/(Z D_w² cos α) (`radial_load_factors`)."""
+    radial, axial = radial_load_factors.radial_and_axial(force)
     angle = bearing.nominal_contact_angle
     relative = radial_load_factors.relative_axial_load(axial, bearing.ball_count, bearing.ball_diameter, angle)
-    return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative)
-
-
-def double_row_equivalent_dynamic_load(bearing: BallBearing, force):
-    """ISO 281 P = X F_r + Y F_a [N] of a double-row ball bearing of `bearing`'s rows (Table 3's
-    double-row column at the nominal angle, the relative axial load of one row's balls: f₀ i F_a/C₀r
-    = F_a/(Z D_w² cos α))."""
-    radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
-    axial = jnp.abs(force[2])
-    angle = bearing.nominal_contact_angle
-    relative = radial_load_factors.relative_axial_load(axial, bearing.ball_count, bearing.ball_diameter, angle)
-    return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative, double_row=True)
+    return radial_load_factors.equivalent_dynamic_load(radial, axial, angle, relative, double_row)
 
 
 def self_aligning_equivalent_dynamic_load(force, contact_angle):
     """ISO 281 Table 3, double-row self-aligning ball bearings: P = F_r + 0.42 cot α F_a where
     F_a/F_r ≤ e = 1.5 tan α, else 0.65 F_r + 0.65 cot α F_a [N] (α [rad] > 0)."""
-    radial = jnp.sqrt(force[0] ** 2 + force[1] ** 2)
-    axial = jnp.abs(force[2])
+    radial, axial = radial_load_factors.radial_and_axial(force)
     cotangent = 1.0 / jnp.tan(contact_angle)
     light = axial <= 1.5 * jnp.tan(contact_angle) * radial
     return jnp.where(light, radial + 0.42 * cotangent * axial, 0.65 * radial + 0.65 * cotangent * axial)

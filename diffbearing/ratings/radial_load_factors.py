@@ -68,6 +68,11 @@ ANGLES = np.concatenate([BLOCK_ANGLES, FIXED_ANGLES])  # the table's rows, 0°�
 LARGEST_ANGLE = float(ANGLES[-1])  # rad: beyond 45° ISO 281 rates the bearing as a thrust bearing (Table 4)
 
 
+def radial_and_axial(force):
+    """(F_r, F_a) [N] ≥ 0 of a load [Fx, Fy, Fz] [N]."""
+    return jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
+
+
 def relative_axial_load(axial_load, ball_count, ball_diameter, contact_angle):
     """f₀ i F_a / C₀r = F_a / (Z D_w² cos α) [N/mm²] with C₀r of ISO 76 (F_a [N], D_w [m], α [rad])."""
     return axial_load / (ball_count * (ball_diameter * 1e3) ** 2 * jnp.cos(contact_angle))

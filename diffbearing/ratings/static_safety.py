@@ -28,6 +28,7 @@ import numpy as np
 
 from ..bearings.roller.roller_geometry import mean_roller_diameter
 from ..params import BallBearing
+from .radial_load_factors import radial_and_axial
 
 # ISO 76:2006 Table 1, radial and angular-contact groove ball bearings: γ = D_w cos α / D_pw → f₀.
 F0_RATIO = np.round(np.arange(41) * 0.01, 2)
@@ -69,7 +70,7 @@ def self_aligning_static_load_rating(ball_count, ball_diameter, pitch_diameter, 
 def self_aligning_equivalent_static_load(force, contact_angle):
     """ISO 76 P₀r = max(F_r + 0.44 cot α F_a, F_r) [N] of a double-row self-aligning ball bearing
     (Table 2: X₀ = 1, Y₀ = 0.44 cot α) under [Fx, Fy, Fz] [N], nominal angle α [rad] > 0."""
-    radial, axial = _radial_and_axial(force)
+    radial, axial = radial_and_axial(force)
     return radial + SELF_ALIGNING_Y0_FACTOR / jnp.tan(contact_angle) * axial
 
 
@@ -99,15 +100,11 @@ def roller_bearing_static_load_rating(bearing, raceways):
                                      raceways.cup_angle)
 
 
-def _radial_and_axial(force):
-    return jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
-
-
 def ball_equivalent_static_load(force, contact_angle, radial_contact: bool):
     """ISO 76 equivalent static radial load P₀r [N] of a single-row ball bearing under force
     [Fx, Fy, Fz] [N]: X₀ = 0.6, Y₀ = 0.5 for a radial-contact groove bearing (`radial_contact`),
     else X₀ = 0.5 and Y₀ of Table 2 at the nominal angle α [rad] (5°…45°; NaN outside)."""
-    radial, axial = _radial_and_axial(force)
+    radial, axial = radial_and_axial(force)
     if radial_contact:
         x0, y0 = 0.6, 0.5
     else:
@@ -121,7 +118,7 @@ def double_row_equivalent_static_load(force, contact_angle):
     (and of a pair back to back or face to face) under [Fx, Fy, Fz] [N]: Table 2's double-row
     column, X₀ = 1 and Y₀ twice the single row's at the nominal angle α [rad] (5°…45°; NaN
     outside), P₀r = F_r + Y₀ F_a (never below F_r)."""
-    radial, axial = _radial_and_axial(force)
+    radial, axial = radial_and_axial(force)
     inside = (contact_angle >= Y0_ANGLE[0] - 1e-9) & (contact_angle <= Y0_ANGLE[-1] + 1e-9)
     y0 = jnp.where(inside, 2.0 * jnp.interp(contact_angle, Y0_ANGLE, Y0_VALUE), jnp.nan)
     return radial + y0 * axial
@@ -130,7 +127,7 @@ def double_row_equivalent_static_load(force, contact_angle):
 def roller_equivalent_static_load(force, contact_angle):
     """ISO 76 equivalent static radial load P₀r [N] of a single-row radial roller bearing: F_r for
     α = 0 (cylindrical), max(0.5 F_r + 0.22 cot α F_a, F_r) for α > 0 (tapered)."""
-    radial, axial = _radial_and_axial(force)
+    radial, axial = radial_and_axial(force)
     tangent = jnp.tan(contact_angle)
     safe_tangent = jnp.where(tangent > 0, tangent, 1.0)
     return jnp.where(tangent > 0, jnp.maximum(0.5 * radial + 0.22 / safe_tangent * axial, radial), radial)

@@ -26,6 +26,7 @@ import numpy as np
 
 from ..params import _is_concrete
 from .life import BM_BALL
+from .radial_load_factors import radial_and_axial
 from .static_safety import F0_RATIO
 
 # ISO 281 Table 4: f_c of thrust ball bearings; rows at every 0.01 of the ratio from 0.01
@@ -95,13 +96,9 @@ def thrust_ball_load_factors(contact_angle, double_direction: bool):
             10.0 / 13.0 * (1.0 - sine / 3.0))
 
 
-def _radial_and_axial(force):
-    return jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
-
-
 def thrust_ball_equivalent_dynamic_load(force, contact_angle, double_direction: bool = False):
     """P_a [N] of ISO 281 eqs. (10)–(11) under [Fx, Fy, Fz] [N] (module docstring)."""
-    radial, axial = _radial_and_axial(force)
+    radial, axial = radial_and_axial(force)
     if _axial(contact_angle):
         return axial
     e, x, y, x1, y1 = thrust_ball_load_factors(contact_angle, double_direction)
@@ -118,7 +115,7 @@ def thrust_ball_static_load_rating(ball_count, ball_diameter, pitch_diameter, co
 
 def thrust_ball_equivalent_static_load(force, contact_angle):
     """P₀a [N] of ISO 76 eqs. (5)–(6): F_a at α = 90°, else 2.3 F_r tan α + F_a."""
-    radial, axial = _radial_and_axial(force)
+    radial, axial = radial_and_axial(force)
     if _axial(contact_angle):
         return axial
     return 2.3 * radial * jnp.tan(contact_angle) + axial

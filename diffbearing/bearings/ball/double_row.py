@@ -162,8 +162,8 @@ class DoubleRowSupport(AbstractSupport):
         return two_row_contact_ratings(self.bearing, rating)
 
     def equivalent_dynamic_load(self, force):
-        """ISO 281 P, Table 3's double-row column (`life.double_row_equivalent_dynamic_load`)."""
-        return life.double_row_equivalent_dynamic_load(self.bearing, force)
+        """ISO 281 P, Table 3's double-row column (`life.equivalent_dynamic_load`, double row)."""
+        return life.equivalent_dynamic_load(self.bearing, force, double_row=True)
 
     def static_load_rating(self):
         """`two_row_static_load_rating`."""

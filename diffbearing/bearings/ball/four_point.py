@@ -148,9 +148,8 @@ class FourPointSupport(AbstractSupport):
 
     def hertz_constants(self, angle, constants):
         """(Z, 4) K_k [N/m^1.5] at the contacts' angles (or α₀, `model.hertz_constants`)."""
-        inner, outer = ball_equilibrium.hertz_constants(self.bearing, angle[:, 0::2], angle[:, 1::2], self.model,
-                                                        constants)
-        return jnp.stack([inner[:, 0], outer[:, 0], inner[:, 1], outer[:, 1]], axis=1)
+        return _columns(*ball_equilibrium.hertz_constants(self.bearing, angle[:, 0::2], angle[:, 1::2], self.model,
+                                                          constants))
 
     def ball_forces(self, positions, centres, constants, held=None):
         """(Z, 4, 2) the force of each contact on its ball [N], the Hertz constants `held` (Z, 4)
@@ -283,10 +282,8 @@ class FourPointSupport(AbstractSupport):
         sums, differences = both_curvatures(self.bearing, angle[:, 0::2], angle[:, 1::2])
         found = hertz.point_contact(jnp.stack([load[:, 0::2], load[:, 1::2]]), sums, differences,
                                     ball_raceway_modulus(self.bearing), self.model.hertz_method)
-        pressure = jnp.stack([found.max_pressure[0][:, 0], found.max_pressure[1][:, 0],
-                              found.max_pressure[0][:, 1], found.max_pressure[1][:, 1]], axis=1)
-        return ContactLoads(jnp.asarray(ball_equilibrium.ball_azimuths(self.bearing)), load, load[..., None], pressure,
-                            angle, approach, RACEWAYS, "point")
+        return ContactLoads(jnp.asarray(ball_equilibrium.ball_azimuths(self.bearing)), load, load[..., None],
+                            _columns(*found.max_pressure), angle, approach, RACEWAYS, "point")
 
     def dynamic_load_rating(self):
         """As a double-row angular-contact bearing at α₀ (`double_row.two_row_dynamic_load_rating`,
@@ -306,8 +303,8 @@ class FourPointSupport(AbstractSupport):
 
     def equivalent_dynamic_load(self, force):
         """ISO 281 P of Table 3's double-row column at α₀ (the catalogues' QJ factors, X = 1, Y = 0.66
-        and X = 0.6, Y = 1.07 beyond e = 0.95 at 35°; `life.double_row_equivalent_dynamic_load`)."""
-        return life.double_row_equivalent_dynamic_load(self.bearing, force)
+        and X = 0.6, Y = 1.07 beyond e = 0.95 at 35°; `life.equivalent_dynamic_load`, double row)."""
+        return life.equivalent_dynamic_load(self.bearing, force, double_row=True)
 
     def equivalent_static_load(self, force):
         """P₀r = F_r + Y₀ F_a with ISO 76 Table 2's double-row Y₀ at α₀ (its two diagonals carry
@@ -347,6 +344,11 @@ class FourPointSupport(AbstractSupport):
         outer = jnp.abs(jnp.where(first, contacts.angle[:, 1], contacts.angle[:, 3]))
         return overrolling.frequencies_of_balls(self.bearing, speed, 0.0, inner, outer,
                                                 contacts.load[:, 0] + contacts.load[:, 2], self.model.race_control)
+
+
+def _columns(inner, outer):
+    """(Z, 4) in the column order `RACEWAYS` from the inner and the outer halves' (Z, 2), pair by pair."""
+    return jnp.stack([inner, outer], axis=-1).reshape(inner.shape[0], 4)
 
 
 def axial_clearance(support: FourPointSupport):

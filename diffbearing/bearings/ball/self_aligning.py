@@ -168,16 +168,17 @@ class SelfAligningSupport(AbstractSupport):
         return self.rows.frequencies(speed, contacts)
 
 
-def self_aligning_row(*, ball_diameter, pitch_diameter, balls, inner_groove_ratio, contact_angle,
-                      **materials_and_sizes) -> BallBearing:
+def self_aligning_row(*, ball_diameter, pitch_diameter, balls, contact_angle, inner_groove_ratio=None,
+                      inner_groove_radius=None, **materials_and_sizes) -> BallBearing:
     """One row of a self-aligning ball bearing from its drawing's numbers (SI): D_w, d_m, balls a
-    row, f_i, the nominal contact angle α₀ [rad], its sphere's f_o (`sphere_ratio`);
+    row, the nominal contact angle α₀ [rad], the inner grooves' f_i or radius r_i [m] (one of
+    them), its sphere's f_o (`sphere_ratio`);
     `materials_and_sizes` as `params.ball_bearing`'s (ball_material, ring_material, bore,
     outer_diameter, dynamic_load_rating: the whole bearing's). ValueError naming the offending key."""
     check_range("bearing.contact_angle", contact_angle, low=0.0, high=0.5 * np.pi, unit=" rad")
     check_range("bearing.ball_diameter", ball_diameter, low=0.0, unit=" m")
     return ball_bearing(ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, balls=balls,
-                        inner_groove_ratio=inner_groove_ratio,
+                        inner_groove_ratio=inner_groove_ratio, inner_groove_radius=inner_groove_radius,
                         outer_groove_ratio=sphere_ratio(ball_diameter, pitch_diameter, contact_angle),
                         contact_angle=contact_angle, outer_raceway="sphere", **materials_and_sizes)
 

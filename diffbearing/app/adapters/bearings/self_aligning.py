@@ -24,15 +24,12 @@ def _parameters(reads):
     key of a bad value."""
     assert reads["bearing.type"] == SELF_ALIGNING_TYPE
     require(reads, REQUIRED)
-    ratio, radius = reads.get("bearing.inner_groove_ratio"), reads.get("bearing.inner_groove_radius")
-    if (ratio is None) == (radius is None):
-        raise ValueError("bearing: give exactly one of inner_groove_ratio and inner_groove_radius")
     ring = material(reads)
     row = self_aligning_row(
         ball_diameter=reads["bearing.ball_diameter"], pitch_diameter=reads["bearing.pitch_diameter"],
-        balls=reads["bearing.balls"],
-        inner_groove_ratio=ratio if ratio is not None else radius / reads["bearing.ball_diameter"],
-        contact_angle=reads["bearing.contact_angle"], ball_material=material(reads, "ball_", ring), ring_material=ring,
+        balls=reads["bearing.balls"], inner_groove_ratio=reads.get("bearing.inner_groove_ratio"),
+        inner_groove_radius=reads.get("bearing.inner_groove_radius"), contact_angle=reads["bearing.contact_angle"],
+        ball_material=material(reads, "ball_", ring), ring_material=ring,
         bore=reads.get("bearing.bore"), outer_diameter=reads.get("bearing.outer_diameter"),
         dynamic_load_rating=reads.get("bearing.dynamic_load_rating"))
     clearance = reads["bearing.radial_clearance"]

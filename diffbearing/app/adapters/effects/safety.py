@@ -14,7 +14,7 @@ from ...registry import SHAFT, Adapter, Block, Key, Output, register
 from ..systems.bearing_set import SET, SET_SIZE
 from .life import roller_load_ratings, table3_angle
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
-from ..systems.shaft_layout import MOMENT_RATIO, check_static_ratings, layout_supports
+from ..systems.shaft_layout import check_static_ratings, layout_supports, moment_warnings
 
 HYBRID_OUTPUT = Output("safety.hybrid", "", "", "1 where the balls are silicon nitride: C0, s0 and p_limit are then "
                        "ISO 76's all-steel values", in_report=False)
@@ -107,9 +107,7 @@ def _hybrid_warning(values: dict) -> list[str]:
 
 
 def _shaft_checks(values: dict) -> tuple[list[str], list[str]]:
-    moments = [f"bearing {number}: s0 leaves out the tilting moment it carries (M = {ratio:.2g} (F_r + F_a)·dm/2; "
-               "ISO 76's P0 is of forces alone): s(p), from its contact pressures, includes it"
-               for number, ratio in enumerate(np.asarray(values["bearings.moment_ratio"])) if ratio > MOMENT_RATIO]
+    moments = moment_warnings(values, "s0", "ISO 76's P0", "s(p), from its contact pressures,")
     return [], [f"bearing {number}: {name} is {value:.3g}, below 1" for key, name in SAFETY_NAMES
                 for number, value in enumerate(np.asarray(values[f"bearings.{key}"])) if value < 1.0] \
         + moments + _hybrid_warning(values)

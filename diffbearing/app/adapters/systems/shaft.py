@@ -31,7 +31,7 @@ from ....systems.shaft_equilibrium import (
 from ...formatting import format_number, stiffness_lines
 from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, mountings, quantity, register
 from ...units import to_si
-from .shaft_layout import MOMENT_RATIO, ShaftLayout, check_dynamic_ratings, layout_supports
+from .shaft_layout import ShaftLayout, check_dynamic_ratings, layout_supports, moment_warnings
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import (
     ISO76_BALL_PRESSURE_LIMIT,
@@ -330,9 +330,7 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
                 if pressure > ISO76_BALL_PRESSURE_LIMIT]
     warnings += misalignment_warnings(values["bearings.displacement"], values["bearings.permissible_misalignment"])
     if "bearings.L10" in values:
-        warnings += [f"bearing {number}: L10 leaves out the tilting moment it carries (M = {ratio:.2g} (F_r + F_a)·dm/2; "
-                     "ISO 281's P is of forces alone): L10r, from its contacts, includes it"
-                     for number, ratio in enumerate(np.asarray(values["bearings.moment_ratio"])) if ratio > MOMENT_RATIO]
+        warnings += moment_warnings(values, "L10", "ISO 281's P", "L10r, from its contacts,")
     for number, overrun in enumerate(np.asarray(values.get("bearings.shoulder_overrun", []))):
         shares = {f"balls.{side}.shoulder_share": np.nan_to_num(values[f"bearings.elements.{side}_shoulder_share"][number])
                   for side in ("inner", "outer")}

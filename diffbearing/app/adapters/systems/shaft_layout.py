@@ -56,6 +56,14 @@ def layout_supports(layout: ShaftLayout, settings: dict = NO_OPTIONS):
 MOMENT_RATIO = 0.25
 
 
+def moment_warnings(values: dict, rating: str, load: str, instead: str) -> list[str]:
+    """A warning for each bearing whose tilting moment passes `MOMENT_RATIO` (`bearings.moment_ratio`):
+    its `rating`, from the standard's `load` of forces alone, leaves it out; `instead` includes it."""
+    return [f"bearing {number}: {rating} leaves out the tilting moment it carries (M = {ratio:.2g} (F_r + F_a)·dm/2; "
+            f"{load} is of forces alone): {instead} includes it"
+            for number, ratio in enumerate(np.asarray(values["bearings.moment_ratio"])) if ratio > MOMENT_RATIO]
+
+
 def check_dynamic_ratings(settings: dict, inputs: dict) -> None:
     """ValueError naming the [[bearings]] entry whose ISO 281 equivalent dynamic load is undefined
     (a nominal contact angle outside Table 3's 0°…45°) where the shaft's life is asked for (a
