@@ -21,6 +21,12 @@ from .bearings.ball.ball_equilibrium import (
 from .bearings.ball.ball_support import BallSupport as BallSupport
 from .bearings.ball.double_row import DoubleRowSupport as DoubleRowSupport
 from .bearings.ball.four_point import FourPointSupport as FourPointSupport
+from .bearings.ball.thrust_ball import (
+    ThrustBallSupport as ThrustBallSupport,
+    minimum_axial_load as minimum_axial_load,
+    thrust_ball_bearing as thrust_ball_bearing,
+    thrust_ball_support as thrust_ball_support,
+)
 from .bearings.ball.self_aligning import (
     SelfAligningSupport as SelfAligningSupport,
     self_aligning_row as self_aligning_row,

@@ -23,6 +23,7 @@ import numpy as np
 
 BALL_BEARING_KINDS = ("deep_groove_ball", "angular_contact_ball")
 OUTER_RACEWAYS = ("groove", "sphere")  # a ball bearing's outer raceway (`BallBearing.outer_raceway`)
+GROOVE_FACINGS = ("radial", "axial")  # where a ball bearing's grooves face (`BallBearing.groove_facing`)
 MAX_MISALIGNMENT = 0.05  # rad: the small-angle limit of an imposed ring tilt (sin θ ≈ θ within 0.04 %)
 
 
@@ -161,6 +162,10 @@ class BallBearing(eqx.Module):
     # "groove": the outer raceway a groove of radius f_o D_w (f_o ≤ 1); "sphere": a self-aligning
     # bearing's spherical raceway, of radius f_o D_w about the bearing's centre (f_o > 1)
     outer_raceway: str = eqx.field(static=True, default="groove")
+    # "radial": each ring's groove lies on its ring's side of its curvature centre's radius (a
+    # contact exists while |α| < 90°); "axial": a thrust bearing's washers, each groove on its
+    # washer's side of its centre's axial plane (a contact exists while |α − 90°| < 90°), α₀ up to 90°
+    groove_facing: str = eqx.field(static=True, default="radial")
 
     def __check_init__(self):
         check_range("bearing.radial_clearance", -self.interference if _is_concrete(self.interference) else None,
@@ -178,7 +183,10 @@ class BallBearing(eqx.Module):
             check_range("bearing.outer_groove_ratio", self.outer_groove_ratio, low=0.5, high=1.0, high_open=False)
         else:
             check_range("bearing.outer_groove_ratio", self.outer_groove_ratio, low=1.0, why="a sphere about the centre")
-        check_range("bearing.contact_angle", self.free_contact_angle, low=0.0, high=math.pi / 2, low_open=False, unit=" rad")
+        if self.groove_facing not in GROOVE_FACINGS:
+            raise ValueError(f"groove_facing must be one of {GROOVE_FACINGS}, got {self.groove_facing!r}")
+        check_range("bearing.contact_angle", self.free_contact_angle, low=0.0, high=math.pi / 2, low_open=False,
+                    high_open=self.groove_facing == "radial", unit=" rad")
         check_range("bearing.dynamic_load_rating", self.dynamic_load_rating, low=0.0, unit=" N")
         if _is_concrete(self.ball_diameter, self.pitch_diameter):
             largest = float(self.pitch_diameter) * math.sin(math.pi / self.ball_count)
@@ -262,6 +270,7 @@ def ball_bearing(
     outer_diameter=None,
     dynamic_load_rating=None,
     outer_raceway: str = "groove",
+    groove_facing: str = "radial",
 ) -> BallBearing:
     """Build a `BallBearing` from the quantities a drawing gives (SI units).
 
@@ -294,6 +303,7 @@ def ball_bearing(
         ring_material=ring_material, ball_count=balls, kind=kind, bore=bore,
         outer_diameter=outer_diameter, dynamic_load_rating=dynamic_load_rating,
         interference=0.0 if radial_clearance is None else interference, outer_raceway=outer_raceway,
+        groove_facing=groove_facing,
     )
 
 

@@ -261,7 +261,8 @@ def test_examples_lists_every_packaged_scene(capsys):
                                   pytest.param("flexible_shaft", marks=pytest.mark.slow),
                                   pytest.param("double_row_pulley", marks=pytest.mark.slow),
                                   pytest.param("slewing_ring", marks=pytest.mark.slow),
-                                  pytest.param("self_aligning_shaft", marks=pytest.mark.slow)])
+                                  pytest.param("self_aligning_shaft", marks=pytest.mark.slow),
+                                  pytest.param("thrust_ball_shaft", marks=pytest.mark.slow)])
 def test_every_example_runs_by_name(capsys, tmp_path, name):
     """`diffbearing run NAME` runs each packaged example to exit 0 and writes its JSON."""
     path = tmp_path / "out.json"

@@ -17,6 +17,13 @@ contact, 45° ≤ α ≤ 75°), as GOST 18855-2013 and GOST 18854-2013 print the
   thrust column at D_w cos α / D_pw (61.6 at α = 90°).
 * `thrust_ball_equivalent_static_load` — ISO 76 eqs. (5)–(6): P₀a = F_a (α = 90°), else
   2.3 F_r tan α + F_a.
+* `thrust_ball_raceway_ratings` — ISO/TS 16281:2008's raceway ratings of thrust ball bearings,
+  the ball loads of a raceway life of 10⁶ revolutions (every ball loaded alike, so no 0.407,
+  0.389 of the radial bearings' load distribution, and no 1.044):
+      Q_ci = C_a / (Z sin α) (1 + λ^{10/3})^0.3,   Q_ce = C_a / (Z sin α) (1 + λ^{−10/3})^0.3,
+      λ = ((1 − γ)/(1 + γ))^1.72 (f_i/f_e · (2 f_e − 1)/(2 f_i − 1))^0.41,   γ = D_w cos α / D_pw,
+  so that under a pure axial load (Q_ei = Q_ee = F_a / (Z sin α)) L10r = (C_a/F_a)³ = L10, at
+  any α: (1 + λ^{10/3})^{−1} + (1 + λ^{−10/3})^{−1} = 1.
 
 All pure JAX, differentiable almost everywhere (piecewise-linear tables).
 """
@@ -119,3 +126,16 @@ def thrust_ball_equivalent_static_load(force, contact_angle):
     if _axial(contact_angle):
         return axial
     return 2.3 * radial * jnp.tan(contact_angle) + axial
+
+
+def thrust_ball_raceway_ratings(rating, ball_count, ball_diameter, pitch_diameter, contact_angle, inner_groove_ratio,
+                                outer_groove_ratio):
+    """(Q_ci, Q_ce) [N]: the shaft washer's and housing washer's ball loads for a raceway life of
+    10⁶ revolutions (ISO/TS 16281, thrust ball bearings; module docstring) from C_a [N], Z, D_w,
+    D_pw [m], α [rad] and the grooves' f_i, f_e [-]."""
+    gamma = ball_diameter * jnp.cos(contact_angle) / pitch_diameter
+    conformity = (inner_groove_ratio / outer_groove_ratio * (2.0 * outer_groove_ratio - 1.0)
+                  / (2.0 * inner_groove_ratio - 1.0)) ** 0.41
+    ratio = ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * conformity
+    base = rating / (ball_count * jnp.sin(contact_angle))
+    return base * (1.0 + ratio ** (10.0 / 3.0)) ** 0.3, base * (1.0 + ratio ** (-10.0 / 3.0)) ** 0.3

@@ -228,14 +228,22 @@ def _contact_angles(centres, positions):
     return jnp.arctan2(to_inner[..., 0], to_inner[..., 1]), jnp.arctan2(positions[..., 0], positions[..., 1])
 
 
-def _facing(approach, radial_component):
+def facing_component(bearing: BallBearing, normal):
+    """The component [m] of a contact's normal (…, 2) (axial, radial), from its groove's curvature
+    centre towards its raceway, along the way the grooves face (`BallBearing.groove_facing`):
+    radial for a ring's groove, axial for a thrust washer's. A contact exists where it is > 0."""
+    return normal[..., 1] if bearing.groove_facing == "radial" else normal[..., 0]
+
+
+def _facing(approach, component):
     """The approach [m] of a contact whose groove faces the ball: a ring's groove is the arc on the
-    ring's side of its curvature centre, so a ball beyond that centre (the radial component of the
-    ball-to-contact normal ≤ 0, |α| ≥ 90°) does not touch it, however far the full circle would
-    overlap it; its approach is then −|δ| (open). Without this the circle's far side gives loaded
-    'contacts' at |α| > 90° (the far balls of a ring moved by more than its clearance), spurious
-    roots and diverging Newton steps (docs/theory.md §Numerical notes)."""
-    return jnp.where(radial_component > 0.0, approach, -jnp.abs(approach))
+    ring's side of its curvature centre, so a ball beyond that centre (the facing component of the
+    ball-to-contact normal ≤ 0, `facing_component`: |α| ≥ 90° on a ring, |α − 90°| ≥ 90° on a thrust
+    washer) does not touch it, however far the full circle would overlap it; its approach is then
+    −|δ| (open). Without this the circle's far side gives loaded 'contacts' at |α| > 90° (the far
+    balls of a ring moved by more than its clearance), spurious roots and diverging Newton steps
+    (docs/theory.md §Numerical notes)."""
+    return jnp.where(component > 0.0, approach, -jnp.abs(approach))
 
 
 def ball_state(bearing: BallBearing, operating: Operating, centres, positions, model: BallModel, constants=None,
@@ -250,8 +258,8 @@ def ball_state(bearing: BallBearing, operating: Operating, centres, positions, m
     to_inner = centres - positions
     outer_angle = jnp.arctan2(positions[..., 0], positions[..., 1])
     inner_angle = jnp.arctan2(to_inner[..., 0], to_inner[..., 1])
-    outer_approach = _facing(jnp.linalg.norm(positions, axis=-1) - outer_offset, positions[..., 1])
-    inner_approach = _facing(jnp.linalg.norm(to_inner, axis=-1) - inner_offset, to_inner[..., 1])
+    outer_approach = _facing(jnp.linalg.norm(positions, axis=-1) - outer_offset, facing_component(bearing, positions))
+    inner_approach = _facing(jnp.linalg.norm(to_inner, axis=-1) - inner_offset, facing_component(bearing, to_inner))
     if constants is None:
         constants = hertz_constants(bearing, inner_angle, outer_angle, model, table)
     k_inner, k_outer = constants
@@ -259,7 +267,7 @@ def ball_state(bearing: BallBearing, operating: Operating, centres, positions, m
     relative_speed = operating.inner_speed - operating.outer_speed
     # a ball beyond the inner groove's centre (|α_i| ≥ 90°, no contact there) rolls on the outer
     # raceway alone: its speeds at α_i = α_o, not at the direction of a contact that does not exist
-    rolling_inner = jnp.where(to_inner[..., 1] > 0.0, inner_angle, outer_angle)
+    rolling_inner = jnp.where(facing_component(bearing, to_inner) > 0.0, inner_angle, outer_angle)
     orbital, spin, beta = kinematics.ball_speeds(relative_speed, rolling_inner, outer_angle, ratio, model.race_control)
     orbital = orbital + operating.outer_speed
     state = dict(
