@@ -176,6 +176,7 @@ def test_at_its_minimum_axial_load_the_traction_just_carries_the_gyroscopic_mome
 
 @pytest.mark.parametrize("keys, named", [
     (dict(contact_angle=np.radians(40.0)), "bearing.contact_angle"),
+    (dict(contact_angle=np.radians(80.0)), "bearing.contact_angle must be ≥ 0.785398 rad and ≤ 1.309"),
     (dict(inner_groove_ratio=0.45), "bearing.inner_groove_ratio"),
     (dict(balls=2), "bearing.balls"),
 ])

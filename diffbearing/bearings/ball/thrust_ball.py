@@ -1,5 +1,5 @@
 """A thrust ball bearing, single direction: Z balls between a shaft washer and a housing washer, at
-α₀ = 90° (grooved washers) or, as an angular-contact thrust bearing, at 45° < α₀ < 90°, as
+α₀ = 90° (grooved washers) or, as an angular-contact thrust bearing, at 45° ≤ α₀ ≤ 75°, as
 `AbstractSupport`.
 
 Geometry (docs/theory.md §Thrust ball bearings). The ball model of `ball_equilibrium` with the
@@ -24,7 +24,7 @@ in the bearing), where every contact normal at standstill is axial, so the radia
 exactly; at speed under a tilt the balls' centrifugal loads leave a small radial force, dropped
 with the radial washer shift it would cause. Its ring force is then [0, 0, Fz, Mx, My] of the
 axial and tilt displacements alone, and its stiffness zero in δx, δy. An angular-contact thrust
-bearing (α₀ < 90°) is centred by its rings, like an angular-contact ball bearing: all five.
+bearing (α₀ ≤ 75°) is centred by its rings, like an angular-contact ball bearing: all five.
 
 Ratings: ISO 281 eqs. (5)–(8) and Table 5 (C_a, P_a), ISO 76 eqs. (4)–(6) (C₀a, P₀a), ISO/TS
 16281 raceway ratings of thrust ball bearings (`ratings.thrust_ball_ratings`); the permissible
@@ -43,6 +43,7 @@ from .ball_support import BallSupport
 
 AXIAL = 0.5 * np.pi
 SMALLEST_CONTACT_ANGLE = np.radians(45.0)  # ISO 281: a ball bearing above it is a thrust bearing
+LARGEST_ANGULAR_CONTACT_ANGLE = np.radians(75.0)  # ISO 281 Table 4's last angular-contact column
 AXIAL_AND_TILT = np.array([0.0, 0.0, 1.0, 1.0, 1.0])  # the components a 90° bearing's floating washer transmits
 
 
@@ -54,13 +55,17 @@ def is_axial(bearing: BallBearing) -> bool:
 def thrust_ball_bearing(*, ball_diameter, pitch_diameter, balls, contact_angle=AXIAL, inner_groove_ratio=None,
                         outer_groove_ratio=None, inner_groove_radius=None, outer_groove_radius=None,
                         **materials_and_sizes) -> BallBearing:
-    """A thrust ball bearing's balls and grooves (SI): D_w, d_m, Z, α₀ [rad] (90°, or above 45° for
-    an angular-contact thrust bearing), each washer's groove as a ratio f = r/D_w or a radius r [m];
-    `materials_and_sizes` as `params.ball_bearing`'s. The balls touch both grooves at α₀ at zero
-    load. ValueError naming the offending key."""
+    """A thrust ball bearing's balls and grooves (SI): D_w, d_m, Z, α₀ [rad] (90°, or 45°–75° for
+    an angular-contact thrust bearing, as ISO 281 Table 4 rates them), each washer's groove as a
+    ratio f = r/D_w or a radius r [m]; `materials_and_sizes` as `params.ball_bearing`'s. The balls
+    touch both grooves at α₀ at zero load. ValueError naming the offending key."""
     check_range("bearing.contact_angle", contact_angle, low=float(SMALLEST_CONTACT_ANGLE), high=AXIAL, low_open=False,
                 high_open=False, unit=" rad", why="45°–90°: a thrust ball bearing")
     axial = _is_concrete(contact_angle) and abs(float(contact_angle) - AXIAL) < 1e-12
+    if not axial:
+        check_range("bearing.contact_angle", contact_angle, low=float(SMALLEST_CONTACT_ANGLE),
+                    high=float(LARGEST_ANGULAR_CONTACT_ANGLE), low_open=False, high_open=False, unit=" rad",
+                    why="45°–75° or 90°: ISO 281 Table 4 rates thrust ball bearings there")
     return ball_bearing(ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, balls=balls,
                         kind="angular_contact_ball", inner_groove_ratio=inner_groove_ratio,
                         outer_groove_ratio=outer_groove_ratio, inner_groove_radius=inner_groove_radius,

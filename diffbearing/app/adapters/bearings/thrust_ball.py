@@ -1,7 +1,7 @@
 """Thrust ball bearings, single direction (`bearings.ball.thrust_ball`) on a shaft: a `[[bearings]]`
 entry of type "thrust_ball" holds its balls (ball_diameter, balls), the pitch diameter, each
 washer's groove (inner: the shaft washer's, outer: the housing washer's, as a ratio or a radius)
-and, for an angular-contact thrust bearing, its contact angle (45°–90°; default 90°, grooved
+and, for an angular-contact thrust bearing, its contact angle (45°–75°; default 90°, grooved
 washers, the housing washer radially free). The shaft's effects read it through its interface:
 ISO 281 (C_a, P_a) and ISO/TS 16281 life, ISO 76 (C₀a, P₀a), its overrolling frequencies; speed
 effects on the balls (centrifugal force, gyroscopic moment) as a ball bearing's; the friction
