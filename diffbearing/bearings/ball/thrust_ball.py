@@ -35,7 +35,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ...params import BallBearing, _is_concrete, ball_bearing, check_range
-from ...ratings import static_safety, thrust_ball_ratings
+from ...ratings import thrust_ball_ratings
 from ..interface import AbstractSupport, CondensedElements, ContactLoads
 from . import ball_validity, kinematics
 from .ball_equilibrium import BallModel
@@ -171,12 +171,11 @@ class ThrustBallSupport(AbstractSupport):
         return thrust_ball_ratings.thrust_ball_equivalent_static_load(force, self._rated_angle())
 
     def pressure_safety(self, max_pressure):
-        """(4 200 MPa / p_max)³."""
-        return static_safety.pressure_safety(max_pressure, static_safety.BALL_PRESSURE_LIMIT,
-                                             static_safety.POINT_CONTACT_EXPONENT)
+        """(4 200 MPa / p_max)³, a ball bearing's (ISO 76)."""
+        return self.balls.pressure_safety(max_pressure)
 
     def rolling_element(self) -> str:
-        return "ball"
+        return self.balls.rolling_element()
 
     def hybrid(self) -> bool:
         return self.balls.hybrid()
