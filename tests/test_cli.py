@@ -246,7 +246,7 @@ def test_examples_lists_every_packaged_scene(capsys):
                                          "starved_roller", "tapered_roller", "tapered_roller_bearing",
                                          "cylindrical_roller_bearing", "mounted_6411", "spindle_pair", "gearbox_shaft",
                                          "gearbox_6411_ratings", "flexible_shaft", "double_row_pulley",
-                                         "slewing_ring", "self_aligning_shaft"}
+                                         "slewing_ring", "self_aligning_shaft", "thrust_ball_shaft"}
     for name, description in listed.items():
         assert description and f"{name}" in out and description in out
     assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)
