@@ -211,3 +211,22 @@ def test_the_example_carries_its_thrust_on_the_thrust_bearing():
     np.testing.assert_allclose(forces[2, :2], 0.0, atol=1e-9)
     np.testing.assert_allclose(abs(forces[2, 2]), 6000.0, rtol=1e-9)  # in its own (turned) frame
     np.testing.assert_allclose(forces[:, 0].sum(), 1500.0, rtol=1e-9)
+
+
+def test_the_closed_forms_derivatives_match_central_differences():
+    """F_a,min in the speed and the ball diameter, and the ISO/TS 16281 thrust raceway ratings in the
+    grooves' ratios and the contact angle of a 60° bearing, against central differences (1e-7)."""
+    def least(point):
+        speed, ball = point
+        bearing = thrust_ball_bearing(**{**GEOMETRY, "ball_diameter": ball})
+        return minimum_axial_load(bearing, speed, 0.05)
+
+    assert_jvp_matches_central_difference(least, jnp.array([SPEED, 7.938e-3]), jnp.array([1.0, 1e-5]), 1e-3,
+                                          rtol=1e-7)
+
+    def ratings(point):
+        inner, outer, angle = point
+        return jnp.stack(thrust_ball_ratings.thrust_ball_raceway_ratings(30e3, 18, 7.938e-3, 60e-3, angle, inner, outer))
+
+    assert_jvp_matches_central_difference(ratings, jnp.array([0.54, 0.55, np.radians(60.0)]), jnp.array([1.0, -1.0, 5.0]),
+                                          1e-5, rtol=1e-7)

@@ -98,15 +98,19 @@ def basic_rating_life(rating, equivalent_load):
     return (rating / equivalent_load) ** 3
 
 
+def raceway_ratio(gamma, inner_groove_ratio, outer_groove_ratio):
+    """((1 − γ)/(1 + γ))^1.72 (f_i/f_e · (2 f_e − 1)/(2 f_i − 1))^0.41 [-]: ISO/TS 16281's ratio of
+    the inner to the outer raceway's rating, before a bearing type's own factor (γ = D_w cos α / D_pw)."""
+    conformity = (inner_groove_ratio / outer_groove_ratio * (2.0 * outer_groove_ratio - 1.0)
+                  / (2.0 * inner_groove_ratio - 1.0)) ** 0.41
+    return ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * conformity
+
+
 def raceway_ratings(bearing: BallBearing, rating):
     """ISO/TS 16281 eqs. (19)–(20): ball loads Q_ci, Q_ce [N] for a raceway life of 10⁶ revolutions."""
     angle = bearing.nominal_contact_angle
     gamma = bearing.ball_diameter * jnp.cos(angle) / bearing.pitch_diameter
-    ri = bearing.inner_groove_ratio * bearing.ball_diameter
-    ro = bearing.outer_groove_ratio * bearing.ball_diameter
-    dw = bearing.ball_diameter
-    conformity = (ri / ro * (2.0 * ro - dw) / (2.0 * ri - dw)) ** 0.41
-    ratio = 1.044 * ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * conformity
+    ratio = 1.044 * raceway_ratio(gamma, bearing.inner_groove_ratio, bearing.outer_groove_ratio)
     base = rating / (bearing.ball_count * jnp.cos(angle))
     inner = base / 0.407 * (1.0 + ratio ** (10.0 / 3.0)) ** 0.3
     outer = base / 0.389 * (1.0 + ratio ** (-10.0 / 3.0)) ** 0.3

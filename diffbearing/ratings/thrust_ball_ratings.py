@@ -32,7 +32,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ..params import _is_concrete
-from .life import BM_BALL
+from .life import BM_BALL, raceway_ratio
 from .radial_load_factors import radial_and_axial
 from .static_safety import F0_RATIO
 
@@ -134,8 +134,6 @@ def thrust_ball_raceway_ratings(rating, ball_count, ball_diameter, pitch_diamete
     10⁶ revolutions (ISO/TS 16281, thrust ball bearings; module docstring) from C_a [N], Z, D_w,
     D_pw [m], α [rad] and the grooves' f_i, f_e [-]."""
     gamma = ball_diameter * jnp.cos(contact_angle) / pitch_diameter
-    conformity = (inner_groove_ratio / outer_groove_ratio * (2.0 * outer_groove_ratio - 1.0)
-                  / (2.0 * inner_groove_ratio - 1.0)) ** 0.41
-    ratio = ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * conformity
+    ratio = raceway_ratio(gamma, inner_groove_ratio, outer_groove_ratio)
     base = rating / (ball_count * jnp.sin(contact_angle))
     return base * (1.0 + ratio ** (10.0 / 3.0)) ** 0.3, base * (1.0 + ratio ** (-10.0 / 3.0)) ** 0.3

@@ -59,18 +59,21 @@ def thrust_ball_bearing(*, ball_diameter, pitch_diameter, balls, contact_angle=A
     an angular-contact thrust bearing, as ISO 281 Table 4 rates them), each washer's groove as a
     ratio f = r/D_w or a radius r [m]; `materials_and_sizes` as `params.ball_bearing`'s. The balls
     touch both grooves at α₀ at zero load. ValueError naming the offending key."""
-    check_range("bearing.contact_angle", contact_angle, low=float(SMALLEST_CONTACT_ANGLE), high=AXIAL, low_open=False,
-                high_open=False, unit=" rad", why="45°–90°: a thrust ball bearing")
     axial = _is_concrete(contact_angle) and abs(float(contact_angle) - AXIAL) < 1e-12
     if not axial:
-        check_range("bearing.contact_angle", contact_angle, low=float(SMALLEST_CONTACT_ANGLE),
-                    high=float(LARGEST_ANGULAR_CONTACT_ANGLE), low_open=False, high_open=False, unit=" rad",
-                    why="45°–75° or 90°: ISO 281 Table 4 rates thrust ball bearings there")
+        _check_angular_contact_angle(contact_angle)
     return ball_bearing(ball_diameter=ball_diameter, pitch_diameter=pitch_diameter, balls=balls,
                         kind="angular_contact_ball", inner_groove_ratio=inner_groove_ratio,
                         outer_groove_ratio=outer_groove_ratio, inner_groove_radius=inner_groove_radius,
                         outer_groove_radius=outer_groove_radius, contact_angle=AXIAL if axial else contact_angle,
                         groove_facing="axial" if axial else "radial", **materials_and_sizes)
+
+
+def _check_angular_contact_angle(contact_angle):
+    """ValueError naming bearing.contact_angle outside 45°–75° (an angular-contact thrust bearing's)."""
+    check_range("bearing.contact_angle", contact_angle, low=float(SMALLEST_CONTACT_ANGLE),
+                high=float(LARGEST_ANGULAR_CONTACT_ANGLE), low_open=False, high_open=False, unit=" rad",
+                why="45°–75° or 90°: ISO 281 Table 4 rates thrust ball bearings there")
 
 
 class ThrustBallSupport(AbstractSupport):
@@ -81,9 +84,8 @@ class ThrustBallSupport(AbstractSupport):
     balls: BallSupport
 
     def __check_init__(self):
-        angle = self.balls.bearing.free_contact_angle
-        if _is_concrete(angle) and float(angle) < SMALLEST_CONTACT_ANGLE - 1e-12:
-            raise ValueError("bearing.contact_angle: a thrust ball bearing's is 45°–90°")
+        if not is_axial(self.bearing):
+            _check_angular_contact_angle(self.bearing.free_contact_angle)
 
     @property
     def bearing(self) -> BallBearing:
@@ -146,7 +148,8 @@ class ThrustBallSupport(AbstractSupport):
                                                                    bearing.pitch_diameter, self._rated_angle())
 
     def _rated_angle(self):
-        """α₀ as the standards' tables read it (exactly π/2 for a 90° bearing)."""
+        """α₀ as the standards' tables read it: for a 90° bearing the Python float π/2, so that the
+        ratings take their 90° forms under tracing too (`thrust_ball_ratings`)."""
         return AXIAL if is_axial(self.bearing) else self.bearing.free_contact_angle
 
     def contact_ratings(self, rating, contacts: ContactLoads):
