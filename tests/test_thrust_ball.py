@@ -230,3 +230,19 @@ def test_the_closed_forms_derivatives_match_central_differences():
 
     assert_jvp_matches_central_difference(ratings, jnp.array([0.54, 0.55, np.radians(60.0)]), jnp.array([1.0, -1.0, 5.0]),
                                           1e-5, rtol=1e-7)
+
+
+@hypothesis.settings(max_examples=8, deadline=None)
+@hypothesis.given(axial=st.floats(-5e-6, 40e-6), tilt_x=st.floats(-3e-4, 3e-4), tilt_y=st.floats(-3e-4, 3e-4),
+                  radial=st.floats(-50e-6, 50e-6))
+def test_random_states_at_standstill_are_its_static_energys_gradient(axial, tilt_x, tilt_y, radial):
+    """A 90° bearing at standstill over axial approaches (some balls open), tilts and radial shifts:
+    every contact normal stays axial, so the ring force is the gradient of the static energy (the
+    Hertz constants at α₀ are exact; 1e-9), finite, with no radial component."""
+    support = thrust_ball_support(AXIAL_BEARING, 0.0)
+    displacement = jnp.array([radial, 0.5 * radial, axial, tilt_x, tilt_y])
+    force = np.asarray(_force(support, displacement, 0.0))
+    held = support.energy_constants(None)
+    gradient = np.asarray(jax.grad(support.static_energy)(displacement, held))
+    assert np.all(np.isfinite(force)) and force[0] == 0.0 and force[1] == 0.0
+    np.testing.assert_allclose(force, gradient, rtol=1e-9, atol=1e-9 * (1.0 + np.max(np.abs(force))))
