@@ -39,6 +39,12 @@ from .bearings.ball.raceway_contact import (
     outer_curvature as outer_curvature,
 )
 from .bearings.interface import AbstractSupport as AbstractSupport, CondensedElements as CondensedElements
+from .bearings.roller.needle_roller import (
+    NeedleRollerSupport as NeedleRollerSupport,
+    needle_roller_bearing as needle_roller_bearing,
+    needle_roller_raceways as needle_roller_raceways,
+    needle_roller_support as needle_roller_support,
+)
 from .bearings.roller.roller_contact import RollerContact as RollerContact, roller_contact as roller_contact
 from .bearings.roller.roller_equilibrium import (
     RollerEquilibrium as RollerEquilibrium,

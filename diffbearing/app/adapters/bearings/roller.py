@@ -33,16 +33,23 @@ SINGLE_CONTACT = ("contact.load",)  # the scene key of this layout (registry: on
 DEFAULT_CONTACT_TOLERANCE = 1e-11
 
 
-def scene_roller_bearing(v, built) -> dict:
-    """{"bearing": the RollerBearing} of a scene's [bearing] and [profile] values (SI)."""
-    length = v["bearing.roller_length"]
+def scene_roller_profile(v):
+    """The `RollerProfile` of a scene's [profile] values (SI; straight without them), for a roller
+    of effective length bearing.roller_length."""
     kind = v.get("profile.kind", "straight")
     parameters = {name: v.get(f"profile.{name}") for name in ("flat_length", "crown_radius", "design_load", "k1", "k2", "zm")}
     if kind in ("straight", "circular"):
         parameters.pop("design_load")  # a design load belongs to the logarithmic kinds; others ignore it
-    profile = roller_profile(kind, length=length, **parameters)
+    profile = roller_profile(kind, length=v["bearing.roller_length"], **parameters)
     if "contact.raceway_edge_radius" in v:
         profile = with_raceway_edge(profile, v["contact.raceway_edge_radius"])
+    return profile
+
+
+def scene_roller_bearing(v, built) -> dict:
+    """{"bearing": the RollerBearing} of a scene's [bearing] and [profile] values (SI)."""
+    length = v["bearing.roller_length"]
+    profile = scene_roller_profile(v)
     return {"bearing": roller_bearing(kind=v["bearing.type"], length=length, diameter=v.get("bearing.roller_diameter"),
                                       small_diameter=v.get("bearing.roller_small_diameter"),
                                       large_diameter=v.get("bearing.roller_large_diameter"),
