@@ -1,10 +1,13 @@
 """Roller bearing laminae: accuracy against time, with the influence-coefficient contact as reference.
 
-    python benchmarks/roller_laminae_fidelity.py [--laminae 10 20 30 50 100] [--repeats 15]
+    python benchmarks/roller_laminae_fidelity.py [--bearing tapered|needle] [--laminae 10 20 30 50 100] [--repeats 15]
 
-Seed 004's tapered bearing (roller d/D = 7.0/8.0 mm, l = 12 mm, θ = 2.4°, Johns–Gohar at 1 kN,
-E = 207 GPa, ν = 0.29; Z = 18, cup angle 15°, d_m = 50.7 mm, zero clearance), static, Fr = 4 kN and
-Fa = 2 kN with the inner ring's misalignment imposed: [0, 0.5 mrad] (misaligned) and [0, 0] (aligned).
+tapered (default): seed 004's tapered bearing (roller d/D = 7.0/8.0 mm, l = 12 mm, θ = 2.4°, Johns–Gohar
+at 1 kN, E = 207 GPa, ν = 0.29; Z = 18, cup angle 15°, d_m = 50.7 mm, zero clearance), static, Fr = 4 kN
+and Fa = 2 kN with the inner ring's misalignment imposed: [0, 0.5 mrad] (misaligned) and [0, 0] (aligned).
+needle: the needle_roller_shaft example's needle roller bearing (26 needles of 3 × 13 mm, circular crown
+flat 9 mm, Rc = 0.5 m, d_m = 33 mm, 15 µm clearance), Fr = 3.35 kN (its load in the example), misalignment
+[0, 2′] (its permissible tilt) and [0, 0].
 For each laminae count n the whole bearing is solved (equilibrium, 5×5 stiffness, per-roller results)
 under jit; the time is the median of `repeats` calls after compilation (compile apart).
 
@@ -14,7 +17,7 @@ tilt from `roller_contact_loadings`) re-solved by influence coefficients (`rolle
 the reference (the coarser ones show its grid convergence). Errors:
   * peak pressure of that contact: the laminae' largest Hertz line pressure against the reference;
   * that roller's inner load and the 5×5 stiffness (scaled to N/m) against 100 laminae.
-Writes benchmarks/results/roller_laminae_fidelity.{json,md,png}.
+Writes benchmarks/results/roller_laminae_fidelity.{json,md,png} (the needle's: roller_laminae_fidelity_needle.*).
 """
 
 import argparse
@@ -36,6 +39,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from roller_bearing import tapered  # noqa: E402
 from timing import compiled_with_time, machine, median_time  # noqa: E402
 
+from diffbearing import needle_roller_bearing, needle_roller_raceways, roller_profile  # noqa: E402
+from diffbearing.bearings.roller.needle_roller import PERMISSIBLE_MISALIGNMENT  # noqa: E402
 from diffbearing.bearings.roller.roller_contact import roller_contact  # noqa: E402
 from diffbearing.bearings.roller.roller_equilibrium import (  # noqa: E402
     RollerModel,
@@ -48,7 +53,29 @@ from diffbearing.bearings.roller.roller_equilibrium import (  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 GRIDS = [(16, 128), (32, 256), (32, 512), (64, 1024), (128, 2048)]
-CASES = {"misaligned": [0.0, 5e-4], "aligned": [0.0, 0.0]}
+
+
+
+def needle():
+    """The needle_roller_shaft example's needle roller bearing and its case."""
+    length = 13e-3
+    bearing = needle_roller_bearing(roller_diameter=3e-3, roller_length=length, rollers=26,
+                                    profile=roller_profile("circular", length=length, flat_length=9e-3, crown_radius=0.5))
+    return dict(bearing=bearing, raceways=needle_roller_raceways(bearing, pitch_diameter=33e-3, diametral_clearance=15e-6),
+                force=[3.35e3, 0.0, 0.0], cases={"misaligned": [0.0, PERMISSIBLE_MISALIGNMENT], "aligned": [0.0, 0.0]},
+                label="the needle_roller_shaft example's needle roller bearing, Z = 26, 3 × 13 mm, d_m = 33 mm, 15 µm "
+                      "clearance, static, Fr 3.35 kN", title="Needle roller bearing (Z = 26, 3 × 13 mm), Fr 3.35 kN",
+                suffix="_needle")
+
+
+def tapered_case():
+    return dict(**{key: tapered()[key] for key in ("bearing", "raceways")}, force=[4e3, 0.0, 2e3],
+                cases={"misaligned": [0.0, 5e-4], "aligned": [0.0, 0.0]},
+                label="Seed 004's tapered bearing, Z = 18, α_o = 15°, d_m = 50.7 mm, static, Fr 4 kN, Fa 2 kN",
+                title="Tapered roller bearing (seed 004, Z = 18), Fr 4 kN, Fa 2 kN", suffix="")
+
+
+SETUPS = {"tapered": tapered_case, "needle": needle}
 
 
 def bearing_case(laminae, bearing, raceways):
@@ -84,22 +111,23 @@ def distribution_error(loads, reference):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--bearing", choices=tuple(SETUPS), default="tapered")
     parser.add_argument("--laminae", type=int, nargs="+", default=[10, 20, 30, 50, 100])
     parser.add_argument("--repeats", type=int, default=15)
     args = parser.parse_args()
     finest = max(args.laminae)
-    setup = tapered()
+    setup = SETUPS[args.bearing]()
     bearing, raceways = setup["bearing"], setup["raceways"]
-    force = jnp.asarray([4e3, 0.0, 2e3])
+    force = jnp.asarray(setup["force"])
     scale = np.diag([1.0, 1.0, 1.0, 2.0 / float(raceways.pitch_diameter), 2.0 / float(raceways.pitch_diameter)])
-    document = {"machine": machine(), "force": [4e3, 0.0, 2e3], "grids": GRIDS, "cases": {}}
+    document = {"machine": machine(), "force": setup["force"], "grids": GRIDS, "cases": {}, "title": setup["title"]}
+    command = "python benchmarks/roller_laminae_fidelity.py" + ("" if args.bearing == "tapered" else f" --bearing {args.bearing}")
     lines = ["# Roller bearing laminae: accuracy against time", "",
-             f"`python benchmarks/roller_laminae_fidelity.py` ({machine()}). Seed 004's tapered bearing, Z = 18, α_o = 15°, "
-             "d_m = 50.7 mm, static, Fr 4 kN, Fa 2 kN, misalignment imposed. Time: equilibrium + 5×5 stiffness + "
+             f"`{command}` ({machine()}). {setup['label']}, misalignment imposed. Time: equilibrium + 5×5 stiffness + "
              f"per-roller results under jit, median of {args.repeats} after compilation. Reference: the most loaded "
              f"roller's inner contact at the {finest}-lamina load distribution, re-solved by influence coefficients on "
              f"{GRIDS[-1][0]} × {GRIDS[-1][1]}."]
-    for name, misalignment in CASES.items():
+    for name, misalignment in setup["cases"].items():
         misalignment = jnp.asarray(misalignment)
         rows = {}
         for laminae in sorted(args.laminae):
@@ -149,7 +177,7 @@ def main():
                                        influence=influence)
         lines += ["", f"## {name}: misalignment [{float(misalignment[0]) * 1e3:g}, {float(misalignment[1]) * 1e3:g}] mrad",
                   "", f"Most loaded roller: {roller} (ψ = {360 * roller / bearing.roller_count:.0f}°), inner load "
-                  f"{q_best:.1f} N, tilt against the cone {float(inner.tilt) * 1e3:.3f} mrad; influence peak pressure "
+                  f"{q_best:.1f} N, tilt against the inner raceway {float(inner.tilt) * 1e3:.3f} mrad; influence peak pressure "
                   f"{reference / 1e9:.4f} GPa.", "",
                   "| model | time | compile | peak pressure | error vs influence | lamina loads vs influence | roller load "
                   f"error vs {finest} | stiffness change vs {finest} |", "|---|---|---|---|---|---|---|---|"]
@@ -163,15 +191,15 @@ def main():
                          f"{entry['compile_s']:.1f} s | {entry['max_pressure'] / 1e9:.4f} GPa | "
                          f"{entry['error_vs_finest']:.2%} (vs finest grid) | {entry['distribution_error_vs_finest']:.2%} "
                          f"({finest} bins, vs finest grid) | – | – |")
-    plot(document)
+    plot(document, setup["suffix"])
     table = "\n".join(lines)
     print(table)
     RESULTS.mkdir(exist_ok=True)
-    (RESULTS / "roller_laminae_fidelity.md").write_text(table + "\n")
-    (RESULTS / "roller_laminae_fidelity.json").write_text(json.dumps(document, indent=1) + "\n")
+    (RESULTS / f"roller_laminae_fidelity{setup['suffix']}.md").write_text(table + "\n")
+    (RESULTS / f"roller_laminae_fidelity{setup['suffix']}.json").write_text(json.dumps(document, indent=1) + "\n")
 
 
-def plot(document):
+def plot(document, suffix):
     figure, axes = plt.subplots(1, len(document["cases"]), figsize=(12, 4.8), sharey=True)
     for axis, (name, case) in zip(np.atleast_1d(axes), document["cases"].items()):
         rows = case["laminae"]
@@ -201,9 +229,9 @@ def plot(document):
         axis.grid(True, which="both", alpha=0.3)
     np.atleast_1d(axes)[0].set_ylabel("relative error [-]")
     np.atleast_1d(axes)[0].legend(fontsize=8)
-    figure.suptitle("Tapered roller bearing (seed 004, Z = 18), Fr 4 kN, Fa 2 kN: laminae against influence coefficients")
+    figure.suptitle(f"{document['title']}: laminae against influence coefficients")
     figure.tight_layout()
-    figure.savefig(RESULTS / "roller_laminae_fidelity.png", dpi=120)
+    figure.savefig(RESULTS / f"roller_laminae_fidelity{suffix}.png", dpi=120)
 
 
 if __name__ == "__main__":

@@ -28,7 +28,8 @@ from diffbearing import (
     solve_roller_equilibrium,
 )
 from diffbearing.app import cli
-from diffbearing.app.adapters.systems.shaft import misalignment_warnings
+from diffbearing.app.adapters.systems.shaft import end_lamina_share, misalignment_warnings
+from diffbearing.bearings.interface import ContactLoads
 from diffbearing.bearings.roller import roller_equilibrium
 from diffbearing.bearings.roller.needle_roller import PERMISSIBLE_MISALIGNMENT
 from diffbearing.bearings.roller.roller_contact import PALMGREN_STEEL_MODULUS
@@ -159,6 +160,22 @@ def test_past_two_minutes_of_tilt_a_shaft_warns_of_the_needles_and_not_of_a_ball
     assert len(warnings) == 1 and warnings[0].startswith("bearing 0:") and "2′" in warnings[0], warnings
 
 
+def test_the_end_lamina_share_flags_a_contact_that_reaches_the_rollers_end():
+    """`end_lamina_share`: straight needles, aligned or tilted, load their end laminae as much as any
+    (1, exactly); crowned ones (flat 9 mm, Rc = 0.5 m: 2.8 µm of drop at the end laminae' centres)
+    at a 10 µm radial approach in 15 µm of clearance leave them free (0) while the middle carries
+    load; point contacts give 0."""
+    approach = jnp.array([10e-6, 0.0, 0.0, 0.0, 0.0])
+    for tilt in (0.0, 5e-4):
+        straight = _contacts(needle_roller_support(STRAIGHT, RACEWAYS, 0.0, model=MODEL), approach.at[4].set(tilt))
+        np.testing.assert_allclose(end_lamina_share(straight), 1.0, rtol=1e-12)
+    crowned = _contacts(needle_roller_support(_crowned(0.5), RACEWAYS, 0.0, model=MODEL), approach)
+    assert float(end_lamina_share(crowned)) == 0.0 and float(jnp.max(crowned.lamina_load)) > 0.0
+    points = ContactLoads(crowned.azimuth, crowned.load, crowned.load[..., None], crowned.max_pressure,
+                         jnp.zeros_like(crowned.load), crowned.approach, crowned.raceways, "point")
+    assert float(end_lamina_share(points)) == 0.0
+
+
 @hypothesis.settings(max_examples=12, deadline=None)
 @hypothesis.given(diameter=st.floats(1.5e-3, 6e-3), slenderness=st.floats(2.55, 10.0), rollers=st.integers(8, 60),
                   room=st.floats(1.05, 2.0), radial=st.floats(-5e-6, 40e-6), tilt=st.floats(-1e-3, 1e-3))
@@ -203,6 +220,19 @@ def test_a_bad_needle_entry_exits_2_naming_its_key(capsys, tmp_path, change, nam
     code = cli.main(["run", str(path)])
     err = capsys.readouterr().err
     assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+
+
+@pytest.mark.slow
+def test_a_shallow_crown_warns_of_edge_load_at_the_needles_ends():
+    """The example with a 5 m crown (0.4 µm of drop at the ends, less than the needles' approach):
+    one warning, bearing 1's, that its rollers' end laminae carry load; none with the example's
+    0.5 m crown (`test_the_example_carries_the_axial_load_on_its_ball_bearing`)."""
+    scene = load_scene(str(SCENE))
+    scene.values["bearings"][1]["profile.crown_radius"] = 5.0
+    result = run_model(build_model(scene), progress=False)
+    errors, warnings = result.problems
+    assert not errors and len(warnings) == 1 and warnings[0].startswith("bearing 1: a roller's end lamina"), warnings
+    assert 0.5 < float(result.values["bearings.end_lamina_share"][1]) <= 1.0
 
 
 @pytest.mark.slow
