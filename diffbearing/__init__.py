@@ -39,6 +39,11 @@ from .bearings.ball.raceway_contact import (
     outer_curvature as outer_curvature,
 )
 from .bearings.interface import AbstractSupport as AbstractSupport, CondensedElements as CondensedElements
+from .bearings.roller.cylindrical_roller_thrust import (
+    CylindricalRollerThrustSupport as CylindricalRollerThrustSupport,
+    cylindrical_roller_thrust_bearing as cylindrical_roller_thrust_bearing,
+    cylindrical_roller_thrust_support as cylindrical_roller_thrust_support,
+)
 from .bearings.roller.needle_roller import (
     NeedleRollerSupport as NeedleRollerSupport,
     needle_roller_bearing as needle_roller_bearing,
