@@ -44,6 +44,14 @@ from .bearings.roller.cylindrical_roller_thrust import (
     cylindrical_roller_thrust_bearing as cylindrical_roller_thrust_bearing,
     cylindrical_roller_thrust_support as cylindrical_roller_thrust_support,
 )
+from .bearings.roller.spherical_roller import (
+    SphericalRoller as SphericalRoller,
+    SphericalRollerRaceways as SphericalRollerRaceways,
+    SphericalRollerSupport as SphericalRollerSupport,
+    spherical_roller as spherical_roller,
+    spherical_roller_raceways as spherical_roller_raceways,
+    spherical_roller_support as spherical_roller_support,
+)
 from .bearings.roller.needle_roller import (
     NeedleRollerSupport as NeedleRollerSupport,
     needle_roller_bearing as needle_roller_bearing,

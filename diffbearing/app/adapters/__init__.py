@@ -31,7 +31,7 @@ from .systems import mounting  # noqa: F401
 from .bearings import ball  # noqa: F401
 from .systems import bearing_set  # noqa: F401
 from .bearings import roller, roller_bearing, double_row, four_point, self_aligning, thrust_ball, needle_roller  # noqa: F401
-from .bearings import cylindrical_roller_thrust  # noqa: F401
+from .bearings import cylindrical_roller_thrust, spherical_roller  # noqa: F401
 from .effects import life  # noqa: F401
 from .systems import shaft  # noqa: F401
 from .effects import film, cage, frequencies, safety, friction  # noqa: F401
