@@ -267,6 +267,58 @@ def minimise_convex(function, y0, args, *, gradient_tolerance=1e-12, max_steps=2
                   objective=function, shortest=shortest, floor=gradient_tolerance)
 
 
+def block_matrices(linear, shape):
+    """(..., k, k) blocks of a linear map that is block-diagonal on arrays of `shape` (..., k): each
+    row of k unknowns (a rolling element's state) maps onto its own k equations alone."""
+    size = shape[-1]
+    units = jnp.broadcast_to(jnp.eye(size).reshape((size,) + (1,) * (len(shape) - 1) + (size,)), (size, *shape))
+    return jnp.moveaxis(jax.vmap(linear)(units), 0, -1)
+
+
+def block_tangent_solve(linear, rhs):
+    """x with linear(x) = rhs for a block-diagonal map on (..., k) arrays, block by block."""
+    return jnp.linalg.solve(block_matrices(linear, rhs.shape), rhs[..., None])[..., 0]
+
+
+def block_newton(residual, start, args, *, max_steps: int, step_tolerance: float):
+    """Damped Newton on a block-diagonal system F(y, args) = 0 of (..., k) unknowns (each block a
+    rolling element's state, `block_matrices`), all blocks at once: each block's step halved until
+    its ½‖F_j‖² falls (Armijo, c = 2e-4 · length; at most 30 halvings). Stops when no unknown moves
+    more than `step_tolerance` or after `max_steps`; returns y."""
+    def merit(y):
+        value = residual(y, args)
+        return 0.5 * jnp.sum(value**2, axis=-1), value
+
+    def step(carry):
+        y, _, count = carry
+        start_merit, value = merit(y)
+        linear = jax.linearize(lambda s: residual(s, args), y)[1]
+        direction = -jnp.linalg.solve(block_matrices(linear, y.shape), value[..., None])[..., 0]
+
+        def failing(length, trial):
+            return trial > (1.0 - 2e-4 * length) * start_merit
+
+        def shorten(search):
+            length, trial, halvings = search
+            length = jnp.where(failing(length, trial), 0.5 * length, length)
+            return length, merit(y + length[..., None] * direction)[0], halvings + 1
+
+        def busy(search):
+            length, trial, halvings = search
+            return jnp.any(failing(length, trial)) & (halvings < 30)
+
+        ones = jnp.ones(y.shape[:-1])
+        length, _, _ = jax.lax.while_loop(busy, shorten, (ones, merit(y + direction)[0], 0))
+        change = length[..., None] * direction
+        return y + change, jnp.max(jnp.abs(change)), count + 1
+
+    def moving(carry):
+        _, size, count = carry
+        return (size > step_tolerance) & (count < max_steps)
+
+    return jax.lax.while_loop(moving, step, (start, jnp.asarray(jnp.inf), 0))[0]
+
+
 def dense_tangent_solve(linear, rhs):
     """x with linear(x) = rhs, by LU of the dense matrix of the linear map (`jax.jacfwd`)."""
     return jnp.linalg.solve(jax.jacfwd(linear)(rhs), rhs)

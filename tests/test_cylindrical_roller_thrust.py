@@ -203,6 +203,7 @@ def test_random_states_give_finite_loads_and_the_energys_gradient(axial, tilt_x,
 @pytest.mark.parametrize("keys, named", [
     (dict(pitch_diameter=10e-3), "bearing.pitch_diameter must exceed the roller length"),
     (dict(rollers=40), "bearing.rollers: 40 rollers"),
+    (dict(rollers=4, pitch_diameter=30e-3), "bearing.roller_diameter must be ≥ 0.0003 m and ≤ 0.009 m"),
 ])
 def test_bad_geometry_names_its_key(keys, named):
     with pytest.raises(ValueError, match=named):

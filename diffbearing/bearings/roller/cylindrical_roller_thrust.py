@@ -46,8 +46,8 @@ from ...params import _as_float, _is_concrete, check_range
 from ...ratings import roller_life, static_safety, thrust_roller_ratings
 from ..interface import AbstractSupport, ContactLoads, check_orientation
 from .roller_contact import PALMGREN_STEEL_MODULUS
-from .roller_equilibrium import RollerModel, lamina_positions
-from .roller_geometry import RollerBearing, roller_bearing, roller_modulus
+from .roller_equilibrium import RollerModel, lamina_positions, roller_azimuths
+from .roller_geometry import RollerBearing, check_rollers_fit, roller_bearing, roller_modulus
 from .roller_profile import crown_drop
 
 AXIAL = 0.5 * np.pi
@@ -70,30 +70,26 @@ def cylindrical_roller_thrust_bearing(*, roller_diameter, roller_length, rollers
 
 
 def check_pitch_diameter(bearing: RollerBearing, pitch_diameter) -> None:
-    """ValueError naming bearing.pitch_diameter unless the rollers lie clear of the axis (d_m > L_we)
-    and bearing.rollers unless Z of them fit side by side on the pitch circle (D_w ≤ d_m sin(π/Z))."""
+    """ValueError naming bearing.pitch_diameter unless the rollers lie clear of the axis (d_m > L_we),
+    bearing.rollers unless Z of them fit side by side on the pitch circle (D_w ≤ d_m sin(π/Z)) and
+    bearing.roller_diameter unless D_w/d_m lies in ISO 281 Table 10 (0.01…0.30: the rating's f_c)."""
     check_range("bearing.pitch_diameter", pitch_diameter, low=0.0, unit=" m")
     if not _is_concrete(pitch_diameter, bearing.length, bearing.large_diameter):
         return
     if float(pitch_diameter) <= float(bearing.length):
         raise ValueError(f"bearing.pitch_diameter must exceed the roller length {float(bearing.length) * 1e3:.4g} mm "
                          f"(the rollers' inner ends clear of the axis), got {float(pitch_diameter) * 1e3:.4g} mm")
-    room = float(pitch_diameter) * np.sin(np.pi / bearing.roller_count)
-    if float(bearing.large_diameter) > room:
-        raise ValueError(f"bearing.rollers: {bearing.roller_count} rollers of {float(bearing.large_diameter) * 1e3:.4g} mm "
-                         f"do not fit on the {float(pitch_diameter) * 1e3:.4g} mm pitch circle: that needs "
-                         f"D ≤ d_m sin(π/Z) = {room * 1e3:.4g} mm")
+    check_rollers_fit(bearing.roller_count, bearing.large_diameter, pitch_diameter)
+    ratios = thrust_roller_ratings.FC_RATIO
+    check_range("bearing.roller_diameter", bearing.large_diameter, low=float(ratios[0] * pitch_diameter),
+                high=float(ratios[-1] * pitch_diameter), low_open=False, high_open=False, unit=" m",
+                why="D_w/d_m within ISO 281 Table 10's 0.01…0.30, where thrust roller bearings are rated")
 
 
 def lamina_radii(bearing: RollerBearing, pitch_diameter, laminae: int):
     """r_k = d_m/2 + y_k [m]: each lamina's radius from the bearing axis, and the lamina width [m]."""
     y, width = lamina_positions(bearing, laminae)
     return 0.5 * pitch_diameter + y, width
-
-
-def roller_azimuths(bearing: RollerBearing):
-    """ψ_j = 2πj/Z [rad], roller 0 on +x."""
-    return 2.0 * jnp.pi * jnp.arange(bearing.roller_count) / bearing.roller_count
 
 
 def total_approach(displacement, bearing: RollerBearing, pitch_diameter, laminae: int):

@@ -28,7 +28,7 @@ from ...params import BEARING_STEEL, Material, _is_concrete
 from ...ratings import roller_life
 from ..interface import AbstractSupport, ContactLoads
 from .roller_equilibrium import RollerModel, RollerRaceways, roller_raceways
-from .roller_geometry import RollerBearing, roller_bearing
+from .roller_geometry import RollerBearing, check_rollers_fit, roller_bearing
 from .roller_support import RollerSupport
 
 # ISO/TS 16281:2008 eqs. (42)–(43): its reference roller profile splits short rollers (L_we ≤ 2.5 D_we)
@@ -67,12 +67,7 @@ def needle_roller_raceways(bearing: RollerBearing, *, pitch_diameter, diametral_
     (`roller_equilibrium.roller_raceways`, contact angle 0); ValueError naming bearing.rollers
     where Z rollers do not fit on the pitch circle (D_w > d_m sin(π/Z))."""
     raceways = roller_raceways(bearing, pitch_diameter=pitch_diameter, diametral_clearance=diametral_clearance)
-    if _is_concrete(pitch_diameter, bearing.large_diameter):
-        room = float(pitch_diameter) * np.sin(np.pi / bearing.roller_count)
-        if float(bearing.large_diameter) > room:
-            raise ValueError(f"bearing.rollers: {bearing.roller_count} rollers of {float(bearing.large_diameter) * 1e3:.4g} mm "
-                             f"do not fit on the {float(pitch_diameter) * 1e3:.4g} mm pitch circle: that needs "
-                             f"D ≤ d_m sin(π/Z) = {room * 1e3:.4g} mm")
+    check_rollers_fit(bearing.roller_count, bearing.large_diameter, pitch_diameter)
     return raceways
 
 

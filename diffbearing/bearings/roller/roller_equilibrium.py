@@ -70,7 +70,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ...contact.hertz import line_contact
-from ...newton import implicit_root, least_squares_tangent_solve, minimise_convex, newton
+from ...newton import block_newton, block_tangent_solve, implicit_root, least_squares_tangent_solve, minimise_convex, newton
 from ...numerics import require_float64, safe_norm
 from ...params import _as_float, _is_concrete, check_range
 from ...ratings.roller_life import lamina_load
@@ -343,53 +343,9 @@ def _roller_equations(scaled_states, args):
 
 
 def _roller_newton(residual, start, args):
-    """Every roller's damped Newton at once: the 2×2 block of each roller (`_roller_blocks`), each
-    step halved per roller until ½‖R_j‖² falls (Armijo, c = 1e-4; at most 30 halvings). The rollers
-    are independent, so each row of the residual depends on its own roller alone. Stops when no
-    roller moves by more than `ROLLER_STEP_TOLERANCE` (scaled) or after `ROLLER_NEWTON_STEPS`."""
-    def merit(states):
-        value = residual(states, args)
-        return 0.5 * jnp.sum(value**2, axis=-1), value
-
-    def step(carry):
-        states, _, count = carry
-        start_merit, value = merit(states)
-        linear = jax.linearize(lambda s: residual(s, args), states)[1]
-        direction = -jnp.linalg.solve(_roller_blocks(linear, states.shape), value[..., None])[..., 0]
-
-        def failing(length, trial):
-            return trial > (1.0 - 2e-4 * length) * start_merit
-
-        def shorten(search):
-            length, trial, halvings = search
-            length = jnp.where(failing(length, trial), 0.5 * length, length)
-            return length, merit(states + length[:, None] * direction)[0], halvings + 1
-
-        def busy(search):
-            length, trial, halvings = search
-            return jnp.any(failing(length, trial)) & (halvings < 30)
-
-        ones = jnp.ones(states.shape[0])
-        length, _, _ = jax.lax.while_loop(busy, shorten, (ones, merit(states + direction)[0], 0))
-        change = length[:, None] * direction
-        return states + change, jnp.max(jnp.abs(change)), count + 1
-
-    def moving(carry):
-        _, size, count = carry
-        return (size > ROLLER_STEP_TOLERANCE) & (count < ROLLER_NEWTON_STEPS)
-
-    return jax.lax.while_loop(moving, step, (start, jnp.asarray(jnp.inf), 0))[0]
-
-
-def _roller_blocks(linear, shape):
-    """(Z, 2, 2) blocks of the block-diagonal linear map on (Z, 2) roller states."""
-    units = jnp.broadcast_to(jnp.eye(2)[:, None, :], (2, *shape))
-    return jnp.moveaxis(jax.vmap(linear)(units), 0, -1)
-
-
-def _roller_tangent_solve(linear, rhs):
-    """x (Z, 2) with linear(x) = rhs, roller by roller (each roller's equations involve it alone)."""
-    return jnp.linalg.solve(_roller_blocks(linear, rhs.shape), rhs[..., None])[..., 0]
+    """Every roller's damped Newton at once on its 2×2 block (`newton.block_newton`), until no roller
+    moves by more than `ROLLER_STEP_TOLERANCE` (scaled) or after `ROLLER_NEWTON_STEPS`."""
+    return block_newton(residual, start, args, max_steps=ROLLER_NEWTON_STEPS, step_tolerance=ROLLER_STEP_TOLERANCE)
 
 
 def roller_states(displacement, bearing: RollerBearing, raceways: RollerRaceways, operating: RollerOperating,
@@ -404,7 +360,7 @@ def roller_states(displacement, bearing: RollerBearing, raceways: RollerRaceways
     centrifugal = roller_centrifugal_force(bearing, raceways, operating)
     scaled_midway = jax.lax.stop_gradient(midway / scale)
     args = (displacement, bearing, raceways, setup, centrifugal, scaled_midway)
-    scaled = implicit_root(_roller_equations, scaled_midway, args, _roller_newton, _roller_tangent_solve)
+    scaled = implicit_root(_roller_equations, scaled_midway, args, _roller_newton, block_tangent_solve)
     return scaled * scale
 
 

@@ -84,6 +84,18 @@ def roller_bearing(*, kind="cylindrical_roller", length, diameter=None, small_di
                          roller_count=roller_count)
 
 
+def check_rollers_fit(roller_count: int, diameter, pitch_diameter) -> None:
+    """ValueError naming bearing.rollers unless Z rollers of diameter D [m] fit side by side on the
+    pitch circle d_m [m]: D ≤ d_m sin(π/Z) (no check of traced values)."""
+    if not _is_concrete(diameter, pitch_diameter):
+        return
+    room = float(pitch_diameter) * np.sin(np.pi / roller_count)
+    if float(diameter) > room:
+        raise ValueError(f"bearing.rollers: {roller_count} rollers of {float(diameter) * 1e3:.4g} mm do not fit on the "
+                         f"{float(pitch_diameter) * 1e3:.4g} mm pitch circle: that needs D ≤ d_m sin(π/Z) = "
+                         f"{room * 1e3:.4g} mm")
+
+
 def film_length(bearing: RollerBearing):
     """Length [m] that carries the load in a line-contact film formula: the flat part of a
     circular profile, else the effective length."""

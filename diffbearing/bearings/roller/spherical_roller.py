@@ -43,6 +43,8 @@ i Z L_we D_we cos α, P₀ = F_r + 0.44 cot α F_a; ISO/TS 16281's lamina rating
 permissible pressure of 4 000 MPa (ISO 76, roller bearings).
 """
 
+import functools
+
 import equinox as eqx
 import jax
 import jax.numpy as jnp
@@ -50,14 +52,15 @@ import numpy as np
 
 from ... import overrolling
 from ...contact.hertz import line_contact
-from ...newton import implicit_root
+from ...newton import block_newton, block_tangent_solve, implicit_root
 from ...params import BEARING_STEEL, Material, _as_float, _is_concrete, check_range
 from ...ratings import roller_life, static_safety
 from ...ratings.radial_load_factors import radial_and_axial
 from ..interface import AbstractSupport, ContactLoads, check_orientation
 from .roller_contact import PALMGREN_STEEL_MODULUS
-from .roller_equilibrium import RollerModel
-from .roller_geometry import RollerBearing, roller_bearing, roller_modulus
+from .roller_equilibrium import CENTRING, ROLLER_SCALE, ROLLER_STEP_TOLERANCE, RollerModel
+from .roller_equilibrium import roller_azimuths as _azimuths
+from .roller_geometry import RollerBearing, check_rollers_fit, roller_bearing, roller_modulus
 
 ROWS = 2
 # ISO 281:2007 Table 6: b_m of spherical roller bearings (the cylindrical roller bearings' 1.1, `BM_ROLLER`)
@@ -66,10 +69,7 @@ BM_SPHERICAL = 1.15
 # Help, "Permissible bearing misalignment"): 1.5°; the catalogues give 1.5°–3° by series.
 PERMISSIBLE_MISALIGNMENT = float(np.radians(1.5))
 TRANSLATION = np.array([1.0, 1.0, 1.0, 0.0, 0.0])  # the components of Δ and F a sphere transmits
-ROLLER_SCALE = 1e-6  # m: unit of the scaled roller unknowns (1 µm; φ in 1 µm / (L/2))
-ROLLER_NEWTON_STEPS = 60
-ROLLER_STEP_TOLERANCE = 1e-12  # scaled: a roller's Newton stops below this step
-CENTRING = 1e-14  # a spring towards the start in the scaled roller equations: an unloaded roller stays put
+ROLLER_NEWTON_STEPS = 60  # the barrel rollers' three unknowns take more steps than the radial rollers' two
 MAX_CONTACT_ANGLE = float(np.radians(20.0))  # spherical roller bearings' α: about 6°–15° by series
 
 
@@ -134,11 +134,7 @@ def spherical_roller_raceways(roller: SphericalRoller, *, pitch_diameter, contac
             raise ValueError(f"bearing.roller_profile_radius must be below the outer raceway's sphere radius "
                              f"R_o = d_m/(2 cos α) + D_w/2 = {outer * 1e3:.4g} mm, got "
                              f"{float(roller.profile_radius) * 1e3:.4g} mm")
-        room = float(pitch_diameter) * np.sin(np.pi / roller.rollers.roller_count)
-        if float(diameter) > room:
-            raise ValueError(f"bearing.rollers: {roller.rollers.roller_count} rollers of {float(diameter) * 1e3:.4g} mm "
-                             f"do not fit on the {float(pitch_diameter) * 1e3:.4g} mm pitch circle: that needs "
-                             f"D ≤ d_m sin(π/Z) = {room * 1e3:.4g} mm")
+    check_rollers_fit(roller.rollers.roller_count, diameter, pitch_diameter)
     return raceways
 
 
@@ -177,15 +173,20 @@ def spherical_setup(roller: SphericalRoller, raceways: SphericalRollerRaceways, 
 
 def roller_azimuths(roller: SphericalRoller):
     """ψ_j = 2πj/Z [rad], roller 0 of each row on +x (the rows' rollers side by side)."""
-    return 2.0 * jnp.pi * jnp.arange(roller.rollers.roller_count) / roller.rollers.roller_count
+    return _azimuths(roller.rollers)
+
+
+def _translation(displacement, psi):
+    """T (Z, 2) [m]: the inner ring's in-plane translation (axial, radial) at each roller."""
+    return jnp.stack([jnp.broadcast_to(displacement[2], psi.shape),
+                      displacement[0] * jnp.cos(psi) + displacement[1] * jnp.sin(psi)], axis=-1)
 
 
 def approaches(displacement, states, roller: SphericalRoller, raceways: SphericalRollerRaceways, setup: SphericalSetup):
     """(inner, outer) lamina approaches [m], each (2 rows, Z, n), for ring displacement Δ and roller
     states (2, Z, 3) = (u [m], w [m], φ [rad]) (module docstring)."""
     psi = roller_azimuths(roller)
-    translation = jnp.stack([jnp.broadcast_to(displacement[2], psi.shape),
-                             displacement[0] * jnp.cos(psi) + displacement[1] * jnp.sin(psi)], axis=-1)  # (Z, 2)
+    translation = _translation(displacement, psi)
     tilt = displacement[4] * jnp.cos(psi) - displacement[3] * jnp.sin(psi)
     along_normal = jnp.einsum("zc,rc->rz", translation, setup.normal)  # (2, Z)
     along_axis = jnp.einsum("zc,rc->rz", translation, setup.axis)
@@ -228,65 +229,16 @@ def _roller_equations(scaled, args):
     return gradient / _force_scale(roller, setup) + CENTRING * (scaled - start)
 
 
-def _blocks(linear, shape):
-    """(2, Z, 3, 3) blocks of the block-diagonal linear map on (2, Z, 3) roller states."""
-    units = jnp.broadcast_to(jnp.eye(3)[:, None, None, :], (3, *shape))
-    return jnp.moveaxis(jax.vmap(linear)(units), 0, -1)
-
-
-def _tangent_solve(linear, rhs):
-    return jnp.linalg.solve(_blocks(linear, rhs.shape), rhs[..., None])[..., 0]
-
-
-def _roller_newton(residual, start, args):
-    """Every roller's Newton at once on its 3×3 block, each step halved per roller until its squared
-    residual falls (Armijo, at most 30 halvings); stops when no roller moves more than
-    `ROLLER_STEP_TOLERANCE` (scaled) or after `ROLLER_NEWTON_STEPS`."""
-    def merit(states):
-        value = residual(states, args)
-        return 0.5 * jnp.sum(value**2, axis=-1), value
-
-    def step(carry):
-        states, _, count = carry
-        start_merit, value = merit(states)
-        linear = jax.linearize(lambda s: residual(s, args), states)[1]
-        direction = -jnp.linalg.solve(_blocks(linear, states.shape), value[..., None])[..., 0]
-
-        def failing(length, trial):
-            return trial > (1.0 - 2e-4 * length) * start_merit
-
-        def shorten(search):
-            length, trial, halvings = search
-            length = jnp.where(failing(length, trial), 0.5 * length, length)
-            return length, merit(states + length[..., None] * direction)[0], halvings + 1
-
-        def busy(search):
-            length, trial, halvings = search
-            return jnp.any(failing(length, trial)) & (halvings < 30)
-
-        ones = jnp.ones(states.shape[:-1])
-        length, _, _ = jax.lax.while_loop(busy, shorten, (ones, merit(states + direction)[0], 0))
-        change = length[..., None] * direction
-        return states + change, jnp.max(jnp.abs(change)), count + 1
-
-    def moving(carry):
-        _, size, count = carry
-        return (size > ROLLER_STEP_TOLERANCE) & (count < ROLLER_NEWTON_STEPS)
-
-    return jax.lax.while_loop(moving, step, (start, jnp.asarray(jnp.inf), 0))[0]
-
-
 def roller_states(displacement, roller: SphericalRoller, raceways: SphericalRollerRaceways, setup: SphericalSetup):
     """(2, Z, 3) the rollers' (u [m], w [m], φ [rad]) at their energy's minimum for Δ, from midway
     (u = T·n/2), with the implicit derivative."""
-    psi = roller_azimuths(roller)
-    translation = jnp.stack([jnp.broadcast_to(displacement[2], psi.shape),
-                             displacement[0] * jnp.cos(psi) + displacement[1] * jnp.sin(psi)], axis=-1)
+    translation = _translation(displacement, roller_azimuths(roller))
     midway = 0.5 * jnp.einsum("zc,rc->rz", translation, setup.normal)
     scale = _state_scale(roller)
     start = jax.lax.stop_gradient(jnp.stack([midway, jnp.zeros_like(midway), jnp.zeros_like(midway)], axis=-1) / scale)
     args = (displacement, roller, raceways, setup, start)
-    return implicit_root(_roller_equations, start, args, _roller_newton, _tangent_solve) * scale
+    solve = functools.partial(block_newton, max_steps=ROLLER_NEWTON_STEPS, step_tolerance=ROLLER_STEP_TOLERANCE)
+    return implicit_root(_roller_equations, start, args, solve, block_tangent_solve) * scale
 
 
 def full_ring_force(displacement, roller: SphericalRoller, raceways: SphericalRollerRaceways, model: RollerModel):
