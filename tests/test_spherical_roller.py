@@ -25,6 +25,7 @@ from diffbearing import (
 )
 from diffbearing.app import cli
 from diffbearing.bearings.roller import spherical_roller as srb
+from diffbearing.friction import skf_friction
 
 from .helpers import assert_jvp_matches_central_difference
 
@@ -166,6 +167,8 @@ def test_bad_geometry_names_its_key(keys, named):
     (('inner_profile_radius = "79 mm"', 'inner_profile_radius = "75 mm"'), "bearings[0]: inner_profile_radius"),
     (('rollers = 19                       # a row', 'rollers = 19\nballs = 19'), "bearings[0]: key 'balls' is not read"),
     (('stiffness = true', 'stiffness = true\ncentrifugal = true'), "effects.centrifugal"),
+    (('friction = "skf"', 'friction = "palmgren"'), "bearings[0] (spherical_roller) is not covered by the 'palmgren'"),
+    (('friction = "skf"', 'friction = "skf"\n[friction]\nseries = "223"'), "friction.series"),
 ])
 def test_a_bad_spherical_roller_entry_exits_2_naming_its_key(capsys, tmp_path, change, named):
     """The example with one bad key: exit 2, one line naming it."""
@@ -180,8 +183,12 @@ def test_a_bad_spherical_roller_entry_exits_2_naming_its_key(capsys, tmp_path, c
 def test_the_example_shaft_is_a_simply_supported_beam_on_its_spherical_roller_bearings():
     """The spherical_roller_shaft example: converged, no problems; neither bearing carries a moment, so
     the shaft is a simply supported beam: each bearing takes half the 60 kN and its rings tilt by the
-    beam's section rotation at a support, F L²/(16 E I) = 2.362 mrad (8.1′), within 1e-6."""
-    result = run_model(build_model(load_scene(str(SCENE))), progress=False)
+    beam's section rotation at a support, F L²/(16 E I) = 2.362 mrad (8.1′), within 1e-6. Each
+    bearing's SKF moment is the catalogue model's spherical roller row (series 222E; the model itself
+    checked against the catalogue's 22208 E example in test_skf_friction.py) at the load it carries,
+    d = 100 and D = 180 mm, ν of ISO VG 68 at 60 °C, to 1e-12."""
+    model = build_model(load_scene(str(SCENE)))
+    result = run_model(model, progress=False)
     assert bool(result.values["shaft.converged"]) and not any(result.problems), result.problems
     forces = np.asarray(result.values["bearings.force"])
     np.testing.assert_allclose(forces[:, 0], 30e3, rtol=1e-9)
@@ -189,3 +196,9 @@ def test_the_example_shaft_is_a_simply_supported_beam_on_its_spherical_roller_be
     tilts = np.abs(np.asarray(result.values["bearings.displacement"])[:, 4])
     inertia = np.pi * 0.1**4 / 64
     np.testing.assert_allclose(tilts, 60e3 * 0.8**2 / (16 * 207e9 * inertia), rtol=1e-6)
+    lubricant = model.inputs["lubricant"]
+    for number, force in enumerate(forces):
+        moment = skf_friction.frictional_moment("spherical_roller", "222E", np.hypot(force[0], force[1]), abs(force[2]),
+                                                600 * np.pi / 30, lubricant.viscosity / lubricant.density, 0.1, 0.18,
+                                                supply="oil_bath")
+        assert float(result.values["bearings.friction.torque"][number]) == pytest.approx(float(moment.total), rel=1e-12)

@@ -429,6 +429,10 @@ class SphericalRollerSupport(AbstractSupport):
     def nominal_contact_angle(self):
         return self.raceways.contact_angle
 
+    def friction_kind(self, model: str) -> str | None:
+        """SKF's spherical roller rows (its Table 3 holds them); Palmgren's table here holds none."""
+        return "spherical_roller" if model == "skf" else None
+
     def permissible_misalignment(self):
         """1.5° (`PERMISSIBLE_MISALIGNMENT`)."""
         return PERMISSIBLE_MISALIGNMENT

@@ -3,9 +3,10 @@ of type "spherical_roller" holds its barrel rollers (roller_diameter at mid-leng
 rollers per row, roller_profile_radius of the barrel), the pitch diameter, the nominal contact angle,
 the inner raceways' profile radius (inner_profile_radius) and the diametral clearance. The shaft's
 effects read it through its interface: ISO 281 (i = 2, b_m 1.15; e, Y₁, Y₂ of double-row roller
-bearings) and ISO/TS 16281 life, ISO 76, overrolling frequencies, its rollers' centrifugal force
-(`effects.centrifugal`), the permissible misalignment of spherical roller bearings (1.5°); the
-friction models' tables hold no row for it (refused)."""
+bearings) and ISO/TS 16281 life, ISO 76, overrolling frequencies, the permissible misalignment of
+spherical roller bearings (1.5°), SKF's friction (`effects.friction = "skf"`, series 222E unless
+`friction.series` names 213E); Palmgren's friction table holds no row for it and the static model
+no centrifugal force (both refused)."""
 
 import numpy as np
 

@@ -21,7 +21,7 @@ FRICTION_MODELS = ("palmgren", "skf")
 DEFAULT_SUPPLY = "oil_bath"
 # SKF's series (Table 3) by kind when the scene names none: the series of Palmgren's defaults
 SKF_DEFAULT_SERIES = {"deep_groove_ball": "62", "angular_contact_ball": "single_row", "cylindrical_roller": "2",
-                      "tapered_roller": "302"}
+                      "tapered_roller": "302", "spherical_roller": "222E"}
 # lubricant.supply → SKF's lubrication of K_rs: circulating oil is fed as a jet, the bath is a low-level one
 SKF_SUPPLY = {"circulating": "oil_jet", "oil_bath": "oil_bath", "grease": "grease"}
 
