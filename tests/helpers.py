@@ -80,3 +80,12 @@ outer_groove_ratio = 0.53
 def example_scene(name: str) -> str:
     """Filesystem path of the packaged example scene `diffbearing/scenes/<name>.toml`."""
     return str(importlib.resources.files("diffbearing.scenes").joinpath(f"{name}.toml"))
+
+
+def palmgren_moment(f0, f1, load, kinematic_viscosity, rpm, pitch_diameter):
+    """Palmgren's M₀ + M₁ [N·m] written out in the catalogue's units (Schaeffler HR 1, "Friction and
+    increases in temperature"): M₀ = 10⁻⁷ f₀ (ν n)^{2/3} d_m³ for ν n ≥ 2000, 160·10⁻⁷ f₀ d_m³ below;
+    M₁ = f₁ P₁ d_m [N·mm] with ν [m²/s], n [r/min], d_m [m], P₁ [N]."""
+    product, dm = kinematic_viscosity * 1e6 * rpm, pitch_diameter * 1e3
+    viscous = 1e-7 * f0 * product ** (2 / 3) * dm**3 if product >= 2000 else 160e-7 * f0 * dm**3
+    return (viscous + f1 * load * dm) * 1e-3

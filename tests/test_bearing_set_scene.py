@@ -36,6 +36,7 @@ def single(tmp_path, axial, overrides=()):
                                             + list(overrides))), progress=False)
 
 
+@pytest.mark.slow
 def test_pair_under_axial_load_is_each_bearing_alone(tmp_path):
     """Issue 26: the DB pair of the packaged example under a pure axial load of 1.2 kN; each
     bearing's displacement, ball loads, static safety, overrolling frequencies, friction torque and

@@ -29,7 +29,7 @@ from diffbearing.bearings.roller.roller_equilibrium import lamina_positions
 from diffbearing.bearings.roller.roller_geometry import roller_modulus
 from diffbearing.ratings import reference_life, roller_life
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_jvp_matches_central_difference, palmgren_moment
 
 SCENE = importlib.resources.files("diffbearing.scenes") / "thrust_roller_shaft.toml"
 
@@ -231,8 +231,11 @@ def test_a_bad_thrust_roller_entry_exits_2_naming_its_key(capsys, tmp_path, chan
 def test_the_example_carries_its_thrust_on_the_thrust_bearing():
     """The thrust_roller_shaft example: converged, no problems; the cylindrical roller bearings carry no
     axial load, the thrust bearing all 30 kN and no radial load, the radial bearings the gear's
-    4 kN half each (the layout symmetric; 1e-9); every thrust roller alike, 30 kN / 16."""
-    result = run_model(build_model(load_scene(str(SCENE))), progress=False)
+    4 kN half each (the layout symmetric; 1e-9); every thrust roller alike, 30 kN / 16. The thrust
+    bearing's Palmgren moment is HR 1's 811 row written out (f₀ 3 in oil, f₁ 0.0015, M₁ = f₁ F_a d_m),
+    1e-12."""
+    model = build_model(load_scene(str(SCENE)))
+    result = run_model(model, progress=False)
     assert bool(result.values["shaft.converged"]) and not any(result.problems), result.problems
     forces = np.asarray(result.values["bearings.force"])
     np.testing.assert_allclose(forces[:2, 2], 0.0, atol=1e-9)
@@ -240,3 +243,6 @@ def test_the_example_carries_its_thrust_on_the_thrust_bearing():
     np.testing.assert_allclose(forces[2, 2], 30e3, rtol=1e-9)
     np.testing.assert_allclose(forces[:2, 0], 2000.0, rtol=1e-9)
     np.testing.assert_allclose(result.values["bearings.elements.inner_load"][2, :ROLLERS], 30e3 / ROLLERS, rtol=1e-9)
+    lubricant = model.inputs["lubricant"]
+    thrust = palmgren_moment(3.0, 0.0015, 30e3, lubricant.viscosity / lubricant.density, 300.0, 77.5e-3)
+    assert float(result.values["bearings.friction.torque"][2]) == pytest.approx(thrust, rel=1e-12)

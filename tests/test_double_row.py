@@ -48,7 +48,7 @@ def test_its_ring_force_is_the_back_to_back_pairs(clearance):
                                    shaft_force(jnp.asarray(displacement), pair), rtol=1e-12, atol=1e-9)
 
 
-@pytest.mark.parametrize("model", [BallModel(), SPEED_MODEL], ids=["static", "speed"])
+@pytest.mark.parametrize("model", [BallModel(), pytest.param(SPEED_MODEL, marks=pytest.mark.slow)], ids=["static", "speed"])
 def test_on_a_shaft_it_is_the_back_to_back_pair(model):
     """One double-row bearing on a shaft and its rows as a back-to-back pair, under radial, axial
     and tilting load (at 12 000 r/min with speed effects: both rows' balls carried by the shaft's

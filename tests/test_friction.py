@@ -135,3 +135,43 @@ def test_cylindrical_roller_bearing_friction():
         "lubricant.preset=iso_vg_46", "lubricant.temperature=60 degC"])), progress=False).values
     assert float(values["friction.load"]) == pytest.approx(2040.0, rel=1e-9)
     assert float(values["friction.load_torque"]) == pytest.approx(0.0003 * 2040.0 * 0.1066, rel=1e-9)
+
+
+@pytest.mark.parametrize("ratio", [0.0, 0.05, 0.2, 0.2635, 0.3, 2.0])
+def test_spherical_roller_friction_load_is_hr1s(ratio):
+    """P₁ of a spherical roller bearing (HR 1, "Friction and increases in temperature"; KRW's p. 118
+    alike), α = 10°, e = 1.5 tan α = 0.2645: F_r (1 + 0.6 (F_a/(e F_r))³) up to e, 1.6 F_a/e past it,
+    written out here (1e-14); never below F_r."""
+    radial, angle = 10e3, np.radians(10.0)
+    axial = ratio * radial
+    e = 1.5 * np.tan(angle)
+    expected = radial * (1 + 0.6 * (ratio / e) ** 3) if ratio <= e else 1.6 * axial / e
+    load = float(friction_torque.friction_load("spherical_roller", radial, axial, angle))
+    assert load == pytest.approx(max(expected, radial), rel=1e-14)
+
+
+def test_spherical_roller_friction_load_is_continuous_at_e_and_finite_unloaded():
+    """At F_a = e F_r both forms give 1.6 F_r (1e-12 either side of e); an unloaded bearing gives 0 and a
+    finite gradient (the light branch's F_a/F_r kept away from 0/0)."""
+    import jax
+
+    angle = np.radians(10.0)
+    e = 1.5 * np.tan(angle)
+    for side in (1 - 1e-13, 1 + 1e-13):
+        assert float(friction_torque.friction_load("spherical_roller", 1e4, side * e * 1e4, angle)) == pytest.approx(
+            1.6e4, rel=1e-12)
+    gradient = jax.grad(lambda f: friction_torque.friction_load("spherical_roller", f[0], f[1], angle))(jnp.zeros(2))
+    assert float(friction_torque.friction_load("spherical_roller", 0.0, 0.0, angle)) == 0.0
+    assert np.all(np.isfinite(np.asarray(gradient)))
+
+
+@pytest.mark.parametrize("kind, radial, axial, load", [
+    ("needle_roller", 3e3, 0.0, 3e3), ("thrust_ball", 0.0, 6e3, 6e3), ("cylindrical_roller_thrust", 0.0, 30e3, 30e3)])
+def test_needle_and_thrust_bearings_load_their_moment_with_fr_or_fa(kind, radial, axial, load):
+    """HR 1: M₁ = f₁ F d_m with F the radial load of a needle roller bearing, the axial load of an axial
+    bearing; its rows f₀ 4 / 5.5 and f₁ 0.0005 (NA49), 1 / 1.5 and 0.0012 (F_a/C₀a)^0.33 (511–514),
+    2 / 3 and 0.0015 (811)."""
+    assert float(friction_torque.friction_load(kind, radial, axial)) == load
+    expected = {"needle_roller": (4.0, 5.5, 0.0005, 0.0), "thrust_ball": (1.0, 1.5, 0.0012, 0.33),
+                "cylindrical_roller_thrust": (2.0, 3.0, 0.0015, 0.0)}
+    assert friction_torque.PALMGREN_CONSTANTS[kind] == expected[kind]

@@ -36,7 +36,7 @@ from diffbearing.bearings.roller.roller_contact import PALMGREN_STEEL_MODULUS
 from diffbearing.bearings.roller.roller_geometry import roller_modulus
 from diffbearing.ratings import roller_life
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_jvp_matches_central_difference, palmgren_moment
 
 SCENE = importlib.resources.files("diffbearing.scenes") / "needle_roller_shaft.toml"
 
@@ -212,6 +212,7 @@ def test_an_axial_offset_is_refused():
     (('rollers = 26', 'rollers = 26\ncontact_angle = "10 deg"'), "bearings[1]: key 'contact_angle' is not read"),
     (('rollers = 26', 'rollers = 36'), "bearings[1]: rollers: 36 rollers of 3 mm do not fit"),
     (('position = "60 mm"', 'position = "60 mm"\noffset = "5 um"'), "offset"),
+    (('friction = "palmgren"', 'friction = "skf"'), "bearings[1] (needle_roller) is not covered by the 'skf' friction model"),
 ])
 def test_a_bad_needle_entry_exits_2_naming_its_key(capsys, tmp_path, change, named):
     """The example with one bad key in its needle bearing's entry: exit 2, one line naming it."""
@@ -238,10 +239,16 @@ def test_a_shallow_crown_warns_of_edge_load_at_the_needles_ends():
 @pytest.mark.slow
 def test_the_example_carries_the_axial_load_on_its_ball_bearing():
     """The needle_roller_shaft example: converged, no problems; the needle bearing carries no axial
-    load, the ball bearing all 0.8 kN; the radial loads balance the gear's 4 kN (1e-9)."""
-    result = run_model(build_model(load_scene(str(SCENE))), progress=False)
+    load, the ball bearing all 0.8 kN; the radial loads balance the gear's 4 kN (1e-9). The needle
+    bearing's Palmgren moment is HR 1's NA49 row written out (f₀ 5.5 in oil, f₁ 0.0005, M₁ = f₁ F_r
+    d_m), 1e-12."""
+    model = build_model(load_scene(str(SCENE)))
+    result = run_model(model, progress=False)
     assert bool(result.values["shaft.converged"]) and not any(result.problems)
     forces = np.asarray(result.values["bearings.force"])
     np.testing.assert_allclose(forces[1, 2], 0.0, atol=1e-9)
     np.testing.assert_allclose(forces[0, 2], 800.0, rtol=1e-9)
     np.testing.assert_allclose(forces[:, 0].sum(), 4000.0, rtol=1e-9)
+    lubricant = model.inputs["lubricant"]
+    needle = palmgren_moment(5.5, 0.0005, forces[1, 0], lubricant.viscosity / lubricant.density, 1500.0, 33e-3)
+    assert float(result.values["bearings.friction.torque"][1]) == pytest.approx(needle, rel=1e-12)

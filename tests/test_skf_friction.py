@@ -286,3 +286,24 @@ def test_shaft_skf_torque_derivatives_through_the_shaft():
     point = (jnp.asarray(model.inputs["shaft"].loads.forces), jnp.asarray(model.inputs["lubricant"].viscosity))
     direction = (jnp.array([[200.0, -100.0, 150.0]]), 0.1 * point[1])
     assert_jvp_matches_central_difference(torque, point, direction, 1e-4, rtol=1e-6)
+
+
+@pytest.mark.parametrize("kind, series, rolling, sliding", [
+    ("thrust_ball", "512", lambda dm, fa: 1.03e-6 * dm**1.83 * fa**0.54, lambda dm, fa: 1.6e-2 * dm**0.05 * fa ** (4 / 3)),
+    ("cylindrical_roller_thrust", "812", lambda dm, fa: 2.25e-6 * dm**2.38 * fa**0.31, lambda dm, fa: 0.154 * dm**0.62 * fa),
+])
+def test_thrust_bearings_rows_are_table_2b_and_3(kind, series, rolling, sliding):
+    """Thrust ball and cylindrical roller thrust bearings (SKF General Catalogue 6000, Friction, Tables 2b
+    and 3, one row of constants for each type): G_rr, G_sl written out at d_m = 77.5 mm, F_a = 30 kN
+    (1e-12); a radial load changes nothing; the replenishment reads K_Z = 3.8 and 4.4 (Table 5), and the
+    whole moment of the thrust roller bearing at 300 r/min in ν = 30 mm²/s is its parts."""
+    g_rr, g_sl = skf_friction.frictional_variables(kind, series, 0.0, 30e3, 0.0, 77.5e-3)
+    assert float(g_rr) == pytest.approx(rolling(77.5, 30e3), rel=1e-12)
+    assert float(g_sl) == pytest.approx(sliding(77.5, 30e3), rel=1e-12)
+    loaded = skf_friction.frictional_variables(kind, series, 5e3, 30e3, 0.0, 77.5e-3)
+    assert [float(x) for x in loaded] == [float(g_rr), float(g_sl)]
+    assert skf_friction.bearing_type_constants(kind, series)[0] == {"thrust_ball": 3.8, "cylindrical_roller_thrust": 4.4}[kind]
+    moment = skf_friction.frictional_moment(kind, series, 0.0, 30e3, 300 * RPM, 30e-6, 60e-3, 95e-3, supply="oil_bath")
+    parts = float(moment.inlet_shear * moment.replenishment * moment.rolling + moment.sliding)
+    assert float(moment.total) == pytest.approx(parts, rel=1e-12)
+    assert float(moment.rolling) == pytest.approx(float(g_rr) * (30.0 * 300.0) ** 0.6 * 1e-3, rel=1e-12)

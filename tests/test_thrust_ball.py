@@ -20,7 +20,7 @@ from diffbearing.ratings import reference_life, thrust_ball_ratings
 
 from diffbearing.app import cli
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_jvp_matches_central_difference, palmgren_moment
 
 SCENE = importlib.resources.files("diffbearing.scenes") / "thrust_ball_shaft.toml"
 
@@ -124,6 +124,7 @@ def test_its_tilt_stiffness_is_its_axial_stiffness_times_half_the_radius_squared
     assert float(_stiffness(angular, _under_axial_load(angular, 5000.0), 0.0)[0, 0]) > 1e6
 
 
+@pytest.mark.slow
 def test_its_stiffness_is_the_force_derivative_at_speed():
     """At speed with both speed effects, under a tilt: the ring stiffness against a central
     difference of the ring force, and the JVP of the ring force against one (rtol 1e-6)."""
@@ -203,14 +204,21 @@ def test_a_bad_thrust_entry_exits_2_naming_its_key(capsys, tmp_path, change, nam
 @pytest.mark.slow
 def test_the_example_carries_its_thrust_on_the_thrust_bearing():
     """The thrust_ball_shaft example: converged; the cylindrical roller bearings carry no axial
-    load and the thrust bearing all of it and no radial load (1e-9); the shaft's loads balance."""
-    result = run_model(build_model(load_scene(str(SCENE))), progress=False)
+    load and the thrust bearing all of it and no radial load (1e-9); the shaft's loads balance. The
+    thrust bearing's Palmgren moment is HR 1's 511 row written out (f₀ 1.5 in oil, f₁ = 0.0012
+    (P₀/C₀a)^0.33, M₁ = f₁ F_a d_m), 1e-12."""
+    model = build_model(load_scene(str(SCENE)))
+    result = run_model(model, progress=False)
     assert bool(result.values["shaft.converged"]) and not result.problems[0]
     forces = np.asarray(result.values["bearings.force"])
     np.testing.assert_allclose(forces[:2, 2], 0.0, atol=1e-9)
     np.testing.assert_allclose(forces[2, :2], 0.0, atol=1e-9)
     np.testing.assert_allclose(abs(forces[2, 2]), 6000.0, rtol=1e-9)  # in its own (turned) frame
     np.testing.assert_allclose(forces[:, 0].sum(), 1500.0, rtol=1e-9)
+    lubricant, values = model.inputs["lubricant"], result.values
+    f1 = 0.0012 * (float(values["bearings.equivalent_static_load"][2]) / float(values["bearings.static_load_rating"][2])) ** 0.33
+    thrust = palmgren_moment(1.5, f1, 6000.0, lubricant.viscosity / lubricant.density, 3000.0, 60e-3)
+    assert float(values["bearings.friction.torque"][2]) == pytest.approx(thrust, rel=1e-12)
 
 
 def test_the_closed_forms_derivatives_match_central_differences():

@@ -34,6 +34,9 @@ G_rr and G_sl (Table 2), with α_F = 24.6 (F_a/C₀)^0.24 [°], F_g the balls' c
     spherical roller     G_rr.e = R1 d_m^1.85 (F_r + R2 F_a)^0.54,  G_rr.l = R3 d_m^2.3 (F_r + R4 F_a)^0.31
                          G_sl.e = S1 d_m^0.25 (F_r⁴ + S2 F_a⁴)^{1/3},  G_sl.l = S3 d_m^0.94 (F_r³ + S4 F_a³)^{1/3}
                          the .e pair where G_rr.e < G_rr.l, else the .l pair
+    thrust ball          G_rr = R1 d_m^1.83 F_a^0.54,  G_sl = S1 d_m^0.05 F_a^{4/3}
+    cylindrical roller   G_rr = R1 d_m^2.38 F_a^0.31,  G_sl = S1 d_m^0.62 F_a
+    thrust
 
 The deep-groove forms at F_a = 0 and F_a → 0⁺ agree for G_rr but not for G_sl (d_m^−0.26 against
 d_m^−0.145): the catalogue's own jump, kept as printed. Y is the bearing's axial load factor.
@@ -98,20 +101,43 @@ TAPERED_ROLLER_CONSTANTS = {
     "332": (2.71e-6, 10.9, 0.018, 2.0),
     "other": (2.31e-6, 10.9, 0.019, 2.0),
 }
-# spherical roller bearings: series → (R1, R2, R3, R4, S1, S2, S3, S4)
+# spherical roller bearings: series → (R1, R2, R3, R4, S1, S2, S3, S4) (Table 3e)
 SPHERICAL_ROLLER_CONSTANTS = {
     **dict.fromkeys(("213E", "222E"), (1.6e-6, 5.84, 2.81e-6, 5.8, 3.62e-3, 508.0, 8.8e-3, 117.0)),
+    "222": (2.0e-6, 5.54, 2.92e-6, 5.5, 5.10e-3, 414.0, 9.7e-3, 100.0),
+    "223": (1.7e-6, 4.1, 3.13e-6, 4.05, 6.92e-3, 124.0, 1.7e-2, 41.0),
+    "223E": (1.6e-6, 4.1, 3.14e-6, 4.05, 6.23e-3, 124.0, 1.7e-2, 41.0),
+    "230": (2.4e-6, 6.44, 3.76e-6, 6.4, 4.13e-3, 755.0, 1.1e-2, 160.0),
+    "231": (2.4e-6, 4.7, 4.04e-6, 4.72, 6.70e-3, 231.0, 1.7e-2, 65.0),
+    "232": (2.3e-6, 4.1, 4.00e-6, 4.05, 8.66e-3, 126.0, 2.1e-2, 41.0),
+    "238": (3.1e-6, 12.1, 3.82e-6, 12.0, 1.74e-3, 9495.0, 5.9e-3, 1057.0),
+    "239": (2.7e-6, 8.53, 3.87e-6, 8.47, 2.77e-3, 2330.0, 8.5e-3, 371.0),
+    "240": (2.9e-6, 4.87, 4.78e-6, 4.84, 6.95e-3, 240.0, 2.1e-2, 68.0),
+    "241": (2.6e-6, 3.8, 4.79e-6, 3.7, 1.00e-2, 86.7, 2.9e-2, 31.0),
+    "248": (3.8e-6, 9.4, 5.09e-6, 9.3, 2.80e-3, 3415.0, 1.2e-2, 486.0),
+    "249": (3.0e-6, 6.67, 5.09e-6, 6.62, 3.90e-3, 887.0, 1.7e-2, 180.0),
 }
+# thrust ball and cylindrical roller thrust bearings: series → (R1, S1); Table 3 gives one row for each
+# type, which every series of the type shares
+THRUST_BALL_CONSTANTS = dict.fromkeys(("511", "512", "513", "514"), (1.03e-6, 1.6e-2))
+CYLINDRICAL_ROLLER_THRUST_CONSTANTS = dict.fromkeys(("811", "812", "893", "894"), (2.25e-6, 0.154))
 SERIES_CONSTANTS = {
     "deep_groove_ball": DEEP_GROOVE_BALL_CONSTANTS,
     "angular_contact_ball": ANGULAR_CONTACT_BALL_CONSTANTS,
     "cylindrical_roller": CYLINDRICAL_ROLLER_CONSTANTS,
     "tapered_roller": TAPERED_ROLLER_CONSTANTS,
     "spherical_roller": SPHERICAL_ROLLER_CONSTANTS,
+    "thrust_ball": THRUST_BALL_CONSTANTS,
+    "cylindrical_roller_thrust": CYLINDRICAL_ROLLER_THRUST_CONSTANTS,
 }
+# the series of each kind when a scene names none: the series of Palmgren's defaults (friction_torque),
+# for spherical roller bearings the catalogue example's 222E
+DEFAULT_SERIES = {"deep_groove_ball": "62", "angular_contact_ball": "single_row", "cylindrical_roller": "2",
+                  "tapered_roller": "302", "spherical_roller": "222E", "thrust_ball": "511",
+                  "cylindrical_roller_thrust": "811"}
 
 # bearing type → (K_Z, K_L), the geometry constants of the replenishment factor and the drag loss
-# (SKF General Catalogue 6000, Friction, "Drag losses in oil bath lubrication"); K_L only for rollers
+# (SKF General Catalogue 6000, Friction, "Drag losses in oil bath lubrication", Table 5); K_L only for rollers
 BEARING_TYPE_CONSTANTS = {
     "deep_groove_ball": (3.1, None),
     "angular_contact_ball.single_row": (4.4, None),
@@ -121,6 +147,8 @@ BEARING_TYPE_CONSTANTS = {
     "cylindrical_roller.full_complement": (6.2, 0.7),
     "tapered_roller": (6.0, 0.7),
     "spherical_roller": (5.5, 0.8),
+    "thrust_ball": (3.8, None),
+    "cylindrical_roller_thrust": (4.4, 0.43),
 }
 
 # lubrication → K_rs of φ_rs (SKF General Catalogue 6000, Friction, "Kinematic replenishment/starvation")
@@ -248,6 +276,22 @@ def spherical_roller_variables(constants, radial, axial, pitch_diameter):
     return rolling_e, rolling_l, sliding_e, sliding_l
 
 
+def thrust_ball_variables(constants, axial, pitch_diameter):
+    """(G_rr, G_sl) in the catalogue's units (Table 2) of a thrust ball bearing: F_a [N], d_m [m],
+    `constants` (R1, S1) of Table 3."""
+    r1, s1 = constants
+    dm = _mm(pitch_diameter)
+    return r1 * dm**1.83 * positive_power(axial, 0.54), s1 * dm**0.05 * positive_power(axial, 4.0 / 3.0)
+
+
+def cylindrical_roller_thrust_variables(constants, axial, pitch_diameter):
+    """(G_rr, G_sl) in the catalogue's units (Table 2) of a cylindrical roller thrust bearing: F_a [N],
+    d_m [m], `constants` (R1, S1) of Table 3."""
+    r1, s1 = constants
+    dm = _mm(pitch_diameter)
+    return r1 * dm**2.38 * positive_power(axial, 0.31), s1 * dm**0.62 * axial
+
+
 def frictional_variables(kind: str, constants, radial, axial, speed, pitch_diameter, *, static_load_rating=None,
                          axial_load_factor=None):
     """(G_rr, G_sl) in the catalogue's units (Table 2) for `kind` (one of `KINDS`): F_r, F_a [N],
@@ -288,6 +332,9 @@ FRICTIONAL_VARIABLES = {
             c, radial, axial, dm, axial_load_factor),
         (("axial_load_factor", "tapered roller bearings (the bearing's Y)"),)),
     "spherical_roller": (lambda c, radial, axial, speed, dm: _spherical_roller_pair(c, radial, axial, dm), ()),
+    "thrust_ball": (lambda c, radial, axial, speed, dm: thrust_ball_variables(c, axial, dm), ()),
+    "cylindrical_roller_thrust": (lambda c, radial, axial, speed, dm: cylindrical_roller_thrust_variables(c, axial, dm),
+                                  ()),
 }
 
 

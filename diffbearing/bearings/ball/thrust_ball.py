@@ -186,6 +186,11 @@ class ThrustBallSupport(AbstractSupport):
     def nominal_contact_angle(self):
         return self._rated_angle()
 
+    def friction_kind(self, model: str) -> str | None:
+        """Both models' thrust ball rows (HR 1's 511–514, SKF's thrust ball bearings), which hold for
+        α = 90°: None for an angular-contact thrust bearing."""
+        return "thrust_ball" if is_axial(self.bearing) else None
+
     def envelope(self, contacts: ContactLoads):
         """The largest approach / D_w; the largest loaded contact's turn from its groove's facing
         direction (|α| on rings, |α − 90°| on a 90° bearing's washers: under 90° on the groove's near

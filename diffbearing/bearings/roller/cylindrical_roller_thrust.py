@@ -229,6 +229,10 @@ class CylindricalRollerThrustSupport(AbstractSupport):
     def nominal_contact_angle(self):
         return AXIAL
 
+    def friction_kind(self, model: str) -> str | None:
+        """Both models' cylindrical roller thrust rows (HR 1's 811, SKF's one row for the type)."""
+        return "cylindrical_roller_thrust"
+
     def permissible_misalignment(self):
         """2′ (`PERMISSIBLE_MISALIGNMENT`)."""
         return PERMISSIBLE_MISALIGNMENT

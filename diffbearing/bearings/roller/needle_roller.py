@@ -158,6 +158,10 @@ class NeedleRollerSupport(AbstractSupport):
     def rolling_element(self) -> str:
         return "roller"
 
+    def friction_kind(self, model: str) -> str | None:
+        """Palmgren's needle roller row (HR 1's NA49); SKF's model has none."""
+        return "needle_roller" if model == "palmgren" else None
+
     def permissible_misalignment(self):
         """2′ (`PERMISSIBLE_MISALIGNMENT`): long rollers turn a tilt into edge load sooner."""
         return PERMISSIBLE_MISALIGNMENT

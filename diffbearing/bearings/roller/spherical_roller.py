@@ -430,8 +430,8 @@ class SphericalRollerSupport(AbstractSupport):
         return self.raceways.contact_angle
 
     def friction_kind(self, model: str) -> str | None:
-        """SKF's spherical roller rows (its Table 3 holds them); Palmgren's table here holds none."""
-        return "spherical_roller" if model == "skf" else None
+        """Both models' spherical roller rows (HR 1's 222 series by default; SKF's Table 3e)."""
+        return "spherical_roller"
 
     def permissible_misalignment(self):
         """1.5° (`PERMISSIBLE_MISALIGNMENT`)."""

@@ -19,9 +19,6 @@ from ..systems.shaft_layout import check_static_ratings, layout_supports
 
 FRICTION_MODELS = ("palmgren", "skf")
 DEFAULT_SUPPLY = "oil_bath"
-# SKF's series (Table 3) by kind when the scene names none: the series of Palmgren's defaults
-SKF_DEFAULT_SERIES = {"deep_groove_ball": "62", "angular_contact_ball": "single_row", "cylindrical_roller": "2",
-                      "tapered_roller": "302", "spherical_roller": "222E"}
 # lubricant.supply → SKF's lubrication of K_rs: circulating oil is fed as a jet, the bath is a low-level one
 SKF_SUPPLY = {"circulating": "oil_jet", "oil_bath": "oil_bath", "grease": "grease"}
 
@@ -65,9 +62,9 @@ def _constants(v, built) -> dict:
 
 
 def _skf_bearing(v, built) -> dict:
-    """The scene's SKF series (default `SKF_DEFAULT_SERIES`), lubrication, d, D and drag inputs."""
+    """The scene's SKF series (default `skf_friction.DEFAULT_SERIES`), lubrication, d, D and drag inputs."""
     kind = built["bearing"].kind
-    series = v.get("friction.series", SKF_DEFAULT_SERIES[kind])
+    series = v.get("friction.series", skf_friction.DEFAULT_SERIES[kind])
     table = skf_friction.SERIES_CONSTANTS[kind]
     if series not in table:
         raise ValueError(f"friction.series: the {kind} series of SKF's friction model, one of {tuple(table)}, "
@@ -153,7 +150,7 @@ def _shaft_skf_bearings(v, built) -> dict:
         if bore is None or outside is None:
             raise ValueError(f"bearings[{number}]: bore and outer_diameter are needed by effects.friction = 'skf' "
                              "(SKF's model reads d and D)")
-        bearings.append(SkfBearing(own or series or SKF_DEFAULT_SERIES[kind], SKF_SUPPLY[supply], bore, outside, None,
+        bearings.append(SkfBearing(own or series or skf_friction.DEFAULT_SERIES[kind], SKF_SUPPLY[supply], bore, outside, None,
                                    None))
     return {"skf_bearing": tuple(bearings)}
 
