@@ -13,7 +13,6 @@ benchmarks/results/spherical_roller_laminae.{json,md}.
 """
 
 import argparse
-import json
 import sys
 from pathlib import Path
 
@@ -24,7 +23,7 @@ import jax.numpy as jnp  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from timing import compiled_with_time, machine, median_time  # noqa: E402
+from timing import machine, timed_cases, write_results  # noqa: E402
 
 from diffbearing import RollerModel, spherical_roller, spherical_roller_raceways, spherical_roller_support  # noqa: E402
 from diffbearing.ratings.reference_life import contact_reference_life  # noqa: E402
@@ -66,13 +65,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=15)
     args = parser.parse_args()
     load = jnp.asarray(LOAD)
-    rows = {}
-    for laminae in sorted(set(args.laminae) | {REFERENCE}):
-        compiled, compile_s = compiled_with_time(case(laminae), load)
-        out = jax.block_until_ready(compiled(load))
-        run_s = median_time(lambda: compiled(load), args.repeats)
-        rows[laminae] = dict(out=[np.asarray(x) for x in out], run_s=run_s, compile_s=compile_s)
-        print(laminae, f"{run_s * 1e3:.3f} ms", f"residual {float(out[4]):.2e} N", flush=True)
+    rows = timed_cases(case, sorted(set(args.laminae) | {REFERENCE}), load, args.repeats)
     best = rows[REFERENCE]["out"]
     table = []
     for laminae, row in rows.items():
@@ -96,11 +89,7 @@ def main():
                      f"{row['translation'][0] * 1e6:.3f} | {row['error_radial']:.1e} | {row['life']:.1f} | "
                      f"{row['error_life']:.1e} | {row['pressure'] / 1e9:.4f} | {row['error_pressure']:.1e} | "
                      f"{row['error_stiffness']:.1e} |")
-    text = "\n".join(lines)
-    print(text)
-    RESULTS.mkdir(exist_ok=True)
-    (RESULTS / "spherical_roller_laminae.md").write_text(text + "\n")
-    (RESULTS / "spherical_roller_laminae.json").write_text(json.dumps(dict(machine=machine(), rows=table), indent=1) + "\n")
+    write_results(RESULTS, "spherical_roller_laminae", "\n".join(lines), dict(machine=machine(), rows=table))
 
 
 if __name__ == "__main__":

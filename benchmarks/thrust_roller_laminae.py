@@ -11,7 +11,6 @@ sliding loss (μ = 0.05) under jit; the time is the median of `repeats` calls af
 """
 
 import argparse
-import json
 import sys
 from pathlib import Path
 
@@ -22,7 +21,7 @@ import jax.numpy as jnp  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from timing import compiled_with_time, machine, median_time  # noqa: E402
+from timing import machine, timed_cases, write_results  # noqa: E402
 
 from diffbearing import RollerModel, cylindrical_roller_thrust_bearing, cylindrical_roller_thrust_support  # noqa: E402
 from diffbearing import roller_profile  # noqa: E402
@@ -64,13 +63,7 @@ def main():
     parser.add_argument("--laminae", type=int, nargs="+", default=[4, 6, 10, 20, 30, 50, 100])
     parser.add_argument("--repeats", type=int, default=25)
     args = parser.parse_args()
-    rows = {}
-    for laminae in sorted(set(args.laminae) | {REFERENCE}):
-        compiled, compile_s = compiled_with_time(case(laminae), AXIAL_LOAD)
-        out = jax.block_until_ready(compiled(AXIAL_LOAD))
-        run_s = median_time(lambda: compiled(AXIAL_LOAD), args.repeats)
-        rows[laminae] = dict(out=[np.asarray(x) for x in out], run_s=run_s, compile_s=compile_s)
-        print(laminae, f"{run_s * 1e3:.3f} ms", flush=True)
+    rows = timed_cases(case, sorted(set(args.laminae) | {REFERENCE}), AXIAL_LOAD, args.repeats)
     best = rows[REFERENCE]["out"]
     scale = np.diag([1.0, 1.0, 1.0, 2 / 77.5e-3, 2 / 77.5e-3])
     k_best = scale @ best[1] @ scale
@@ -95,11 +88,7 @@ def main():
         lines.append(f"| {row['laminae']} | {row['run_s'] * 1e3:.3f} ms | {row['compile_s']:.2f} s | {row['life']:.1f} | "
                      f"{row['error_life']:.1e} | {row['power']:.2f} | {row['error_power']:.1e} | {row['pressure'] / 1e9:.4f} | "
                      f"{row['error_pressure']:.1e} | {row['error_stiffness']:.1e} |")
-    text = "\n".join(lines)
-    print(text)
-    RESULTS.mkdir(exist_ok=True)
-    (RESULTS / "thrust_roller_laminae.md").write_text(text + "\n")
-    (RESULTS / "thrust_roller_laminae.json").write_text(json.dumps(dict(machine=machine(), rows=table), indent=1) + "\n")
+    write_results(RESULTS, "thrust_roller_laminae", "\n".join(lines), dict(machine=machine(), rows=table))
 
 
 if __name__ == "__main__":

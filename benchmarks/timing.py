@@ -1,5 +1,6 @@
 """Timing and memory helpers shared by the benchmarks."""
 
+import json
 import os
 import platform
 import resource
@@ -8,6 +9,7 @@ import time
 import tracemalloc
 
 import jax
+import numpy as np
 
 # compile times are measured from scratch: `run_model` and `run_sweep` keep no programs between a
 # benchmark's runs (diffbearing/app/compilation_cache.py), unless the caller set DIFFBEARING_CACHE
@@ -59,3 +61,24 @@ def machine():
     """One line: architecture, JAX backend × devices, JAX version, CPU cores."""
     return (f"{platform.machine()}, {os.cpu_count()} cores, {jax.devices()[0].platform.upper()} ×{len(jax.devices())}, "
             f"jax {jax.__version__}")
+
+
+def timed_cases(make_case, counts, argument, repeats):
+    """{count: dict(out, run_s, compile_s)} for each of `counts`: `make_case(count)` compiled for
+    `argument`, its outputs (as NumPy) and the median of `repeats` calls after compilation."""
+    rows = {}
+    for count in counts:
+        compiled, compile_s = compiled_with_time(make_case(count), argument)
+        out = jax.block_until_ready(compiled(argument))
+        run_s = median_time(lambda: compiled(argument), repeats)
+        rows[count] = dict(out=[np.asarray(x) for x in out], run_s=run_s, compile_s=compile_s)
+        print(count, f"{run_s * 1e3:.3f} ms", flush=True)
+    return rows
+
+
+def write_results(results, name, text, document):
+    """Print `text` and write it to results/NAME.md, `document` to results/NAME.json."""
+    print(text)
+    results.mkdir(exist_ok=True)
+    (results / f"{name}.md").write_text(text + "\n")
+    (results / f"{name}.json").write_text(json.dumps(document, indent=1) + "\n")
