@@ -158,6 +158,7 @@ from .ratings.load_distribution import (
 )
 from .ratings.minimum_load import minimum_load as minimum_load
 from .ratings.radial_load_factors import load_factors as load_factors, relative_axial_load as relative_axial_load
+from .ratings.reliability import reliability_factor as reliability_factor
 from .ratings.roller_life import (
     roller_dynamic_load_rating as roller_dynamic_load_rating,
     roller_reference_rating_life as roller_reference_rating_life,

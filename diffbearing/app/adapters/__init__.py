@@ -34,4 +34,5 @@ from .bearings import roller, roller_bearing, double_row, four_point, self_align
 from .bearings import cylindrical_roller_thrust, spherical_roller  # noqa: F401
 from .effects import life  # noqa: F401
 from .systems import shaft  # noqa: F401
+from .effects import reliability  # noqa: F401
 from .effects import film, cage, frequencies, safety, friction  # noqa: F401
