@@ -19,7 +19,8 @@ from .compilation_cache import use_compilation_cache
 from .registry import Reads
 from .result import RunResult
 from .scene import Scene
-from .sweep import check_corners, run_sweep, sweep_axes
+from .duty_cycle import DutyCycle, case_values, cycle_values, duty_cycle_of
+from .sweep import check_corners, run_points, run_sweep, sweep_axes
 
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
 # selects the adapters, and the effects and fidelity tables (checked by `resolve` and `read_by`)
@@ -48,6 +49,7 @@ class Model:
     sweep_axes: dict = dataclasses.field(default_factory=dict)  # {dotted key: SI values} of a [sweep] table
     idle_settings: list = dataclasses.field(default_factory=list)  # fidelity keys only another level reads
     switched_off: list = dataclasses.field(default_factory=list)  # keys left unread by an effect an override changed
+    duty: DutyCycle | None = None  # the load cases of a [[duty]] array
 
     @property
     def outputs(self) -> dict:
@@ -82,6 +84,24 @@ def _unread(scene: Scene, blocks, asked: set, axes: dict) -> tuple[list[str], li
     return unread, idle
 
 
+def _duty(scene: Scene, blocks) -> DutyCycle | None:
+    """The scene's duty cycle, every case's parameters checked (ValueError naming `duty[i]`)."""
+    if scene.duty is None:
+        return None
+    if scene.sweep:
+        raise ValueError("duty: a scene runs a [sweep] or a [[duty]] cycle, not both")
+    if scene.bearing_type == registry.SHAFT_TYPE:
+        raise ValueError("duty: duty cycles of a shaft are not available yet (its [[loads]] are not set per case); "
+                         "a bearing's or a set's cycle sets operating.force and the speeds per case")
+    duty = duty_cycle_of(scene.duty, scene.values)
+    for number in range(duty.count):
+        try:
+            build_inputs(scene.bearing_type, blocks, case_values(duty, scene.values, number))
+        except ValueError as error:
+            raise ValueError(f"duty[{number}]: {error}") from None
+    return duty
+
+
 def build_model(scene: Scene) -> Model:
     """Assemble the model of a scene: only the blocks its effects name (and what they require),
     and the inputs those blocks read. ValueError for bad values, settings or unread keys.
@@ -100,11 +120,12 @@ def build_model(scene: Scene) -> Model:
     axes = sweep_axes(scene.sweep) if scene.sweep else {}  # bad entries fail here, before compiling
     if axes:  # and parameters out of range at a corner of the grid
         check_corners(scene.values, axes, lambda point: build_inputs(scene.bearing_type, blocks, point))
+    duty = _duty(scene, blocks)
     settings = {"effects": scene.table("effects"), "fidelity": scene.table("fidelity")}
     for block in blocks:
         if block.validate is not None:
             block.validate(settings, inputs)  # bad grid or tolerance fails here, before compiling
-    unread, idle = _unread(scene, blocks, values.asked, axes)
+    unread, idle = _unread(scene, blocks, values.asked, axes | (duty.cases if duty else {}))
     switched_off = unread if scene.switched else []  # the file's keys of an effect --set turned off: a warning
     unread = [] if scene.switched else unread
     if unread:
@@ -114,7 +135,7 @@ def build_model(scene: Scene) -> Model:
                          f"{'them' if len(unread) > 1 else 'it'} or switch on the effect that reads "
                          f"{'them' if len(unread) > 1 else 'it'}")
     return Model(scene=scene, inputs=inputs, blocks=blocks, settings=settings, not_implemented=missing,
-                 sweep_axes=axes, idle_settings=idle, switched_off=switched_off)
+                 sweep_axes=axes, idle_settings=idle, switched_off=switched_off, duty=duty)
 
 
 def run_model(model: Model, progress: bool = True) -> RunResult:
@@ -123,6 +144,8 @@ def run_model(model: Model, progress: bool = True) -> RunResult:
     terminal, each compilation is announced on stderr (`registry.compiled`), a sweep's chunks counted."""
     if model.sweep_axes:
         return run_sweep(model, model.sweep_axes, progress=progress)
+    if model.duty is not None:
+        return _run_duty(model, progress)
     start = time.perf_counter()
     executable, cached = registry.compiled(model.blocks, model.settings, model.inputs,
                                            progress=progress and sys.stderr.isatty())
@@ -131,3 +154,11 @@ def run_model(model: Model, progress: bool = True) -> RunResult:
     values = jax.block_until_ready(executable(model.inputs))
     run_s = time.perf_counter() - start
     return RunResult(model, {key: np.asarray(value) for key, value in values.items()}, compile_s, run_s)
+
+
+def _run_duty(model: Model, progress: bool) -> RunResult:
+    """The duty cycle's cases as one batch (`sweep.run_points`) and the cycle's values (`duty_cycle`)."""
+    duty = model.duty
+    values, compile_s, run_s = run_points(model, (duty.count,), duty.cases, progress=progress)
+    values |= cycle_values(duty, values, model.outputs, model.scene.values)
+    return RunResult(model, values, compile_s, run_s, duty=duty)

@@ -314,12 +314,14 @@ def convergence_checks(*flags: tuple[str, str]):
     return checks
 
 
-def problems(blocks, values: dict, grid_shape: tuple[int, ...] = ()) -> tuple[list[str], list[str]]:
-    """(errors, warnings) of the blocks' checks over every point of a run (`grid_shape` () for one point)."""
+def problems(blocks, values: dict, grid_shape: tuple[int, ...] = (), label: str = "sweep point"
+             ) -> tuple[list[str], list[str]]:
+    """(errors, warnings) of the blocks' checks over every point of a run (`grid_shape` () for one
+    point), each line of a point prefixed by `label` and its number."""
     errors, warnings = [], []
     for number, index in enumerate(np.ndindex(grid_shape)):
         point = {key: np.asarray(value)[index] for key, value in values.items()}
-        prefix = f"sweep point {number}: " if grid_shape else ""
+        prefix = f"{label} {number}: " if grid_shape else ""
         for block in blocks:
             if block.checks is not None:
                 found_errors, found_warnings = block.checks(point)

@@ -8,6 +8,7 @@ import json
 
 import numpy as np
 
+from .duty_cycle import damage_life
 from .formatting import format_number, format_value, swept_display, to_display, unit_label
 from .registry import adapters_for
 from .schema import lookup
@@ -79,6 +80,58 @@ def format_sweep_report(result) -> str:
     return "\n".join(lines)
 
 
+def _case_table(result, columns) -> list[str]:
+    """Rows of `columns` [(header, cells)], one per point."""
+    widths = [max(len(h), *(len(c) for c in cells)) + 2 for h, cells in columns]
+    lines = ["  " + "".join(f"{h:>{w}}" for (h, _), w in zip(columns, widths))]
+    for row in range(len(columns[0][1])):
+        lines.append("  " + "".join(f"{cells[row]:>{w}}" for (_, cells), w in zip(columns, widths)))
+    return lines
+
+
+def format_duty_report(result) -> str:
+    """Report of a duty cycle: each case's keys, share and key results, then the cycle's lives by
+    Palmgren–Miner (`duty_cycle.py`), their hours at the mean speed, each case's share of the damage."""
+    duty, values = result.duty, result.values
+    lines = _header(result)
+    lines += ["", f"Duty cycle of {duty.count} load cases, one vmapped batch; each case sets {', '.join(duty.cases)} "
+              "(the lines above show the scene's own values)"]
+    columns = [("case", [str(number) for number in range(duty.count)]),
+               (duty.share_kind, [format_number(share) for share in duty.shares])]
+    if duty.share_kind != "revolution_share":
+        columns.append(("revolution share", [format_number(share) for share in values["duty.revolution_share"]]))
+    columns += [_swept_cells(key, array) for key, array in duty.cases.items()]
+    case_values = {key: value for key, value in values.items() if not key.startswith("duty.")}
+    for adapter in active_adapters(result.model):
+        if adapter.sweep_columns is not None:
+            columns += adapter.sweep_columns(case_values)
+    damaged = damage_life(values)
+    if damaged is not None:
+        columns.append((f"damage share ({damaged.rpartition('.')[2]})",
+                        [f"{share:.1%}" for share in values["duty.damage_share"]]))
+    lines += _case_table(result, columns)
+    lines += ["", "Cycle (Palmgren–Miner, 1/L = Σ u_i/L_i over the revolutions' shares)"]
+    if "life.a1" in values:
+        reliability = format_number(result.model.scene.values["life.reliability"])
+        lines.append(f"  {'L_n at the reliability R = ' + reliability + ' %':<56}"
+                     f"{'a₁ = ' + format_number(np.ravel(values['life.a1'])[0]):>14}")
+    outputs = result.model.outputs
+    for key, out in outputs.items():
+        if f"duty.{key}" in values and np.ndim(values[f"duty.{key}"]) == 0:
+            hours = values.get(f"duty.hours.{key}")
+            extra = "" if hours is None else f"  ({format_number(hours)} h)"
+            lines.append(f"  {out.description:<56}{format_number(values[f'duty.{key}']):>14}  {unit_label(out.display)}{extra}")
+    if "duty.equivalent_load" in values:
+        lines.append(f"  {'equivalent load of the cycle, (Σ u_i P_i^p)^(1/p)':<56}"
+                     f"{format_number(to_display(values['duty.equivalent_load'], 'N', 'kN')):>14}  kN")
+    if "duty.mean_speed" in values:
+        lines.append(f"  {'mean speed Σ t_i n_i':<56}{format_number(to_display(values['duty.mean_speed'], 'rad/s', 'rpm')):>14}"
+                     f"  {unit_label('rpm')}")
+    lines += _problem_lines(result, most=10)
+    lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s:.3f} s for {duty.count} cases (after compilation)"]
+    return "\n".join(lines)
+
+
 def _output_tables(result) -> list[str]:
     """The outputs of the generic tables, one section per first key part; an output keyed
     section.inner.name / section.outer.name shares a row with its other side."""
@@ -118,6 +171,8 @@ def format_report(result) -> str:
     """The text report of a run: header, output tables, the adapters' own lines, problems, timing."""
     if result.sweep_axes:
         return format_sweep_report(result)
+    if result.duty is not None:
+        return format_duty_report(result)
     lines = _header(result) + _output_tables(result)
     for adapter in active_adapters(result.model):
         if adapter.report is not None:
@@ -159,6 +214,10 @@ def json_document(result) -> dict:
     document = {"title": result.model.scene.title, **nest(flat)}
     if result.sweep_axes:
         document["sweep"] = {key: np.asarray(values).tolist() for key, values in result.sweep_axes.items()}
+    if result.duty is not None:  # beside the cycle's values under "duty"
+        document.setdefault("duty", {})["cases"] = {key: np.asarray(values).tolist()
+                                                     for key, values in result.duty.cases.items()}
+        document["duty"][result.duty.share_kind] = result.duty.shares.tolist()
     document["not_computed"] = list(result.model.not_implemented)
     document["errors"], document["warnings"] = (list(found) for found in result.problems)
     return document

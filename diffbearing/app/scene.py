@@ -25,6 +25,7 @@ class Scene:
     sweep: dict | None
     source: str
     switched: tuple[str, ...] = ()
+    duty: list | None = None  # the raw [[duty]] array (app/duty_cycle.py)
 
     @property
     def bearing_type(self) -> str:
@@ -141,4 +142,4 @@ def load_scene(path: str | None = None, overrides=()) -> Scene:
     values = validate(document)
     sweep = document.get("sweep")
     return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source,
-                 switched=_switched_effects(original, document))
+                 switched=_switched_effects(original, document), duty=document.get("duty"))

@@ -80,11 +80,12 @@ def convert(dotted: str, value):
 
 
 def validate(document: dict) -> dict[str, object]:
-    """Validate a parsed TOML scene; return {dotted key: SI value} (the [sweep] table kept raw)."""
+    """Validate a parsed TOML scene; return {dotted key: SI value} (the [sweep] table and the
+    [[duty]] array kept raw: app/sweep.py, app/duty_cycle.py check them)."""
     flat: dict[str, object] = {}
     tables = {dotted.partition(".")[0] for dotted in schema() if "." in dotted}
     for table, content in document.items():
-        if table == "sweep":
+        if table in ("sweep", "duty"):
             continue
         if isinstance(content, dict):
             if table not in tables:

@@ -83,9 +83,15 @@ def check_corners(scene_values: dict, axes: dict, inputs_from_values) -> None:
 
 def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     """Evaluate `model` (a model.Model) over the grid `axes`; returns a RunResult with batched values."""
-    inputs_from_values = model.inputs_from_values
-    check_corners(model.scene.values, axes, inputs_from_values)
+    check_corners(model.scene.values, axes, model.inputs_from_values)
     shape, points = grid_points(axes)
+    values, compile_s, run_s = run_points(model, shape, points, chunk=chunk, progress=progress)
+    return RunResult(model, values, compile_s, run_s, sweep_axes=axes)
+
+
+def run_points(model, shape: tuple[int, ...], points: dict, *, chunk: int = CHUNK, progress: bool = True):
+    """({key: array of `shape` + the output's}, compile time [s], run time [s]) of `model` at the
+    points {key: (N, ...) SI values}, N = prod(shape), as one vmapped batch in chunks (module docstring)."""
     count = int(np.prod(shape))
     # process p evaluates points [p·share, (p + 1)·share): gathered in process order the blocks are
     # the grid in order, followed by padding that is cut off
@@ -101,7 +107,7 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     def point(swept):
         values = dict(base)
         values.update(swept)
-        return evaluate(inputs_from_values(values))
+        return evaluate(model.inputs_from_values(values))
 
     sequential = any(block.sequential_sweep for block in blocks)  # iterative solvers: one point after another
     batch = (lambda swept: jax.lax.map(point, swept)) if sequential else jax.vmap(point)
@@ -143,4 +149,4 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
         block = multihost_utils.process_allgather(block, tiled=True)
     run_s = time.perf_counter() - run_start
     values = {key: np.asarray(value)[:count].reshape(shape + value.shape[1:]) for key, value in block.items()}
-    return RunResult(model, values, compile_s, run_s, sweep_axes=axes)
+    return values, compile_s, run_s
