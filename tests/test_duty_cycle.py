@@ -145,13 +145,35 @@ def test_a_bad_cycle_exits_2_naming_it(capsys, tmp_path, cycle, named):
     assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
 
 
-def test_a_shafts_cycle_is_refused_until_its_loads_can_be_set_per_case(capsys, tmp_path):
+def test_a_shafts_cycle_is_its_bearings_miner_sums_and_their_system_life():
+    """gearbox_shaft_duty_cycle (three cases setting loads[0].force, .moment and shaft.speed): the
+    middle case, which sets nothing, is the gearbox_shaft example itself (1e-12); each bearing's cycle
+    L10 and L10r are Miner's sums of its case lives over u_i ∝ t_i n_i (1e-12), the shaft's the
+    bearings' cycle L10r combined, (Σ L^(−10/9))^(−9/10) (1e-12)."""
+    cycle = run_model(build_model(load_scene(example_scene("gearbox_shaft_duty_cycle"))), progress=False).values
+    single = run_model(build_model(load_scene(example_scene("gearbox_shaft"), overrides=["effects.stiffness=false"])),
+                       progress=False).values
+    for key in ("bearings.force", "bearings.L10r", "bearings.L10", "shaft.L10r"):
+        np.testing.assert_allclose(np.asarray(cycle[key])[1], single[key], rtol=1e-12, atol=1e-9, err_msg=key)
+    turns = np.array([0.5 * 3000, 0.4 * 3000, 0.1 * 1500])
+    shares = (turns / turns.sum())[:, None]
+    for key in ("bearings.L10", "bearings.L10r"):
+        np.testing.assert_allclose(cycle[f"duty.{key}"], 1.0 / np.sum(shares / np.asarray(cycle[key]), axis=0), rtol=1e-12)
+    bearings = np.asarray(cycle["duty.bearings.L10r"])
+    assert float(cycle["duty.shaft.L10r"]) == pytest.approx(float(np.sum(bearings ** (-10 / 9)) ** (-9 / 10)), rel=1e-12)
+
+
+@pytest.mark.parametrize("change, named", [
+    (('"loads[0].moment" = ["0 N*m", "45 N*m"]', '"loads[1].moment" = ["0 N*m", "45 N*m"]'),
+     "duty[0].loads[1].moment: the scene has no [[loads]] entry 1"),
+    (('"loads[0].moment" = ["0 N*m", "45 N*m"]', '"loads[0].moment" = ["45 N*m"]'), "duty[0].loads[0].moment: expected a list"),
+])
+def test_a_bad_shaft_case_exits_2_naming_it(capsys, tmp_path, change, named):
     path = tmp_path / "shaft.toml"
-    cycle = '[[duty]]\nrevolution_share = 1.0\n"shaft.speed" = "1000 rpm"\n'
-    path.write_text(open(example_scene("gearbox_shaft")).read() + cycle)
+    path.write_text(open(example_scene("gearbox_shaft_duty_cycle")).read().replace(*change))
     code = cli.main(["run", str(path)])
     err = capsys.readouterr().err
-    assert code == 2 and "duty: duty cycles of a shaft are not available yet" in err, err
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
 
 
 @pytest.mark.slow

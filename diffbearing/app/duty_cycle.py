@@ -1,5 +1,5 @@
-"""Duty cycles: a scene's [[duty]] array of load cases, solved as one vmapped batch, and their lives
-combined by the Palmgren–Miner rule (`diffbearing.ratings.duty_cycle`).
+"""Duty cycles: a scene's [[duty]] array of load cases of a bearing, a set or a shaft, solved as one
+vmapped batch, and their lives combined by the Palmgren–Miner rule (`diffbearing.ratings.duty_cycle`).
 
     [[duty]]
     time_share = 0.7                                   # or revolution_share, the same in every case
@@ -11,31 +11,39 @@ combined by the Palmgren–Miner rule (`diffbearing.ratings.duty_cycle`).
     "operating.force" = ["9 kN", "0 N", "2 kN"]
     "operating.inner_speed" = "600 rpm"
 
-Each case sets numeric scene keys (quoted dotted names, as in [sweep]); a key a case leaves out takes
-the scene's value. The shares are of time (then the revolutions' shares follow from each case's
-relative ring speed, |inner_speed − outer_speed|) or of revolutions, positive, summing to 1. Every
-output of every case is kept (a leading axis over the cases); for the cycle, each life the scene's
-effects compute (every output in 10⁶ rev) as `duty.<key>` = 1 / Σ u_i / L_i — a set's life its
-bearings' cycle lives combined as the set's lives are, (Σ L^(−10/9))^(−9/10) — with time shares its
-hours `duty.hours.<key>` at the mean speed (`duty.mean_speed`), each case's share of the damage of
-its first life (`duty.damage_share`), the revolutions' shares (`duty.revolution_share`) and the
-equivalent load of ISO 281's L10 (`duty.equivalent_load`).
+Each case sets numeric scene keys (quoted dotted names, as in [sweep]; on a shaft also
+"loads[k].force" = [Fx, Fy, Fz] and "loads[k].moment" = [Mx, My] of its k-th [[loads]] entry); a key
+a case leaves out takes the scene's value. The shares are of time (then the revolutions' shares
+follow from each case's relative ring speed, |inner_speed − outer_speed|, a shaft's |shaft.speed|)
+or of revolutions, positive, summing to 1. Every output of every case is kept (a leading axis over
+the cases); for the cycle, each life the scene's effects compute (every output in 10⁶ rev) as
+`duty.<key>` = 1 / Σ u_i / L_i — a set's or a shaft's system life its bearings' cycle lives combined
+as its lives are, (Σ L^(−10/9))^(−9/10) — with time shares its hours `duty.hours.<key>` at the mean
+speed (`duty.mean_speed`), each case's share of the damage of its first life (`duty.damage_share`),
+the revolutions' shares (`duty.revolution_share`) and the equivalent load of ISO 281's L10
+(`duty.equivalent_load`).
 """
 
 import dataclasses
+import re
 
 import jax.numpy as jnp
 import numpy as np
 
 from ..ratings import duty_cycle, life
 from .schema import convert, lookup
+from .units import to_si
 
 SHARES = ("time_share", "revolution_share")
 SPEEDS = ("operating.inner_speed", "operating.outer_speed")
+SHAFT_SPEED = "shaft.speed"
+# a shaft's load in a case: "loads[k].force" = [Fx, Fy, Fz], "loads[k].moment" = [Mx, My] of its k-th [[loads]] entry
+LOAD_KEY = re.compile(r"loads\[(\d+)\]\.(force|moment)")
+LOAD_FIELDS = {"force": (3, "force"), "moment": (2, "moment")}
 SHARE_TOLERANCE = 1e-6  # |Σ shares − 1| allowed (shares written to a few digits)
 LIFE_UNIT = "1e6 rev"
 # the life whose damage the cases share, the first the scene computes
-DAMAGE_LIVES = ("life.L10rm", "life.L10r", "life.L10m", "life.L10", "set.L10rm", "set.L10r")
+DAMAGE_LIVES = ("life.L10rm", "life.L10r", "life.L10m", "life.L10", "set.L10rm", "set.L10r", "shaft.L10rm", "shaft.L10r")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -72,6 +80,10 @@ def duty_cycle_of(entries, scene_values: dict) -> DutyCycle:
         for key, value in entry.items():
             if key == kind:
                 continue
+            load = LOAD_KEY.fullmatch(key)
+            if load is not None:
+                given.setdefault(key, {})[number] = _load_value(number, key, load, value, scene_values)
+                continue
             try:
                 schema_key = lookup(key)
             except ValueError as error:
@@ -87,10 +99,11 @@ def duty_cycle_of(entries, scene_values: dict) -> DutyCycle:
         raise ValueError(f"duty: the cases' {kind}s sum to {total:.6g}, not 1")
     cases = {}
     for key, by_case in given.items():
-        if len(by_case) < len(entries) and key not in scene_values:
+        base = scene_value(scene_values, key)
+        if len(by_case) < len(entries) and base is None:
             missing = next(number for number in range(len(entries)) if number not in by_case)
             raise ValueError(f"duty[{missing}]: {key} is given by other cases, not by this one nor by the scene")
-        cases[key] = np.asarray([by_case.get(number, scene_values.get(key)) for number in range(len(entries))], float)
+        cases[key] = np.asarray([by_case.get(number, base) for number in range(len(entries))], float)
     duty = DutyCycle(cases, np.asarray(shares), kind)
     if kind == "time_share":
         still = [number for number, speed in enumerate(relative_speeds(duty, scene_values)) if not speed > 0]
@@ -100,18 +113,63 @@ def duty_cycle_of(entries, scene_values: dict) -> DutyCycle:
     return duty
 
 
-def case_values(duty: DutyCycle, scene_values: dict, number: int) -> dict:
-    """The scene's SI values with case `number`'s keys set."""
-    values = dict(scene_values)
-    values.update({key: (array[number].tolist() if np.ndim(array[number]) else float(array[number]))
-                   for key, array in duty.cases.items()})
+def _load_value(number: int, key: str, load, value, scene_values: dict):
+    """A case's `loads[k].force` or `.moment` in SI; ValueError naming it."""
+    index, field = int(load.group(1)), load.group(2)
+    loads = scene_values.get("loads")
+    if not isinstance(loads, list) or index >= len(loads):
+        raise ValueError(f"duty[{number}].{key}: the scene has no [[loads]] entry {index}")
+    size, dimension = LOAD_FIELDS[field]
+    if not isinstance(value, list) or len(value) != size:
+        raise ValueError(f"duty[{number}].{key}: expected a list of {size} {dimension} values, got {value!r}")
+    return [to_si(item, dimension, f"duty[{number}].{key}[{i}]") for i, item in enumerate(value)]
+
+
+def case_dimension(key: str) -> str:
+    """The dimension of a case key's values (units.SI_UNITS), a [[loads]] field's included."""
+    load = LOAD_KEY.fullmatch(key)
+    return LOAD_FIELDS[load.group(2)][1] if load is not None else lookup(key).dimension
+
+
+def scene_value(scene_values: dict, key: str):
+    """The scene's SI value of a case key (a [[loads]] entry's field for `loads[k].field`), None where absent."""
+    load = LOAD_KEY.fullmatch(key)
+    if load is None:
+        return scene_values.get(key)
+    return scene_values["loads"][int(load.group(1))][load.group(2)]
+
+
+def place(values: dict, case: dict) -> dict:
+    """The scene's SI `values` with a case's {key: value} set (arrays or tracers); a `loads[k].field`
+    into a copy of the [[loads]] entry k."""
+    values = dict(values)
+    for key, value in case.items():
+        load = LOAD_KEY.fullmatch(key)
+        if load is None:
+            values[key] = value
+            continue
+        loads = list(values["loads"])
+        index = int(load.group(1))
+        loads[index] = {**loads[index], load.group(2): value}
+        values["loads"] = loads
     return values
 
 
+def case_values(duty: DutyCycle, scene_values: dict, number: int) -> dict:
+    """The scene's SI values with case `number`'s keys set."""
+    return place(scene_values, {key: (array[number].tolist() if np.ndim(array[number]) else float(array[number]))
+                                for key, array in duty.cases.items()})
+
+
 def relative_speeds(duty: DutyCycle, scene_values: dict) -> np.ndarray:
-    """|n_inner − n_outer| [rad/s] of each case."""
-    inner, outer = (duty.cases.get(key, np.full(duty.count, float(scene_values.get(key, 0.0)))) for key in SPEEDS)
-    return np.abs(np.asarray(inner) - np.asarray(outer))
+    """|n_inner − n_outer| [rad/s] of each case (a shaft's: |shaft.speed|, its outer rings standing)."""
+    def of(key):
+        return np.asarray(duty.cases.get(key, np.full(duty.count, float(scene_values.get(key, 0.0)))))
+
+    if SHAFT_SPEED in duty.cases or SHAFT_SPEED in scene_values:
+        return np.abs(of(SHAFT_SPEED))
+    inner, outer = (of(key) for key in SPEEDS)
+    return np.abs(inner - outer)
 
 
 def cycle_values(duty: DutyCycle, values: dict, outputs: dict, scene_values: dict) -> dict:
@@ -130,6 +188,8 @@ def cycle_values(duty: DutyCycle, values: dict, outputs: dict, scene_values: dic
         parts = [part for part in lives if part.startswith(f"{head}.bearings.") and part.endswith(f".{name}")]
         if parts:
             out[f"duty.{key}"] = np.asarray(life.system_life(jnp.stack([out[f"duty.{part}"] for part in parts])))
+        elif head == "shaft" and f"bearings.{name}" in lives:  # a shaft's bearings: one array
+            out[f"duty.{key}"] = np.asarray(life.system_life(out[f"duty.bearings.{name}"]))
     if duty.share_kind == "time_share":
         mean = float(duty_cycle.mean_speed(duty.shares, speeds))
         out["duty.mean_speed"] = np.asarray(mean)

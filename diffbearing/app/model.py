@@ -19,7 +19,7 @@ from .compilation_cache import use_compilation_cache
 from .registry import Reads
 from .result import RunResult
 from .scene import Scene
-from .duty_cycle import DutyCycle, case_values, cycle_values, duty_cycle_of
+from .duty_cycle import LOAD_KEY, DutyCycle, case_values, cycle_values, duty_cycle_of, place
 from .sweep import check_corners, run_points, run_sweep, sweep_axes
 
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
@@ -90,9 +90,6 @@ def _duty(scene: Scene, blocks) -> DutyCycle | None:
         return None
     if scene.sweep:
         raise ValueError("duty: a scene runs a [sweep] or a [[duty]] cycle, not both")
-    if scene.bearing_type == registry.SHAFT_TYPE:
-        raise ValueError("duty: duty cycles of a shaft are not available yet (its [[loads]] are not set per case); "
-                         "a bearing's or a set's cycle sets operating.force and the speeds per case")
     duty = duty_cycle_of(scene.duty, scene.values)
     for number in range(duty.count):
         try:
@@ -125,7 +122,8 @@ def build_model(scene: Scene) -> Model:
     for block in blocks:
         if block.validate is not None:
             block.validate(settings, inputs)  # bad grid or tolerance fails here, before compiling
-    unread, idle = _unread(scene, blocks, values.asked, axes | (duty.cases if duty else {}))
+    set_by_cases = {key: None for key in (duty.cases if duty else {}) if not LOAD_KEY.fullmatch(key)}  # loads[k]: "loads"
+    unread, idle = _unread(scene, blocks, values.asked, axes | set_by_cases)
     switched_off = unread if scene.switched else []  # the file's keys of an effect --set turned off: a warning
     unread = [] if scene.switched else unread
     if unread:
@@ -159,6 +157,6 @@ def run_model(model: Model, progress: bool = True) -> RunResult:
 def _run_duty(model: Model, progress: bool) -> RunResult:
     """The duty cycle's cases as one batch (`sweep.run_points`) and the cycle's values (`duty_cycle`)."""
     duty = model.duty
-    values, compile_s, run_s = run_points(model, (duty.count,), duty.cases, progress=progress)
+    values, compile_s, run_s = run_points(model, (duty.count,), duty.cases, progress=progress, place=place)
     values |= cycle_values(duty, values, model.outputs, model.scene.values)
     return RunResult(model, values, compile_s, run_s, duty=duty)

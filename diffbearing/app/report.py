@@ -8,7 +8,7 @@ import json
 
 import numpy as np
 
-from .duty_cycle import damage_life
+from .duty_cycle import case_dimension, damage_life
 from .formatting import format_number, format_value, swept_display, to_display, unit_label
 from .registry import adapters_for
 from .schema import lookup
@@ -27,8 +27,8 @@ def _header(result) -> list[str]:
     return [result.model.scene.title, f"scene: {result.model.scene.source}"]
 
 
-def _swept_cells(key, values) -> tuple[str, list[str]]:
-    shown, display = swept_display(values, lookup(key).dimension)
+def _swept_cells(key, values, dimension=None) -> tuple[str, list[str]]:
+    shown, display = swept_display(values, dimension or lookup(key).dimension)
     cells = [("[" + ", ".join(format_number(x) for x in np.ravel(v)) + "]") if np.ndim(v) else format_number(v)
              for v in shown]
     return f"{key} [{unit_label(display)}]", cells
@@ -100,7 +100,7 @@ def format_duty_report(result) -> str:
                (duty.share_kind, [format_number(share) for share in duty.shares])]
     if duty.share_kind != "revolution_share":
         columns.append(("revolution share", [format_number(share) for share in values["duty.revolution_share"]]))
-    columns += [_swept_cells(key, array) for key, array in duty.cases.items()]
+    columns += [_swept_cells(key, array, case_dimension(key)) for key, array in duty.cases.items()]
     case_values = {key: value for key, value in values.items() if not key.startswith("duty.")}
     for adapter in active_adapters(result.model):
         if adapter.sweep_columns is not None:
@@ -116,11 +116,14 @@ def format_duty_report(result) -> str:
         lines.append(f"  {'L_n at the reliability R = ' + reliability + ' %':<56}"
                      f"{'a₁ = ' + format_number(np.ravel(values['life.a1'])[0]):>14}")
     outputs = result.model.outputs
+    def cell(value):  # one life, or each bearing's of a shaft
+        return format_number(value) if np.ndim(value) == 0 else "[" + ", ".join(format_number(x) for x in value) + "]"
+
     for key, out in outputs.items():
-        if f"duty.{key}" in values and np.ndim(values[f"duty.{key}"]) == 0:
+        if f"duty.{key}" in values:
             hours = values.get(f"duty.hours.{key}")
-            extra = "" if hours is None else f"  ({format_number(hours)} h)"
-            lines.append(f"  {out.description:<56}{format_number(values[f'duty.{key}']):>14}  {unit_label(out.display)}{extra}")
+            extra = "" if hours is None else f"  ({cell(hours)} h)"
+            lines.append(f"  {out.description:<56} {cell(values[f'duty.{key}']):>13}  {unit_label(out.display)}{extra}")
     if "duty.equivalent_load" in values:
         lines.append(f"  {'equivalent load of the cycle, (Σ u_i P_i^p)^(1/p)':<56}"
                      f"{format_number(to_display(values['duty.equivalent_load'], 'N', 'kN')):>14}  kN")

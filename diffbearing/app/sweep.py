@@ -89,9 +89,11 @@ def run_sweep(model, axes: dict, *, chunk: int = CHUNK, progress: bool = True):
     return RunResult(model, values, compile_s, run_s, sweep_axes=axes)
 
 
-def run_points(model, shape: tuple[int, ...], points: dict, *, chunk: int = CHUNK, progress: bool = True):
+def run_points(model, shape: tuple[int, ...], points: dict, *, chunk: int = CHUNK, progress: bool = True,
+               place=None):
     """({key: array of `shape` + the output's}, compile time [s], run time [s]) of `model` at the
-    points {key: (N, ...) SI values}, N = prod(shape), as one vmapped batch in chunks (module docstring)."""
+    points {key: (N, ...) SI values}, N = prod(shape), as one vmapped batch in chunks (module docstring);
+    `place(values, point)` sets a point's values into the scene's (default: `dict.update`)."""
     count = int(np.prod(shape))
     # process p evaluates points [p·share, (p + 1)·share): gathered in process order the blocks are
     # the grid in order, followed by padding that is cut off
@@ -105,6 +107,8 @@ def run_points(model, shape: tuple[int, ...], points: dict, *, chunk: int = CHUN
     base = dict(model.scene.values)
 
     def point(swept):
+        if place is not None:
+            return evaluate(model.inputs_from_values(place(base, swept)))
         values = dict(base)
         values.update(swept)
         return evaluate(model.inputs_from_values(values))

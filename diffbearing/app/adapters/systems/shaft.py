@@ -156,8 +156,9 @@ def _layout(v, built) -> dict:
     sections, mesh = _sections(v, positions, loads)
     return {"shaft": ShaftLayout(
         tuple(bearings), positions, [entry["offset"] for entry in v["bearings"]],
-        ShaftLoads(np.array([load["position"] for load in loads]), np.array([load["force"] for load in loads]),
-                   np.array([load["moment"] for load in loads])),
+        ShaftLoads(np.array([load["position"] for load in loads]),  # forces and moments may be a duty cycle's tracers
+                   jnp.stack([jnp.asarray(load["force"], float) for load in loads]),
+                   jnp.stack([jnp.asarray(load["moment"], float) for load in loads])),
         v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
         tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), tuple(shoulders), sections, mesh,
         tuple(entry["bearing.type"] for entry in v["bearings"]))}
