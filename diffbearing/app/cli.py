@@ -1,7 +1,7 @@
 """The `diffbearing` command.
 
     diffbearing examples
-    diffbearing run [SCENE] [--set dotted.key=VALUE ...] [--json FILE] [--plot FILE]
+    diffbearing run [SCENE] [--set dotted.key=VALUE ...] [--json FILE] [--plot FILE] [--report FILE.html]
                     [--distributed [--coordinator HOST:PORT --processes N --process-id I]]
 
 SCENE is a scene file or the name of a packaged example (`diffbearing examples` lists them; the
@@ -37,6 +37,8 @@ def _parser() -> argparse.ArgumentParser:
                      help='override a scene value, e.g. --set operating.inner_speed="3000 rpm"')
     run.add_argument("--json", metavar="FILE", help="write results (SI units) as JSON")
     run.add_argument("--plot", metavar="FILE", help="save the scene's plot (PNG, PDF, SVG)")
+    run.add_argument("--report", metavar="FILE.html", help="write a self-contained HTML report to hand on (inputs, "
+                     "results, checks, the figure, versions and this command)")
     run.add_argument("--distributed", action="store_true", help="one process of a jax.distributed run")
     run.add_argument("--coordinator", metavar="HOST:PORT", help="address of process 0 (with --distributed)")
     run.add_argument("--processes", type=int, metavar="N", help="number of processes (with --coordinator)")
@@ -46,7 +48,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def _check_output_files(arguments) -> None:
     """ValueError for an output file whose folder does not exist (before the computation)."""
-    for option in ("json", "plot"):
+    for option in ("json", "plot", "report"):
         path = getattr(arguments, option)
         if path is not None and not Path(path).resolve().parent.is_dir():
             raise ValueError(f"--{option} {path}: folder {str(Path(path).resolve().parent)!r} does not exist")
@@ -105,6 +107,11 @@ def main(argv=None) -> int:
             print(f"diffbearing: error: {error}", file=sys.stderr)
             return 2
         print(f"plot written to {arguments.plot}")
+    if arguments.report:
+        from .html_report import write_html
+
+        write_html(result, arguments.report, " ".join(["diffbearing", *(sys.argv[1:] if argv is None else argv)]))
+        print(f"report written to {arguments.report}")
     errors, _ = result.problems
     if errors:
         more = f" (and {len(errors) - 1} more)" if len(errors) > 1 else ""

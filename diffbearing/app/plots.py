@@ -27,19 +27,24 @@ def duty_plot(result, figure) -> None:
     axes.legend()
 
 
-def save_plot(result, path: str) -> None:
-    """Draw the plot of the run's main block into `path` (PNG, PDF or SVG by extension)."""
+def has_plot(result) -> bool:
+    """Whether the run has a figure (`save_plot`)."""
+    field = "sweep_plot" if result.sweep_axes else "plot"
+    return result.duty is not None or any(getattr(block, field) is not None for block in result.model.blocks)
+
+
+def save_plot(result, path) -> None:
+    """Draw the plot of the run's main block into `path` (a file name, PNG, PDF or SVG by extension,
+    or a binary file object, PNG)."""
     if result.duty is not None:
         figure = plt.figure(figsize=(8, 4.5), layout="constrained")
         duty_plot(result, figure)
-        figure.savefig(path, dpi=120)
-        plt.close(figure)
-        return
-    field = "sweep_plot" if result.sweep_axes else "plot"
-    plotters = [getattr(block, field) for block in result.model.blocks if getattr(block, field) is not None]
-    if not plotters:
-        raise ValueError("--plot: this scene has nothing to plot yet")
-    figure = plt.figure(figsize=(13 if not result.sweep_axes else 11, 4.5), layout="constrained")
-    plotters[-1](result, figure)
-    figure.savefig(path, dpi=120)
+    else:
+        field = "sweep_plot" if result.sweep_axes else "plot"
+        plotters = [getattr(block, field) for block in result.model.blocks if getattr(block, field) is not None]
+        if not plotters:
+            raise ValueError("--plot: this scene has nothing to plot yet")
+        figure = plt.figure(figsize=(13 if not result.sweep_axes else 11, 4.5), layout="constrained")
+        plotters[-1](result, figure)
+    figure.savefig(path, dpi=120, **({} if isinstance(path, str) else {"format": "png"}))
     plt.close(figure)

@@ -1,0 +1,131 @@
+"""The report to hand on: one self-contained HTML file of a run (`diffbearing run ... --report
+FILE.html`): the scene's inputs with their units, the results (every scalar output with its unit,
+the text report as printed), the errors and warnings of the envelope checks, the figure as an
+embedded PNG, the diffbearing and JAX versions, the command and the time. No external files,
+scripts or fonts: it opens offline, reads on a phone (the tables scroll sideways) and prints."""
+
+import base64
+import datetime
+import html
+import io
+import platform
+
+import jax
+import numpy as np
+
+from .formatting import format_number, format_value, swept_display, to_display, unit_label
+from .report import format_report
+from .schema import lookup
+
+STYLE = """
+body { font-family: system-ui, sans-serif; margin: 0 auto; max-width: 70rem; padding: 0.8rem; color: #111; }
+h1 { font-size: 1.35rem; } h2 { font-size: 1.1rem; border-bottom: 1px solid #bbb; margin-top: 1.6rem; }
+.scroll { overflow-x: auto; }
+table { border-collapse: collapse; font-size: 0.9rem; }
+td, th { border: 1px solid #ccc; padding: 0.2rem 0.45rem; text-align: left; vertical-align: top; }
+td.number { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+pre { font-size: 0.78rem; background: #f6f6f6; padding: 0.6rem; overflow-x: auto; }
+.error { color: #a00; font-weight: bold; } .warning { color: #8a5a00; }
+img { max-width: 100%; height: auto; }
+@media print { .scroll, pre { overflow: visible; white-space: pre-wrap; } body { max-width: none; } }
+"""
+
+
+def _input_rows(values: dict) -> list[tuple[str, str, str]]:
+    """(key, value, unit) of each scene input, in its display unit; tables of entries ([[bearings]],
+    [[loads]]) as their entries' SI values."""
+    rows = []
+    for key, value in values.items():
+        try:
+            dimension = lookup(key).dimension
+        except ValueError:
+            dimension = "dimensionless"
+        if isinstance(value, (str, bool)) or value is None:
+            rows.append((key, str(value), ""))
+            continue
+        if isinstance(value, list) and value and isinstance(value[0], dict):
+            rows.append((key, "; ".join(str(entry) for entry in value), "SI"))
+            continue
+        shown, display = swept_display(np.asarray(value, float), dimension)
+        cell = format_number(shown) if np.ndim(shown) == 0 else "[" + ", ".join(format_number(x) for x in np.ravel(shown)) + "]"
+        rows.append((key, cell, unit_label(display) if display else ""))
+    return rows
+
+
+def _output_rows(result) -> list[tuple[str, str, str, str]]:
+    """(key, description, value, unit) of each output with a value, in its display unit; arrays as lists
+    (the first 12 elements)."""
+    rows = []
+    for key, out in result.model.outputs.items():
+        if key not in result.values:
+            continue
+        shown = np.asarray(to_display(result.values[key], out.unit, out.display))
+        if shown.dtype.kind not in "fiub":
+            continue
+        if shown.ndim == 0:
+            cell = format_value(shown)
+        else:
+            flat = np.ravel(shown)
+            cell = "[" + ", ".join(format_number(x) for x in flat[:12]) + (", …]" if flat.size > 12 else "]")
+        rows.append((key, out.description, cell, unit_label(out.display)))
+    for key in sorted(key for key in result.values if key.startswith("duty.")):  # the cycle's values
+        value = np.asarray(result.values[key])
+        if value.dtype.kind in "fi":
+            cell = format_number(value) if value.ndim == 0 else "[" + ", ".join(format_number(x) for x in np.ravel(value)) + "]"
+            rows.append((key, "duty cycle (Palmgren–Miner)", cell, "SI"))
+    return rows
+
+
+def _table(header: tuple[str, ...], rows, numeric_column: int | None = None) -> str:
+    head = "".join(f"<th>{html.escape(name)}</th>" for name in header)
+    number = ' class="number"'
+
+    def cell(index, value):
+        return f"<td{number if index == numeric_column else ''}>{html.escape(str(value))}</td>"
+
+    body = "".join("<tr>" + "".join(cell(index, value) for index, value in enumerate(row)) + "</tr>" for row in rows)
+    return f'<div class="scroll"><table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table></div>'
+
+
+def _figure(result) -> str:
+    """The run's figure as an embedded PNG, or "" where it has none."""
+    from .plots import has_plot, save_plot
+
+    if not has_plot(result):
+        return ""
+    buffer = io.BytesIO()
+    save_plot(result, buffer)
+    encoded = base64.b64encode(buffer.getvalue()).decode("ascii")
+    return f'<h2>Figure</h2><img alt="the run\'s figure" src="data:image/png;base64,{encoded}">'
+
+
+def html_document(result, command: str) -> str:
+    """The self-contained HTML report of a run (module docstring); `command` the command line that ran it."""
+    from .. import __version__
+
+    scene = result.model.scene
+    errors, warnings = result.problems
+    checks = "".join(f'<li class="error">{html.escape(line)}</li>' for line in errors)
+    checks += "".join(f'<li class="warning">{html.escape(line)}</li>' for line in warnings)
+    clean = "<p>No errors, no warnings: every input and solved state within the model's envelope.</p>"
+    checks = f"<ul>{checks}</ul>" if checks else clean
+    when = datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC")
+    return "\n".join([
+        "<!DOCTYPE html>", '<html lang="en">', "<head>", '<meta charset="utf-8">',
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
+        f"<title>{html.escape(scene.title)} — diffbearing</title>", f"<style>{STYLE}</style>", "</head>", "<body>",
+        f"<h1>{html.escape(scene.title)}</h1>",
+        f"<p>Scene: {html.escape(scene.source)}<br>Command: <code>{html.escape(command)}</code><br>"
+        f"diffbearing {html.escape(__version__)}, JAX {html.escape(jax.__version__)}, Python {platform.python_version()}, "
+        f"{when}<br>Compile {result.compile_s:.2f} s, run {result.run_s:.4f} s (after compilation).</p>",
+        "<h2>Errors and warnings (envelope checks)</h2>", checks,
+        "<h2>Inputs</h2>", _table(("key", "value", "unit"), _input_rows(scene.values), numeric_column=1),
+        "<h2>Results</h2>", _table(("key", "quantity", "value", "unit"), _output_rows(result), numeric_column=2),
+        _figure(result),
+        "<h2>Report as printed</h2>", f"<pre>{html.escape(format_report(result))}</pre>",
+        "</body>", "</html>"])
+
+
+def write_html(result, path: str, command: str) -> None:
+    with open(path, "w", encoding="utf-8") as file:
+        file.write(html_document(result, command))
