@@ -212,3 +212,17 @@ def cycle_values(duty: DutyCycle, values: dict, outputs: dict, scene_values: dic
 def damage_life(values: dict) -> str | None:
     """The life whose damage `duty.damage_share` splits: the first of `DAMAGE_LIVES` the scene computes."""
     return next((key for key in DAMAGE_LIVES if key in values), None)
+
+
+def describe(key: str, outputs: dict) -> tuple[str, str, str]:
+    """(description, SI unit, display unit) of one of the cycle's values `duty.*` (`cycle_values`)."""
+    name = key.removeprefix("duty.")
+    if name.startswith("hours."):
+        return f"{outputs[name.removeprefix('hours.')].description}, in hours at the mean speed", "h", "h"
+    if name in outputs:
+        out = outputs[name]
+        return f"{out.description}, over the cycle (Palmgren–Miner)", out.unit, out.display
+    return {"revolution_share": ("each case's share of the revolutions", "", ""),
+            "damage_share": ("each case's share of the damage", "", ""),
+            "mean_speed": ("mean speed Σ t_i n_i", "rad/s", "rpm"),
+            "equivalent_load": ("equivalent load of the cycle, (Σ u_i P_i^p)^(1/p)", "N", "kN")}[name]

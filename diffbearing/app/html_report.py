@@ -13,6 +13,7 @@ import platform
 import jax
 import numpy as np
 
+from .duty_cycle import describe
 from .formatting import format_number, format_value, swept_display, to_display, unit_label
 from .report import format_report
 from .schema import lookup
@@ -69,10 +70,10 @@ def _output_rows(result) -> list[tuple[str, str, str, str]]:
             cell = "[" + ", ".join(format_number(x) for x in flat[:12]) + (", …]" if flat.size > 12 else "]")
         rows.append((key, out.description, cell, unit_label(out.display)))
     for key in sorted(key for key in result.values if key.startswith("duty.")):  # the cycle's values
-        value = np.asarray(result.values[key])
-        if value.dtype.kind in "fi":
-            cell = format_number(value) if value.ndim == 0 else "[" + ", ".join(format_number(x) for x in np.ravel(value)) + "]"
-            rows.append((key, "duty cycle (Palmgren–Miner)", cell, "SI"))
+        description, unit, display = describe(key, result.model.outputs)
+        value = np.asarray(to_display(result.values[key], unit, display))
+        cell = format_number(value) if value.ndim == 0 else "[" + ", ".join(format_number(x) for x in np.ravel(value)) + "]"
+        rows.append((key, description, cell, unit_label(display)))
     return rows
 
 

@@ -106,12 +106,10 @@ def run_points(model, shape: tuple[int, ...], points: dict, *, chunk: int = CHUN
     evaluate = evaluate_blocks(blocks, model.settings)
     base = dict(model.scene.values)
 
+    place = place or (lambda values, swept: {**values, **swept})
+
     def point(swept):
-        if place is not None:
-            return evaluate(model.inputs_from_values(place(base, swept)))
-        values = dict(base)
-        values.update(swept)
-        return evaluate(model.inputs_from_values(values))
+        return evaluate(model.inputs_from_values(place(base, swept)))
 
     sequential = any(block.sequential_sweep for block in blocks)  # iterative solvers: one point after another
     batch = (lambda swept: jax.lax.map(point, swept)) if sequential else jax.vmap(point)
