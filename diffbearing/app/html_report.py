@@ -9,6 +9,7 @@ import datetime
 import html
 import io
 import platform
+from importlib.metadata import version
 
 import jax
 import numpy as np
@@ -102,8 +103,6 @@ def _figure(result) -> str:
 
 def html_document(result, command: str) -> str:
     """The self-contained HTML report of a run (module docstring); `command` the command line that ran it."""
-    from .. import __version__
-
     scene = result.model.scene
     errors, warnings = result.problems
     checks = "".join(f'<li class="error">{html.escape(line)}</li>' for line in errors)
@@ -117,8 +116,9 @@ def html_document(result, command: str) -> str:
         f"<title>{html.escape(scene.title)} — diffbearing</title>", f"<style>{STYLE}</style>", "</head>", "<body>",
         f"<h1>{html.escape(scene.title)}</h1>",
         f"<p>Scene: {html.escape(scene.source)}<br>Command: <code>{html.escape(command)}</code><br>"
-        f"diffbearing {html.escape(__version__)}, JAX {html.escape(jax.__version__)}, Python {platform.python_version()}, "
-        f"{when}<br>Compile {result.compile_s:.2f} s, run {result.run_s:.4f} s (after compilation).</p>",
+        f"diffbearing {html.escape(version('diffbearing'))}, JAX {html.escape(jax.__version__)}, "
+        f"Python {platform.python_version()}, {when}<br>"
+        f"Compile {result.compile_s:.2f} s, run {result.run_s:.4f} s (after compilation).</p>",
         "<h2>Errors and warnings (envelope checks)</h2>", checks,
         "<h2>Inputs</h2>", _table(("key", "value", "unit"), _input_rows(scene.values), numeric_column=1),
         "<h2>Results</h2>", _table(("key", "quantity", "value", "unit"), _output_rows(result), numeric_column=2),
