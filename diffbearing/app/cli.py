@@ -1,6 +1,7 @@
 """The `diffbearing` command.
 
     diffbearing examples
+    diffbearing bearings [PATTERN]
     diffbearing run [SCENE] [--set dotted.key=VALUE ...] [--json FILE] [--plot FILE] [--report FILE.html]
                     [--distributed [--coordinator HOST:PORT --processes N --process-id I]]
 
@@ -30,6 +31,8 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="diffbearing", description="Differentiable rolling-bearing model (JAX).")
     commands = parser.add_subparsers(dest="command", required=True)
     commands.add_parser("examples", help="list the packaged example scenes")
+    listing = commands.add_parser("bearings", help="list the designations whose boundary dimensions diffbearing knows")
+    listing.add_argument("pattern", nargs="?", default="*", help="shell pattern of designations, e.g. '62*' (default: all)")
     run = commands.add_parser("run", help="run a scene file or a packaged example and print a report")
     run.add_argument("scene", nargs="?",
                      help="scene TOML file or example name (default: aero_angular_contact; see `diffbearing examples`)")
@@ -66,10 +69,31 @@ def _examples() -> int:
     return 0
 
 
+def _bearings(pattern: str) -> int:
+    """Print the designations matching `pattern` with d × D × B [mm], r_s min and the source; exit 2 if none."""
+    from ..catalog.designations import designations, series
+
+    found = designations(pattern)
+    if not found:
+        print(f"diffbearing: error: no designation matches {pattern!r} (series {', '.join(sorted(series()))})",
+              file=sys.stderr)
+        return 2
+    print(f"{'designation':<12}{'type':<18}{'d [mm]':>8}{'D [mm]':>8}{'B [mm]':>8}{'r_s min [mm]':>14}  source")
+    for entry in found:
+        chamfer = "" if entry.chamfer is None else f"{entry.chamfer * 1e3:g}"
+        print(f"{entry.designation:<12}{entry.bearing_type:<18}{entry.bore * 1e3:>8g}{entry.outside_diameter * 1e3:>8g}"
+              f"{entry.width * 1e3:>8g}{chamfer:>14}  {entry.source}")
+    print(f"\n{len(found)} bearings; in a scene: bearing.designation = \"{found[0].designation}\" sets bore, outer_diameter "
+          "and width")
+    return 0
+
+
 def main(argv=None) -> int:
     arguments = _parser().parse_args(argv)
     if arguments.command == "examples":
         return _examples()
+    if arguments.command == "bearings":
+        return _bearings(arguments.pattern)
     try:
         _check_output_files(arguments)
     except ValueError as error:

@@ -33,24 +33,26 @@ img { max-width: 100%; height: auto; }
 """
 
 
-def _input_rows(values: dict) -> list[tuple[str, str, str]]:
-    """(key, value, unit) of each scene input, in its display unit; tables of entries ([[bearings]],
-    [[loads]]) as their entries' SI values."""
+def _input_rows(values: dict, derived: dict) -> list[tuple[str, str, str, str]]:
+    """(key, value, unit, from) of each scene input, in its display unit; tables of entries
+    ([[bearings]], [[loads]]) as their entries' SI values; "from" the source of a value the scene did
+    not write itself (`Scene.derived`), else "scene"."""
     rows = []
     for key, value in values.items():
+        source = derived.get(key, "scene")
         try:
             dimension = lookup(key).dimension
         except ValueError:
             dimension = "dimensionless"
         if isinstance(value, (str, bool)) or value is None:
-            rows.append((key, str(value), ""))
+            rows.append((key, str(value), "", source))
             continue
         if isinstance(value, list) and value and isinstance(value[0], dict):
-            rows.append((key, "; ".join(str(entry) for entry in value), "SI"))
+            rows.append((key, "; ".join(str(entry) for entry in value), "SI", source))
             continue
         shown, display = swept_display(np.asarray(value, float), dimension)
         cell = format_number(shown) if np.ndim(shown) == 0 else "[" + ", ".join(format_number(x) for x in np.ravel(shown)) + "]"
-        rows.append((key, cell, unit_label(display) if display else ""))
+        rows.append((key, cell, unit_label(display) if display else "", source))
     return rows
 
 
@@ -120,7 +122,8 @@ def html_document(result, command: str) -> str:
         f"Python {platform.python_version()}, {when}<br>"
         f"Compile {result.compile_s:.2f} s, run {result.run_s:.4f} s (after compilation).</p>",
         "<h2>Errors and warnings (envelope checks)</h2>", checks,
-        "<h2>Inputs</h2>", _table(("key", "value", "unit"), _input_rows(scene.values), numeric_column=1),
+        "<h2>Inputs</h2>", _table(("key", "value", "unit", "from"), _input_rows(scene.values, scene.derived),
+                                  numeric_column=1),
         "<h2>Results</h2>", _table(("key", "quantity", "value", "unit"), _output_rows(result), numeric_column=2),
         _figure(result),
         "<h2>Report as printed</h2>", f"<pre>{html.escape(format_report(result))}</pre>",

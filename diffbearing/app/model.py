@@ -23,8 +23,9 @@ from .duty_cycle import LOAD_KEY, DutyCycle, case_values, cycle_values, duty_cyc
 from .sweep import check_corners, run_points, run_sweep, sweep_axes
 
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
-# selects the adapters, and the effects and fidelity tables (checked by `resolve` and `read_by`)
-_SETTINGS = ("title", "bearing.type")
+# selects the adapters, the designation the scene layer reads (app/scene.py), and the effects and
+# fidelity tables (checked by `resolve` and `read_by`)
+_SETTINGS = ("title", "bearing.type", "bearing.designation")
 
 
 def build_inputs(bearing_type: str, blocks, values) -> dict:
@@ -73,7 +74,7 @@ def _unread(scene: Scene, blocks, asked: set, axes: dict) -> tuple[list[str], li
     of_type = {block.name for block in registry.selectable(scene.bearing_type, scene.values)}
     unread, idle = [], []
     for key in dict.fromkeys(list(scene.values) + list(axes)):
-        if key in _SETTINGS or key.startswith("effects."):
+        if key in _SETTINGS or key.startswith("effects.") or key in scene.derived:
             continue
         if key.startswith("fidelity."):
             readers = set(keys[key].read_by)

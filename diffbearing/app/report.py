@@ -21,10 +21,21 @@ def active_adapters(model) -> list:
 
 
 def _header(result) -> list[str]:
-    for adapter in active_adapters(result.model):
-        if adapter.header is not None:
-            return adapter.header(result)
-    return [result.model.scene.title, f"scene: {result.model.scene.source}"]
+    """The adapter's header (or the title and source), then the values the scene did not write itself."""
+    lines = next((adapter.header(result) for adapter in active_adapters(result.model) if adapter.header is not None),
+                 [result.model.scene.title, f"scene: {result.model.scene.source}"])
+    return lines + derived_lines(result.model.scene)
+
+
+def derived_lines(scene) -> list[str]:
+    """One line for each value the scene did not give itself (`Scene.derived`: a designation's), with its source."""
+    if not scene.derived:
+        return []
+    lines = ["", "Not written in the scene (any value given there overrides these):"]
+    for key, source in scene.derived.items():
+        shown, display = swept_display(np.asarray(scene.values[key], float), lookup(key).dimension)
+        lines.append(f"  {key} = {format_number(shown)} {unit_label(display)}  ({source})")
+    return lines
 
 
 def _swept_cells(key, values, dimension=None) -> tuple[str, list[str]]:
@@ -221,6 +232,7 @@ def json_document(result) -> dict:
         document.setdefault("duty", {})["cases"] = {key: np.asarray(values).tolist()
                                                      for key, values in result.duty.cases.items()}
         document["duty"][result.duty.share_kind] = result.duty.shares.tolist()
+    document["derived"] = dict(result.model.scene.derived)  # the keys the scene did not write, with their source
     document["not_computed"] = list(result.model.not_implemented)
     document["errors"], document["warnings"] = (list(found) for found in result.problems)
     return document

@@ -10,6 +10,7 @@ import importlib.resources
 import tomllib
 from pathlib import Path
 
+from ..catalog.designations import boundary_dimensions
 from .schema import lookup, validate
 
 DEFAULT_EXAMPLE = "aero_angular_contact"
@@ -26,6 +27,7 @@ class Scene:
     source: str
     switched: tuple[str, ...] = ()
     duty: list | None = None  # the raw [[duty]] array (app/duty_cycle.py)
+    derived: dict = dataclasses.field(default_factory=dict)  # {key: where its value came from} of keys the scene did not write
 
     @property
     def bearing_type(self) -> str:
@@ -134,12 +136,36 @@ def read_document(path: str | None) -> tuple[dict, str]:
         raise ValueError(f"{source}: not valid TOML ({error})") from None
 
 
+# the scene keys a designation sets, and the field of `BoundaryDimensions` each takes
+DESIGNATION_KEYS = {"bore": "bore", "outer_diameter": "outside_diameter", "width": "width"}
+
+
+def expand_designation(document: dict) -> dict[str, str]:
+    """Set `bearing.bore`, `outer_diameter` and `width` from `bearing.designation` where the scene
+    gives none (in place); {key: its source} of those set. ValueError naming `bearing.designation`
+    for a designation the data lacks or one of another bearing type."""
+    bearing = document.get("bearing")
+    if not isinstance(bearing, dict) or "designation" not in bearing:
+        return {}
+    dimensions = boundary_dimensions(bearing["designation"])
+    if "type" in bearing and bearing["type"] != dimensions.bearing_type:
+        raise ValueError(f"bearing.designation: {bearing['designation']!r} is a {dimensions.bearing_type} bearing's "
+                         f"({dimensions.source}), the scene's bearing.type is {bearing['type']!r}")
+    derived = {}
+    for key, field in DESIGNATION_KEYS.items():
+        if key not in bearing:
+            bearing[key] = getattr(dimensions, field)
+            derived[f"bearing.{key}"] = f"designation {dimensions.designation}: {dimensions.source}"
+    return derived
+
+
 def load_scene(path: str | None = None, overrides=()) -> Scene:
     """Read, override and validate a scene (a file path, a packaged example's name, or None for
     the default example); `overrides` holds 'dotted.key=VALUE' strings."""
     original, source = read_document(path)
     document = apply_overrides(original, [parse_override(text) for text in overrides])
+    derived = expand_designation(document)
     values = validate(document)
     sweep = document.get("sweep")
     return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source,
-                 switched=_switched_effects(original, document), duty=document.get("duty"))
+                 switched=_switched_effects(original, document), duty=document.get("duty"), derived=derived)

@@ -26,7 +26,7 @@ torque), touching its physics module, its adapter and nothing else (plus tests a
 
 # each import registers its adapter, in this order (an adapter that imports another registers
 # after it: the order here is also the order those imports give)
-from . import materials, lubricant  # noqa: F401
+from . import materials, lubricant, designation  # noqa: F401
 from .systems import mounting  # noqa: F401
 from .bearings import ball  # noqa: F401
 from .systems import bearing_set  # noqa: F401

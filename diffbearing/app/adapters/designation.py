@@ -1,0 +1,16 @@
+"""Designations (`bearing.designation`): a catalogue designation gives the bearing's boundary
+dimensions d, D and B from ISO 15's dimension series (`diffbearing.catalog.designations`). The scene
+layer sets them where the scene gives none (`app/scene.py`, `Scene.derived`), the report and the JSON
+name where each came from; a value the scene gives overrides the designation's."""
+
+from ...bearings.roller.roller_geometry import ROLLER_KINDS
+from ...params import BALL_BEARING_KINDS
+from ..registry import Adapter, Key, register
+
+ADAPTER = register(Adapter(
+    name="designation",
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    keys={"bearing.designation": Key("text", doc="catalogue designation (6205, 22220 E, 61905): bore, outer_diameter "
+                                                 "and width from ISO 15's dimension series where the scene gives none "
+                                                 "(`diffbearing bearings` lists them)")},
+))

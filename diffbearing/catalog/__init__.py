@@ -1,0 +1,2 @@
+"""Bearings by designation: boundary dimensions of the standards' dimension series
+(`designations`), shipped as data read from the standards (`boundary_dimensions.csv`)."""

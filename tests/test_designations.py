@@ -1,0 +1,126 @@
+"""Designations: the shipped ISO 15 boundary dimensions (GOST 8338-75 for deep groove ball bearings,
+GOST 24696-81 for spherical roller bearings) against the catalogue dimensions of 26 bearings across
+14 series, the dimension series' own identities (D set by the diameter series alone), the parsing of
+designations, their use in a scene (the values the scene did not write, named in the report and
+the JSON), and `diffbearing bearings`."""
+
+import json
+
+import numpy as np
+import pytest
+
+from diffbearing import build_model, load_scene, run_model
+from diffbearing.app import cli
+from diffbearing.catalog import designations
+
+from .helpers import example_scene
+
+# d × D × B [mm] as the manufacturers' catalogues print them (SKF, FAG: the same ISO 15 values)
+CATALOGUE = {
+    "6200": (10, 30, 9), "6203": (17, 40, 12), "6205": (25, 52, 15), "6208": (40, 80, 18), "6211": (55, 100, 21),
+    "6220": (100, 180, 34), "6305": (25, 62, 17), "6308": (40, 90, 23), "6312": (60, 130, 31), "6316": (80, 170, 39),
+    "6406": (30, 90, 23), "6411": (55, 140, 33), "6005": (25, 47, 12), "6010": (50, 80, 16), "6020": (100, 150, 24),
+    "16005": (25, 47, 8), "61905": (25, 42, 9), "61805": (25, 37, 7), "22208": (40, 80, 23), "22220": (100, 180, 46),
+    "22312": (60, 130, 46), "22320": (100, 215, 73), "23024": (120, 180, 46), "23120": (100, 165, 52),
+    "24024": (120, 180, 60), "24122": (110, 180, 69),
+}
+
+
+@pytest.mark.parametrize("designation", CATALOGUE)
+def test_boundary_dimensions_are_the_catalogues(designation):
+    """Each bearing's d, D, B from the shipped tables equal the catalogue's (exact, in mm), with the
+    standard's table named."""
+    found = designations.boundary_dimensions(designation)
+    assert (round(found.bore * 1e3, 6), round(found.outside_diameter * 1e3, 6), round(found.width * 1e3, 6)) == \
+        CATALOGUE[designation]
+    assert found.source.startswith(("GOST 8338-75 Table", "GOST 24696-81 Table"))
+
+
+@pytest.mark.parametrize("same_diameter_series", [("62", "222", "232"), ("63", "223"), ("60", "230", "240"), ("231", "241")])
+def test_the_outside_diameter_is_the_diameter_series_alone(same_diameter_series):
+    """ISO 15: D depends on the bore and the diameter series only, so series of one diameter series
+    (62, 222, 232: 2; 63, 223: 3; 60, 230, 240: 0; 231, 241: 1) agree on every bore they share."""
+    by_series = [{entry.bore: entry.outside_diameter for entry in designations.designations(f"{name}*")
+                  if entry.series == name} for name in same_diameter_series]
+    shared = set(by_series[0]).intersection(*by_series[1:])
+    assert len(shared) >= 10
+    for bore in shared:
+        assert len({table[bore] for table in by_series}) == 1, bore
+
+
+@pytest.mark.parametrize("name", designations.series())
+def test_each_series_grows_with_its_bore(name):
+    """Within a series D and B never fall as d grows; B < (D − d)/2 · 3 and D > d (a ring's section)."""
+    entries = sorted((entry for entry in designations.designations("*") if entry.series == name), key=lambda e: e.bore)
+    bores, outsides, widths = (np.array([getattr(entry, field) for entry in entries])
+                               for field in ("bore", "outside_diameter", "width"))
+    assert np.all(np.diff(bores) > 0) and np.all(np.diff(outsides) >= 0) and np.all(np.diff(widths) >= 0)
+    assert np.all(outsides > bores) and np.all(widths < 3 * (outsides - bores) / 2)
+
+
+@pytest.mark.parametrize("written, designation, suffix, bore", [
+    ("22220 E", "22220", "E", 0.1), ("24130 CC/W33", "24130", "CC/W33", 0.15), ("230/500", "230/500", "", 0.5),
+    ("623", "623", "", 0.003), ("6205-2RS", None, None, None)])
+def test_designations_are_read_as_catalogues_write_them(written, designation, suffix, bore):
+    if designation is None:  # a suffix must follow the digits without a hyphen: refused, naming the key
+        with pytest.raises(ValueError, match="bearing.designation"):
+            designations.boundary_dimensions(written)
+        return
+    found = designations.boundary_dimensions(written)
+    assert (found.designation, found.suffix, found.bore) == (designation, suffix, bore)
+
+
+@pytest.mark.parametrize("written", ["NU 310", "62", "7205 B", "51110", "abc"])
+def test_a_designation_outside_the_data_is_refused_naming_the_key(written):
+    with pytest.raises(ValueError, match="bearing.designation"):
+        designations.boundary_dimensions(written)
+
+
+def _scene(tmp_path, bearing_lines: str):
+    text = open(example_scene("gearbox_6411_ratings")).read().replace('bore = "55 mm"\nouter_diameter = "140 mm"\n',
+                                                                      bearing_lines)
+    path = tmp_path / "scene.toml"
+    path.write_text(text)
+    return str(path)
+
+
+def test_a_scenes_designation_gives_its_boundary_dimensions_and_says_so(capsys, tmp_path):
+    """gearbox_6411_ratings with `designation = "6411"` for its bore and outer diameter: the same results
+    as the example (1e-12), bore 55, D 140, B 33 mm from GOST 8338-75 Table 7, each named in the report
+    and in the JSON's "derived"; a bore the scene gives overrides the designation's."""
+    path = _scene(tmp_path, 'designation = "6411"\n')
+    scene = load_scene(path)
+    assert (scene.values["bearing.bore"], scene.values["bearing.outer_diameter"], scene.values["bearing.width"]) == \
+        (0.055, 0.14, 0.033)
+    assert set(scene.derived) == {"bearing.bore", "bearing.outer_diameter", "bearing.width"}
+    example = run_model(build_model(load_scene(example_scene("gearbox_6411_ratings"))), progress=False).values
+    values = run_model(build_model(scene), progress=False).values
+    for key in ("life.L10rm", "friction.torque", "safety.iso76"):
+        assert float(values[key]) == pytest.approx(float(example[key]), rel=1e-12)
+    document = tmp_path / "out.json"
+    assert cli.main(["run", path, "--json", str(document)]) == 0
+    out = capsys.readouterr().out
+    assert "bearing.bore = 55 mm  (designation 6411: GOST 8338-75 Table 7)" in out
+    assert json.loads(document.read_text())["derived"]["bearing.width"] == "designation 6411: GOST 8338-75 Table 7"
+    given = load_scene(_scene(tmp_path, 'designation = "6411"\nbore = "54 mm"\n'))
+    assert given.values["bearing.bore"] == pytest.approx(0.054) and "bearing.bore" not in given.derived
+
+
+@pytest.mark.parametrize("lines, named", [
+    ('designation = "22220"\n', "bearing.designation: '22220' is a spherical_roller bearing's"),
+    ('designation = "NU 310"\n', "bearing.designation: 'NU 310' is not a designation"),
+])
+def test_a_bad_designation_in_a_scene_exits_2(capsys, tmp_path, lines, named):
+    code = cli.main(["run", _scene(tmp_path, lines)])
+    err = capsys.readouterr().err
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_the_bearings_command_lists_the_data(capsys):
+    """`diffbearing bearings '62*'`: every 62-series bearing with d, D, B and its source; a pattern no
+    designation matches exits 2."""
+    assert cli.main(["bearings", "62*"]) == 0
+    out = capsys.readouterr().out
+    row = next(line for line in out.splitlines() if line.startswith("6205 "))
+    assert row.split()[1:5] == ["deep_groove_ball", "25", "52", "15"] and "GOST 8338-75 Table 5" in row
+    assert cli.main(["bearings", "NU2*"]) == 2 and "no designation matches" in capsys.readouterr().err
