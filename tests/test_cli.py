@@ -249,7 +249,7 @@ def test_examples_lists_every_packaged_scene(capsys):
                                          "slewing_ring", "self_aligning_shaft", "thrust_ball_shaft",
                                          "needle_roller_shaft", "thrust_roller_shaft",
                                          "spherical_roller_shaft", "gearbox_duty_cycle",
-                                         "gearbox_shaft_duty_cycle"}
+                                         "gearbox_shaft_duty_cycle", "designation_6205"}
     for name, description in listed.items():
         assert description and f"{name}" in out and description in out
     assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)

@@ -124,3 +124,74 @@ def test_the_bearings_command_lists_the_data(capsys):
     row = next(line for line in out.splitlines() if line.startswith("6205 "))
     assert row.split()[1:5] == ["deep_groove_ball", "25", "52", "15"] and "GOST 8338-75 Table 5" in row
     assert cli.main(["bearings", "NU2*"]) == 2 and "no designation matches" in capsys.readouterr().err
+
+
+# published internal geometry (balls × diameter [mm]) and the NSK catalogue's C_r, C₀r [kN] (NSK
+# "Rolling Bearings" CAT. E1102, which are ISO 281's and ISO 76's of these balls), SKF's (above ISO 281's)
+BALL_SETS = {"6205": (9, 7.938, (14.0, 7.85), (14.8, 7.8)), "6203": (8, 6.747, (9.55, 4.80), (9.95, 4.75)),
+             "6208": (9, 11.906, (29.1, 17.8), None), "6308": (8, 15.081, (40.5, 24.0), None)}
+
+
+@pytest.mark.parametrize("designation", BALL_SETS)
+def test_the_estimated_ball_set_is_the_published_one(designation):
+    """From d and D alone (typical proportions) and from the catalogue's C_r, C₀r (NSK's, and SKF's
+    higher ones where given): the published ball count and diameter (to 1 µm)."""
+    from diffbearing.catalog.internal_geometry import estimate_ball_set
+
+    balls, diameter, nsk, skf = BALL_SETS[designation]
+    dimensions = designations.boundary_dimensions(designation)
+    for ratings in (nsk, skf) if skf else (nsk,):
+        found = estimate_ball_set(dimensions.bore, dimensions.outside_diameter, ratings[0] * 1e3, ratings[1] * 1e3)
+        assert (found.balls, round(found.ball_diameter * 1e3, 3)) == (balls, diameter)
+    typical = estimate_ball_set(dimensions.bore, dimensions.outside_diameter)
+    assert (typical.balls, round(typical.ball_diameter * 1e3, 3)) == (balls, diameter)
+    assert typical.pitch_diameter == pytest.approx((dimensions.bore + dimensions.outside_diameter) / 2, rel=1e-15)
+
+
+def test_every_ball_designation_has_a_ball_set_that_fits_its_rings():
+    """Over every deep groove ball designation of the data: at least 3 balls, each under half the
+    section (D − d)/2, Conrad-assembled (Z ≤ φ/(2 asin(D_w/d_m)) + 1), CN clearance where d ≤ 100 mm."""
+    from diffbearing.catalog.internal_geometry import FILLING_ANGLE, estimate_ball_set
+
+    for entry in designations.designations("*"):
+        if entry.bearing_type != "deep_groove_ball":
+            continue
+        found = estimate_ball_set(entry.bore, entry.outside_diameter)
+        assert found.balls >= 3 and found.ball_diameter < (entry.outside_diameter - entry.bore) / 2, entry
+        assert found.balls <= FILLING_ANGLE / (2 * np.arcsin(found.ball_diameter / found.pitch_diameter)) + 1
+        assert (found.radial_clearance is None) == (entry.bore > 0.1 or entry.bore <= 2.5e-3), entry
+
+
+def test_a_scene_of_a_designation_alone_runs_with_its_estimates_marked(capsys, tmp_path):
+    """A [bearing] table holding only type and designation = "6205": the run converges with the
+    published 9 × 7.938 mm balls, d_m 38.5 mm, f 0.52/0.53 and ISO 5753-1's CN middle, 12.5 µm (5–20 µm),
+    each named ESTIMATED in the report and the JSON."""
+    path = tmp_path / "only.toml"
+    path.write_text('[bearing]\ntype = "deep_groove_ball"\ndesignation = "6205"\n[operating]\ninner_speed = "3000 rpm"\n'
+                    'force = ["3 kN", "0 N", "0.5 kN"]\n[effects]\nlife = true\n')
+    document = tmp_path / "out.json"
+    assert cli.main(["run", str(path), "--json", str(document)]) == 0
+    out = capsys.readouterr().out
+    derived = json.loads(document.read_text())["derived"]
+    for key in ("balls", "ball_diameter", "pitch_diameter", "inner_groove_ratio", "outer_groove_ratio", "radial_clearance"):
+        assert derived[f"bearing.{key}"].startswith("ESTIMATED") and f"bearing.{key} = " in out
+    scene = load_scene(str(path))
+    assert (scene.values["bearing.balls"], scene.values["bearing.radial_clearance"]) == (9, pytest.approx(12.5e-6))
+
+
+@pytest.mark.parametrize("lines, named", [
+    ('bore = "25 mm"\nouter_diameter = "52 mm"\nstatic_load_rating = "7.85 kN"\n', "bearing.static_load_rating is read with"),
+])
+def test_a_catalogue_c0_without_a_designation_exits_2(capsys, tmp_path, lines, named):
+    code = cli.main(["run", _scene(tmp_path, lines)])
+    err = capsys.readouterr().err
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+
+
+def test_a_bore_past_the_clearance_table_asks_for_the_clearance(capsys, tmp_path):
+    path = tmp_path / "big.toml"
+    path.write_text('[bearing]\ntype = "deep_groove_ball"\ndesignation = "6222"\n[operating]\ninner_speed = "1000 rpm"\n'
+                    'force = ["10 kN", "0 N", "0 N"]\n')
+    code = cli.main(["run", str(path)])
+    err = capsys.readouterr().err
+    assert code == 2 and "bearing.radial_clearance: needed" in err, err

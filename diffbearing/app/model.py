@@ -25,7 +25,7 @@ from .sweep import check_corners, run_points, run_sweep, sweep_axes
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
 # selects the adapters, the designation the scene layer reads (app/scene.py), and the effects and
 # fidelity tables (checked by `resolve` and `read_by`)
-_SETTINGS = ("title", "bearing.type", "bearing.designation")
+_SETTINGS = ("title", "bearing.type", "bearing.designation", "bearing.static_load_rating")
 
 
 def build_inputs(bearing_type: str, blocks, values) -> dict:

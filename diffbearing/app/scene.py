@@ -11,6 +11,8 @@ import tomllib
 from pathlib import Path
 
 from ..catalog.designations import boundary_dimensions
+from ..catalog.internal_geometry import ball_set_estimates
+from .units import to_si
 from .schema import lookup, validate
 
 DEFAULT_EXAMPLE = "aero_angular_contact"
@@ -138,6 +140,8 @@ def read_document(path: str | None) -> tuple[dict, str]:
 
 # the scene keys a designation sets, and the field of `BoundaryDimensions` each takes
 DESIGNATION_KEYS = {"bore": "bore", "outer_diameter": "outside_diameter", "width": "width"}
+# bearing type → its internal geometry estimated from the boundary dimensions (catalog/internal_geometry.py)
+GEOMETRY_ESTIMATES = {"deep_groove_ball": ball_set_estimates}
 
 
 def expand_designation(document: dict) -> dict[str, str]:
@@ -146,6 +150,9 @@ def expand_designation(document: dict) -> dict[str, str]:
     for a designation the data lacks or one of another bearing type."""
     bearing = document.get("bearing")
     if not isinstance(bearing, dict) or "designation" not in bearing:
+        if isinstance(bearing, dict) and "static_load_rating" in bearing:
+            raise ValueError("bearing.static_load_rating is read with bearing.designation only (the catalogue's C0, "
+                             "which with its C fits the estimated ball set)")
         return {}
     dimensions = boundary_dimensions(bearing["designation"])
     if "type" in bearing and bearing["type"] != dimensions.bearing_type:
@@ -156,6 +163,16 @@ def expand_designation(document: dict) -> dict[str, str]:
         if key not in bearing:
             bearing[key] = getattr(dimensions, field)
             derived[f"bearing.{key}"] = f"designation {dimensions.designation}: {dimensions.source}"
+    estimate = GEOMETRY_ESTIMATES.get(dimensions.bearing_type)
+    if estimate is not None:
+        ratings = {key: to_si(bearing[key], "force", f"bearing.{key}") for key in ("dynamic_load_rating", "static_load_rating")
+                   if key in bearing}
+        values = estimate(ratings | {key: True for key in bearing if key not in ratings},
+                          to_si(bearing["bore"], "length", "bearing.bore"),
+                          to_si(bearing["outer_diameter"], "length", "bearing.outer_diameter"))
+        for key, (value, how) in values.items():
+            bearing[key] = value
+            derived[f"bearing.{key}"] = f"ESTIMATED: {how}"
     return derived
 
 

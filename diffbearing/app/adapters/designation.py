@@ -5,12 +5,15 @@ name where each came from; a value the scene gives overrides the designation's."
 
 from ...bearings.roller.roller_geometry import ROLLER_KINDS
 from ...params import BALL_BEARING_KINDS
-from ..registry import Adapter, Key, register
+from ..registry import Adapter, Key, quantity, register
 
 ADAPTER = register(Adapter(
     name="designation",
     bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
     keys={"bearing.designation": Key("text", doc="catalogue designation (6205, 22220 E, 61905): bore, outer_diameter "
                                                  "and width from ISO 15's dimension series where the scene gives none "
-                                                 "(`diffbearing bearings` lists them)")},
+                                                 "(`diffbearing bearings` lists them); a deep groove ball bearing's "
+                                                 "ball set, groove ratios and clearance estimated where it gives none"),
+          "bearing.static_load_rating": quantity("force", "the catalogue's C0 (with bearing.designation and "
+                                                          "bearing.dynamic_load_rating: the ball set that reproduces both)")},
 ))
