@@ -60,7 +60,7 @@ def test_each_series_grows_with_its_bore(name):
 
 @pytest.mark.parametrize("written, designation, suffix, bore", [
     ("22220 E", "22220", "E", 0.1), ("24130 CC/W33", "24130", "CC/W33", 0.15), ("230/500", "230/500", "", 0.5),
-    ("623", "623", "", 0.003), ("6205-2RS", None, None, None)])
+    ("623", "623", "", 0.003), ("6205-2RS", None, None, None), ("6205 2RS", None, None, None)])
 def test_designations_are_read_as_catalogues_write_them(written, designation, suffix, bore):
     if designation is None:  # a suffix must follow the digits without a hyphen: refused, naming the key
         with pytest.raises(ValueError, match="bearing.designation"):

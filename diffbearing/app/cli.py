@@ -71,7 +71,7 @@ def _examples() -> int:
 
 def _bearings(pattern: str) -> int:
     """Print the designations matching `pattern` with d × D × B [mm], r_s min and the source; exit 2 if none."""
-    from ..catalog.designations import designations, series
+    from ..catalog.designations import SOURCES, designations, series
 
     found = designations(pattern)
     if not found:
@@ -85,6 +85,7 @@ def _bearings(pattern: str) -> int:
               f"{entry.width * 1e3:>8g}{chamfer:>14}  {entry.source}")
     print(f"\n{len(found)} bearings; in a scene: bearing.designation = \"{found[0].designation}\" sets bore, outer_diameter "
           "and width")
+    print("Sources: " + "; ".join(SOURCES[name] for name in sorted({entry.source.split(" Table")[0] for entry in found})))
     return 0
 
 

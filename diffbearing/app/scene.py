@@ -164,9 +164,13 @@ def expand_designation(document: dict) -> dict[str, str]:
             bearing[key] = getattr(dimensions, field)
             derived[f"bearing.{key}"] = f"designation {dimensions.designation}: {dimensions.source}"
     estimate = GEOMETRY_ESTIMATES.get(dimensions.bearing_type)
+    if estimate is None and "static_load_rating" in bearing:
+        raise ValueError(f"bearing.static_load_rating: no internal geometry of a {dimensions.bearing_type} bearing is "
+                         "estimated from its ratings")
     if estimate is not None:
         ratings = {key: to_si(bearing[key], "force", f"bearing.{key}") for key in ("dynamic_load_rating", "static_load_rating")
                    if key in bearing}
+        # the estimator reads the ratings in SI and only the presence of the scene's other [bearing] keys
         values = estimate(ratings | {key: True for key in bearing if key not in ratings},
                           to_si(bearing["bore"], "length", "bearing.bore"),
                           to_si(bearing["outer_diameter"], "length", "bearing.outer_diameter"))

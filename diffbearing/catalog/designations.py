@@ -6,9 +6,10 @@ row with its source table and, where one agrees, a second source).
 
 A designation is the series followed by the bore code, as the catalogues write it: 00 → 10, 01 → 12,
 02 → 15, 03 → 17 mm, 04 … 96 → five times the code in mm, "/d" for d in mm (62/22, 230/500), and a
-single digit below 10 mm (623 → 3 mm); a suffix after a space or after the digits (E, C3, 2RS) is
-kept apart, not read. The 7x, QJ and NU series, tapered (ISO 355) and thrust (ISO 104) bearings are
-not in the data yet.
+single digit below 10 mm (623 → 3 mm); a suffix that begins with a letter, after a space or not
+(22220 E, 22220E, 24130 CC/W33), is kept apart and not read; one that begins with a hyphen or a
+digit (6205-2RS, 6205 2RS) is refused: give the designation without it. The 7x, QJ and NU series,
+tapered (ISO 355) and thrust (ISO 104) bearings are not in the data yet.
 """
 
 import csv
