@@ -1,6 +1,7 @@
 """Designations: the shipped ISO 15 boundary dimensions (GOST 8338-75 for deep groove ball bearings,
-GOST 24696-81 for spherical roller bearings) against the catalogue dimensions of 26 bearings across
-14 series, the dimension series' own identities (D set by the diameter series alone), the parsing of
+GOST 24696-81 for spherical roller bearings, and through their dimension series the angular contact,
+self-aligning, four-point and cylindrical roller series) against the catalogue dimensions of 37
+bearings across 22 series, the dimension series' own identities (D set by the diameter series alone), the parsing of
 designations, their use in a scene (the values the scene did not write, named in the report and
 the JSON), and `diffbearing bearings`."""
 
@@ -23,7 +24,12 @@ CATALOGUE = {
     "16005": (25, 47, 8), "61905": (25, 42, 9), "61805": (25, 37, 7), "22208": (40, 80, 23), "22220": (100, 180, 46),
     "22312": (60, 130, 46), "22320": (100, 215, 73), "23024": (120, 180, 46), "23120": (100, 165, 52),
     "24024": (120, 180, 60), "24122": (110, 180, 69),
+    # other types in the same dimension series (ISO 15): angular contact, self-aligning, four-point, cylindrical roller
+    "7205 B": (25, 52, 15), "7308 BECBP": (40, 90, 23), "7220": (100, 180, 34), "1205": (25, 52, 15), "1306": (30, 72, 19),
+    "QJ 208 MA": (40, 80, 18), "NU 310": (50, 110, 27), "NU 205 ECP": (25, 52, 15), "NU1010": (50, 80, 16),
+    "N 312": (60, 130, 31), "NU 412": (60, 150, 35),
 }
+TYPES = {"7": "angular_contact_ball", "1": "self_aligning_ball", "Q": "four_point_contact_ball", "N": "cylindrical_roller"}
 
 
 @pytest.mark.parametrize("designation", CATALOGUE)
@@ -33,7 +39,9 @@ def test_boundary_dimensions_are_the_catalogues(designation):
     found = designations.boundary_dimensions(designation)
     assert (round(found.bore * 1e3, 6), round(found.outside_diameter * 1e3, 6), round(found.width * 1e3, 6)) == \
         CATALOGUE[designation]
-    assert found.source.startswith(("GOST 8338-75 Table", "GOST 24696-81 Table"))
+    assert "GOST 8338-75 Table" in found.source or "GOST 24696-81 Table" in found.source
+    if designation[0] in TYPES and not designation.startswith("16"):
+        assert found.bearing_type == TYPES[designation[0]] and found.source.startswith("ISO 15 dimension series")
 
 
 @pytest.mark.parametrize("same_diameter_series", [("62", "222", "232"), ("63", "223"), ("60", "230", "240"), ("231", "241")])
@@ -70,7 +78,7 @@ def test_designations_are_read_as_catalogues_write_them(written, designation, su
     assert (found.designation, found.suffix, found.bore) == (designation, suffix, bore)
 
 
-@pytest.mark.parametrize("written", ["NU 310", "62", "7205 B", "51110", "abc"])
+@pytest.mark.parametrize("written", ["NU 2205", "62", "7205-B", "51110", "abc", "NA 4905"])
 def test_a_designation_outside_the_data_is_refused_naming_the_key(written):
     with pytest.raises(ValueError, match="bearing.designation"):
         designations.boundary_dimensions(written)
@@ -108,7 +116,9 @@ def test_a_scenes_designation_gives_its_boundary_dimensions_and_says_so(capsys, 
 
 @pytest.mark.parametrize("lines, named", [
     ('designation = "22220"\n', "bearing.designation: '22220' is a spherical_roller bearing's"),
-    ('designation = "NU 310"\n', "bearing.designation: 'NU 310' is not a designation"),
+    ('designation = "NU 310"\n', "bearing.designation: 'NU 310' is a cylindrical_roller bearing's"),
+    ('designation = "NA 4905"\n', "bearing.designation: 'NA 4905' is not a designation"),
+    ('designation = "6222"\n', "bearing.bore must be"),  # its 110 mm bore does not fit the scene's own balls
 ])
 def test_a_bad_designation_in_a_scene_exits_2(capsys, tmp_path, lines, named):
     code = cli.main(["run", _scene(tmp_path, lines)])
@@ -123,7 +133,7 @@ def test_the_bearings_command_lists_the_data(capsys):
     out = capsys.readouterr().out
     row = next(line for line in out.splitlines() if line.startswith("6205 "))
     assert row.split()[1:5] == ["deep_groove_ball", "25", "52", "15"] and "GOST 8338-75 Table 5" in row
-    assert cli.main(["bearings", "NU2*"]) == 2 and "no designation matches" in capsys.readouterr().err
+    assert cli.main(["bearings", "NA49*"]) == 2 and "no designation matches" in capsys.readouterr().err
 
 
 # published internal geometry (balls × diameter [mm]) and the NSK catalogue's C_r, C₀r [kN] (NSK

@@ -85,7 +85,7 @@ def _bearings(pattern: str) -> int:
               f"{entry.width * 1e3:>8g}{chamfer:>14}  {entry.source}")
     print(f"\n{len(found)} bearings; in a scene: bearing.designation = \"{found[0].designation}\" sets bore, outer_diameter "
           "and width")
-    print("Sources: " + "; ".join(SOURCES[name] for name in sorted({entry.source.split(" Table")[0] for entry in found})))
+    print("Sources: " + "; ".join(text for name, text in SOURCES.items() if any(name in entry.source for entry in found)))
     return 0
 
 

@@ -4,12 +4,17 @@ diameter D and width B (and the smallest chamfer r_s min where the standard give
 dimension series, as GOST 8338-75 and GOST 24696-81 tabulate them (`boundary_dimensions.csv`: each
 row with its source table and, where one agrees, a second source).
 
+Series of other bearing types in a tabulated dimension series take its d, D, B, as ISO 15 defines
+them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 72, 73; self-aligning 12,
+13; four-point QJ2, QJ3; cylindrical roller NU, N, NJ, NUP 2, 3, 4 and 10.
+
 A designation is the series followed by the bore code, as the catalogues write it: 00 → 10, 01 → 12,
 02 → 15, 03 → 17 mm, 04 … 96 → five times the code in mm, "/d" for d in mm (62/22, 230/500), and a
 single digit below 10 mm (623 → 3 mm); a suffix that begins with a letter, after a space or not
 (22220 E, 22220E, 24130 CC/W33), is kept apart and not read; one that begins with a hyphen or a
-digit (6205-2RS, 6205 2RS) is refused: give the designation without it. The 7x, QJ and NU series,
-tapered (ISO 355) and thrust (ISO 104) bearings are not in the data yet.
+digit (6205-2RS, 6205 2RS) is refused: give the designation without it. The 22 and 23 width series
+of the cylindrical and self-aligning bearings, 32/33 double row, NA, tapered (ISO 355) and thrust
+(ISO 104) bearings are not in the data yet.
 """
 
 import csv
@@ -27,8 +32,20 @@ SOURCES = {
 }
 # the bearing type each source's series are of
 SOURCE_TYPES = {"GOST 8338-75": "deep_groove_ball", "GOST 24696-81": "spherical_roller"}
-# a designation: series digits, bore code (two digits, a single digit, or /d), then an optional suffix
-DESIGNATION = re.compile(r"\s*(?P<digits>\d+)(?P<slash>/\d+(?:\.\d+)?)?\s*(?P<suffix>[A-Za-z].*)?\s*")
+# ISO 15 gives boundary dimensions by dimension series, whatever the bearing inside: series of other
+# types in the dimension series of a tabulated one take its d, D, B. series → (the tabulated series of
+# the same dimension series, that dimension series, the scene's bearing type)
+SAME_DIMENSION_SERIES = {
+    "72": ("62", "02", "angular_contact_ball"), "73": ("63", "03", "angular_contact_ball"),
+    "12": ("62", "02", "self_aligning_ball"), "13": ("63", "03", "self_aligning_ball"),
+    "QJ2": ("62", "02", "four_point_contact_ball"), "QJ3": ("63", "03", "four_point_contact_ball"),
+    **{f"{kind}{digits}": (base, dimension, "cylindrical_roller") for kind in ("NU", "N", "NJ", "NUP")
+       for digits, base, dimension in (("2", "62", "02"), ("3", "63", "03"), ("4", "64", "04"), ("10", "60", "10"))},
+}
+# a designation: a letter prefix (NU, N, NJ, NUP, QJ) or none, the series digits and bore code (two
+# digits, a single digit, or /d), then an optional suffix
+DESIGNATION = re.compile(r"\s*(?P<prefix>NUP|NU|NJ|N|QJ)?\s*(?P<digits>\d+)(?P<slash>/\d+(?:\.\d+)?)?\s*"
+                         r"(?P<suffix>[A-Za-z].*)?\s*")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -54,8 +71,15 @@ def _table() -> dict[tuple[str, str], dict]:
 
 
 def series() -> tuple[str, ...]:
-    """The series the data holds, longest first (a designation's prefix is matched against them)."""
-    return tuple(sorted({key[0] for key in _table()}, key=lambda name: (-len(name), name)))
+    """The series the data holds, tabulated or of the same dimension series, longest first (a
+    designation's prefix is matched against them)."""
+    names = {key[0] for key in _table()} | set(SAME_DIMENSION_SERIES)
+    return tuple(sorted(names, key=lambda name: (-len(name), name)))
+
+
+def _tabulated(name: str) -> str:
+    """The tabulated series whose rows serve `name`."""
+    return SAME_DIMENSION_SERIES[name][0] if name in SAME_DIMENSION_SERIES else name
 
 
 def split_designation(designation: str) -> tuple[str, str, str]:
@@ -63,13 +87,14 @@ def split_designation(designation: str) -> tuple[str, str, str]:
     match = DESIGNATION.fullmatch(str(designation))
     if match is None:
         raise ValueError(f"bearing.designation: {designation!r} is not a designation (series and bore code, e.g. "
-                         "6205, 22220 E, 62/22)")
-    digits, slash, suffix = match.group("digits"), match.group("slash"), (match.group("suffix") or "").strip()
+                         "6205, 22220 E, NU 310, 62/22)")
+    written, slash = (match.group("prefix") or "") + match.group("digits"), match.group("slash")
+    suffix = (match.group("suffix") or "").strip()
     for name in series():
-        if not digits.startswith(name):
+        if not written.startswith(name):
             continue
-        code = slash if slash and digits == name else digits[len(name):]
-        if code and (name, code) in _table():
+        code = slash if slash and written == name else written[len(name):]
+        if code and (_tabulated(name), code) in _table():
             return name, code, suffix
     known = ", ".join(sorted(series(), key=lambda name: (len(name), name)))
     raise ValueError(f"bearing.designation: {designation!r} is not in the data (series {known}: ISO 15 as GOST 8338-75 "
@@ -80,14 +105,22 @@ def boundary_dimensions(designation: str) -> BoundaryDimensions:
     """The boundary dimensions of `designation` (module docstring); ValueError naming
     `bearing.designation` where the data has no such bearing."""
     name, code, suffix = split_designation(designation)
-    row = _table()[(name, code)]
+    row = _table()[(_tabulated(name), code)]
     chamfer = float(row["r_smin_mm"]) / 1e3 if row["r_smin_mm"] else None
     source = f"{row['source']} {row['table']}" + (f"; checked: {row['checked']}" if row["checked"] else "")
+    bearing_type = SOURCE_TYPES[row["source"]]
+    if name in SAME_DIMENSION_SERIES:
+        base, dimension, bearing_type = SAME_DIMENSION_SERIES[name]
+        source = f"ISO 15 dimension series {dimension}, as the {base} series: {source}"
     return BoundaryDimensions(name + code, name, float(row["d_mm"]) / 1e3, float(row["D_mm"]) / 1e3,
-                              float(row["B_mm"]) / 1e3, chamfer, source, SOURCE_TYPES[row["source"]], suffix)
+                              float(row["B_mm"]) / 1e3, chamfer, source, bearing_type, suffix)
 
 
 def designations(pattern: str = "*") -> list[BoundaryDimensions]:
-    """Every bearing of the data whose designation matches the shell `pattern` (fnmatch: 62*, 222??)."""
-    found = [boundary_dimensions(name + code) for name, code in _table()]
+    """Every bearing of the data whose designation matches the shell `pattern` (fnmatch: 62*, NU3*),
+    the series of the same dimension series as a tabulated one included."""
+    codes = [(name, code) for name, code in _table()]
+    codes += [(name, code) for name, (base, _, _) in SAME_DIMENSION_SERIES.items() for series_, code in _table()
+              if series_ == base and not code.startswith("/") and len(code) == 2]
+    found = [boundary_dimensions(name + code) for name, code in codes]
     return [entry for entry in found if fnmatch.fnmatchcase(entry.designation, pattern)]
