@@ -11,7 +11,7 @@ import tomllib
 from pathlib import Path
 
 from ..catalog.designations import boundary_dimensions
-from ..catalog.internal_geometry import ball_set_estimates
+from ..catalog.internal_geometry import GEOMETRY_ESTIMATES
 from .units import to_si
 from .schema import lookup, validate
 
@@ -140,8 +140,6 @@ def read_document(path: str | None) -> tuple[dict, str]:
 
 # the scene keys a designation sets, and the field of `BoundaryDimensions` each takes
 DESIGNATION_KEYS = {"bore": "bore", "outer_diameter": "outside_diameter", "width": "width"}
-# bearing type → its internal geometry estimated from the boundary dimensions (catalog/internal_geometry.py)
-GEOMETRY_ESTIMATES = {"deep_groove_ball": ball_set_estimates}
 
 
 def expand_designation(document: dict) -> dict[str, str]:

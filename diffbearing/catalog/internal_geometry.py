@@ -123,3 +123,8 @@ def ball_set_estimates(bearing: dict, bore, outside_diameter) -> dict[str, tuple
                              f"{CLEARANCE_LIMIT * 1e3:g} mm only)")
         values[key] = (value, how[key])
     return values
+
+
+# bearing type → its [bearing] keys estimated from the boundary dimensions ((table, d, D) →
+# {key: (value, how)}); a type without one takes only d, D, B from its designation
+GEOMETRY_ESTIMATES = {"deep_groove_ball": ball_set_estimates}
