@@ -104,3 +104,14 @@ def test_a_headless_browser_opens_the_report(capsys, tmp_path):
     dom = subprocess.run([BROWSERS[0], "--headless", "--disable-gpu", "--dump-dom", str(tmp_path / "report.html")],
                          capture_output=True, text=True, timeout=120).stdout
     assert code == 0 and "over a three-step duty cycle" in dom and "duty.life.L10" in dom
+
+
+def test_the_report_marks_the_values_a_designation_estimated(capsys, tmp_path):
+    """designation_6205 (a [bearing] of a designation alone): the inputs' "from" column names the
+    standard's table of d, D, B and marks each estimated value ESTIMATED with how, as the JSON does."""
+    code, _, _, parsed, document = _report(capsys, tmp_path, "designation_6205")
+    inputs = "".join(parsed.sections["Inputs"])
+    assert code == 0 and "designation 6205: GOST 8338-75 Table 5" in inputs
+    for key, source in document["derived"].items():
+        assert key in inputs and source in inputs
+    assert sum(source.startswith("ESTIMATED") for source in document["derived"].values()) == 6
