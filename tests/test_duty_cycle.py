@@ -138,6 +138,7 @@ def test_the_cycles_life_derivative_through_the_solved_bearing(tmp_path):
     (CASES.replace('"operating.inner_speed" = "1500 rpm"', '"operating.inner_speed" = "0 rpm"'), "duty[1]: a case at standstill"),
     (CASES.replace('"14 kN", "0 N", "3 kN"', '"14 kN", "0 N", "3 kN", "1 kN"'), "duty[1]"),
     (CASES + '[sweep]\n"operating.inner_speed" = ["1000 rpm", "2000 rpm"]\n', "not both"),
+    ('[[duty]]\nrevolution_share = 1.0\n', "duty: no case sets a scene key"),
 ])
 def test_a_bad_cycle_exits_2_naming_it(capsys, tmp_path, cycle, named):
     code = cli.main(["run", _scene(tmp_path, cycle)])

@@ -94,6 +94,9 @@ def duty_cycle_of(entries, scene_values: dict) -> DutyCycle:
                 given.setdefault(key, {})[number] = convert(key, value)
             except ValueError as error:
                 raise ValueError(f"duty[{number}]: {error}") from None
+    if not given:
+        raise ValueError("duty: no case sets a scene key, so every case is the scene itself: give each case what "
+                         "changes (operating.force, the speeds, a shaft's loads[k].force)")
     total = sum(shares)
     if abs(total - 1.0) > SHARE_TOLERANCE:
         raise ValueError(f"duty: the cases' {kind}s sum to {total:.6g}, not 1")
