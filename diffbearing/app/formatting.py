@@ -6,7 +6,7 @@ from .units import SI_UNITS, registry
 
 # display units of swept keys, by schema dimension
 SWEEP_DISPLAY = {"length": "mm", "angular_speed": "rpm", "force": "kN", "moment": "N*m", "angle": "deg",
-                 "pressure": "GPa"}
+                 "pressure": "GPa", "temperature": "degC"}
 
 
 def to_display(value, unit: str, display: str):
@@ -17,8 +17,9 @@ def to_display(value, unit: str, display: str):
 
 
 def swept_display(values, dimension: str) -> tuple[np.ndarray, str]:
-    """(swept SI values in the display unit of their dimension, that unit; "" where there is none)."""
-    display = SWEEP_DISPLAY.get(dimension, "")
+    """(swept SI values in the display unit of their dimension (its SI unit where `SWEEP_DISPLAY` names
+    none), that unit; "" for a dimensionless one)."""
+    display = SWEEP_DISPLAY.get(dimension, SI_UNITS[dimension])
     return (to_display(values, SI_UNITS[dimension], display) if display else np.asarray(values)), display
 
 
