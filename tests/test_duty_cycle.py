@@ -225,3 +225,19 @@ def test_the_packaged_cycle_writes_its_json_and_plot(capsys, tmp_path):
     factor = 0.95 * (np.log(100 / 99) / np.log(100 / 90)) ** (2 / 3) + 0.05
     assert document["duty"]["life"]["Ln"] == pytest.approx(factor * document["duty"]["life"]["L10"], rel=1e-12)
     assert plot_path.stat().st_size > 10_000
+
+
+def test_a_case_sets_its_oils_temperature(tmp_path):
+    """A case of gearbox_duty_cycle at 90 °C instead of 70 °C: its viscosity, κ and L10rm are the single
+    run's at that temperature and load (1e-12), the other cases' unchanged."""
+    path = tmp_path / "hot.toml"
+    path.write_text(open(example_scene("gearbox_duty_cycle")).read().replace(
+        '"operating.force" = ["16 kN", "0 N", "3.2 kN"]', '"operating.force" = ["16 kN", "0 N", "3.2 kN"]\n'
+                                                        '"lubricant.temperature" = "90 degC"'))
+    cycle = run_model(build_model(load_scene(str(path))), progress=False).values
+    alone = run_model(build_model(load_scene(example_scene("gearbox_duty_cycle"), overrides=[
+        'lubricant.temperature="90 degC"', 'operating.force=["16 kN", "0 N", "3.2 kN"]', 'operating.inner_speed="1500 rpm"'])),
+        progress=False).values
+    for key in ("life.kinematic_viscosity", "life.viscosity_ratio", "life.L10rm"):
+        assert float(np.asarray(cycle[key])[2]) == pytest.approx(float(np.asarray(alone[key])[2]), rel=1e-12)
+    assert float(np.asarray(cycle["life.kinematic_viscosity"])[0]) > float(np.asarray(cycle["life.kinematic_viscosity"])[2])

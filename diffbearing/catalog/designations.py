@@ -1,20 +1,20 @@
 """Boundary dimensions by designation: a bearing's series (618, 619, 160, 60, 62, 63, 64 deep groove
-ball; 222, 223, 230, 231, 232, 240, 241 spherical roller) and bore code give its bore d, outside
-diameter D and width B (and the smallest chamfer r_s min where the standard gives it) from ISO 15's
-dimension series, as GOST 8338-75 and GOST 24696-81 tabulate them (`boundary_dimensions.csv`: each
-row with its source table and, where one agrees, a second source).
+ball; 222, 223, 230, 231, 232, 240, 241 spherical roller; NU22, NU23 cylindrical roller) and bore
+code give its bore d, outside diameter D and width B (and the smallest chamfer r_s min where the
+standard gives it) from ISO 15's dimension series, as GOST 8338-75, GOST 24696-81 and GOST 8328-75
+tabulate them (`boundary_dimensions.csv`: each row with its source table and, where one agrees, a
+second source; GOST 8328's NU 2220 width is illegible in the copy read, and left out).
 
 Series of other bearing types in a tabulated dimension series take its d, D, B, as ISO 15 defines
 them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 72, 73; self-aligning 12,
-13; four-point QJ2, QJ3; cylindrical roller NU, N, NJ, NUP 2, 3, 4 and 10.
+13, 22, 23; four-point QJ2, QJ3; cylindrical roller NU, N, NJ, NUP 2, 3, 4, 10 and N, NJ, NUP 22, 23.
 
 A designation is the series followed by the bore code, as the catalogues write it: 00 → 10, 01 → 12,
 02 → 15, 03 → 17 mm, 04 … 96 → five times the code in mm, "/d" for d in mm (62/22, 230/500), and a
 single digit below 10 mm (623 → 3 mm); a suffix that begins with a letter, after a space or not
 (22220 E, 22220E, 24130 CC/W33), is kept apart and not read; one that begins with a hyphen or a
-digit (6205-2RS, 6205 2RS) is refused: give the designation without it. The 22 and 23 width series
-of the cylindrical and self-aligning bearings, 32/33 double row, NA, tapered (ISO 355) and thrust
-(ISO 104) bearings are not in the data yet.
+digit (6205-2RS, 6205 2RS) is refused: give the designation without it. 32/33 double row, NA,
+tapered (ISO 355) and thrust (ISO 104) bearings are not in the data yet.
 """
 
 import csv
@@ -29,15 +29,20 @@ SOURCES = {
                     "series 18, 19, 00, 10, 02, 03, 04), Tables 1–7",
     "GOST 24696-81": "GOST 24696-81 'Rolling bearings. Radial spherical double-row roller bearings with symmetrical rollers. "
                      "Basic dimensions' (ISO 15 dimension series 30, 31, 32, 40, 41, 22, 23), Tables 1–6",
+    "GOST 8328-75": "GOST 8328-75 'Rolling bearings. Radial roller bearings with short cylindrical rollers. Types and basic "
+                    "dimensions' (ISO 15 dimension series 22, 23: Tables 4, 6)",
 }
 # the bearing type each source's series are of
-SOURCE_TYPES = {"GOST 8338-75": "deep_groove_ball", "GOST 24696-81": "spherical_roller"}
+SOURCE_TYPES = {"GOST 8338-75": "deep_groove_ball", "GOST 24696-81": "spherical_roller", "GOST 8328-75": "cylindrical_roller"}
 # ISO 15 gives boundary dimensions by dimension series, whatever the bearing inside: series of other
 # types in the dimension series of a tabulated one take its d, D, B. series → (the tabulated series of
 # the same dimension series, that dimension series, the scene's bearing type)
 SAME_DIMENSION_SERIES = {
     "72": ("62", "02", "angular_contact_ball"), "73": ("63", "03", "angular_contact_ball"),
     "12": ("62", "02", "self_aligning_ball"), "13": ("63", "03", "self_aligning_ball"),
+    "22": ("NU22", "22", "self_aligning_ball"), "23": ("NU23", "23", "self_aligning_ball"),
+    **{f"{kind}{digits}": (f"NU{digits}", digits, "cylindrical_roller")
+       for kind in ("N", "NJ", "NUP") for digits in ("22", "23")},
     "QJ2": ("62", "02", "four_point_contact_ball"), "QJ3": ("63", "03", "four_point_contact_ball"),
     **{f"{kind}{digits}": (base, dimension, "cylindrical_roller") for kind in ("NU", "N", "NJ", "NUP")
        for digits, base, dimension in (("2", "62", "02"), ("3", "63", "03"), ("4", "64", "04"), ("10", "60", "10"))},
