@@ -146,6 +146,7 @@ def test_a_bad_cycle_exits_2_naming_it(capsys, tmp_path, cycle, named):
     assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
 
 
+@pytest.mark.slow
 def test_a_shafts_cycle_is_its_bearings_miner_sums_and_their_system_life():
     """gearbox_shaft_duty_cycle (three cases setting loads[0].force, .moment and shaft.speed): the
     middle case, which sets nothing, is the gearbox_shaft example itself (1e-12); each bearing's cycle

@@ -250,6 +250,7 @@ def test_its_equivalent_dynamic_load_is_the_qj_catalogue_rule():
                                0.6 * 2000.0 + 1.07 * 4000.0, rtol=1e-12)
 
 
+@pytest.mark.slow
 def test_a_ball_solve_stopped_short_says_so(monkeypatch):
     """The shaft counts each ball's balance (`balance_residual`) in its convergence: solved, every
     ball balanced to 1e-6 N and the shaft's residual below 1e-9; with the exact-balance Newton

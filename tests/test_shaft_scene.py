@@ -227,6 +227,7 @@ inner_diameter = "20 mm"
 """
 
 
+@pytest.mark.slow
 def test_flexible_shaft_scene(tmp_path):
     """The gearbox shaft as a Timoshenko beam of two sections ([[shaft.sections]]): the scene's
     bearing loads and deflection line are `flexible_shaft`'s own (1e-12, 1e-9); the reactions balance the

@@ -132,6 +132,7 @@ def test_its_stiffness_is_the_ring_forces_derivative():
     np.testing.assert_allclose(stiffness[:, 3:], 0.0, atol=0.0)
 
 
+@pytest.mark.slow
 @hypothesis.settings(max_examples=8, deadline=None)
 @hypothesis.given(radial=st.floats(-100e-6, 100e-6), axial=st.floats(-150e-6, 150e-6))
 def test_random_states_are_finite_balanced_and_the_energys_gradient(radial, axial):

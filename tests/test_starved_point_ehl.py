@@ -43,6 +43,7 @@ def test_bad_input_names_the_parameter(layer, grid, match):
         _starved(LOAD, layer, grid)
 
 
+@pytest.mark.slow
 def test_a_layer_that_fills_the_inlet_is_the_flooded_film(coarse_flooded):
     """A layer of 150 µm, thicker than the gap anywhere on the inlet edge (about 36 µm at its
     centre), starves nothing: the θ-model's solution is `point_film`'s within 0.1 % (the same
