@@ -32,11 +32,13 @@ def format_number(value) -> str:
     return f"{value:.4e}"
 
 
-def format_value(value) -> str:
+def format_value(value, most: int | None = 8) -> str:
+    """A number, or an array as "[a, b, …]" of its first `most` elements (None: all)."""
     array = np.asarray(value)
     if array.ndim == 0:
         return format_number(array)
-    return "[" + ", ".join(format_number(v) for v in array.ravel()[:8]) + (", …]" if array.size > 8 else "]")
+    flat = array.ravel() if most is None else array.ravel()[:most]
+    return "[" + ", ".join(format_number(v) for v in flat) + (", …]" if flat.size < array.size else "]")
 
 
 def unit_label(display: str) -> str:

@@ -15,7 +15,7 @@ import jax
 import numpy as np
 
 from .duty_cycle import describe
-from .formatting import format_number, format_value, swept_display, to_display, unit_label
+from .formatting import format_value, swept_display, to_display, unit_label
 from .report import format_report
 from .schema import lookup
 
@@ -51,8 +51,7 @@ def _input_rows(values: dict, derived: dict) -> list[tuple[str, str, str, str]]:
             rows.append((key, "; ".join(str(entry) for entry in value), "SI", source))
             continue
         shown, display = swept_display(np.asarray(value, float), dimension)
-        cell = format_number(shown) if np.ndim(shown) == 0 else "[" + ", ".join(format_number(x) for x in np.ravel(shown)) + "]"
-        rows.append((key, cell, unit_label(display) if display else "", source))
+        rows.append((key, format_value(shown, most=None), unit_label(display) if display else "", source))
     return rows
 
 
@@ -66,17 +65,11 @@ def _output_rows(result) -> list[tuple[str, str, str, str]]:
         shown = np.asarray(to_display(result.values[key], out.unit, out.display))
         if shown.dtype.kind not in "fiub":
             continue
-        if shown.ndim == 0:
-            cell = format_value(shown)
-        else:
-            flat = np.ravel(shown)
-            cell = "[" + ", ".join(format_number(x) for x in flat[:12]) + (", …]" if flat.size > 12 else "]")
-        rows.append((key, out.description, cell, unit_label(out.display)))
+        rows.append((key, out.description, format_value(shown, most=12), unit_label(out.display)))
     for key in sorted(key for key in result.values if key.startswith("duty.")):  # the cycle's values
         description, unit, display = describe(key, result.model.outputs)
-        value = np.asarray(to_display(result.values[key], unit, display))
-        cell = format_number(value) if value.ndim == 0 else "[" + ", ".join(format_number(x) for x in np.ravel(value)) + "]"
-        rows.append((key, description, cell, unit_label(display)))
+        value = to_display(result.values[key], unit, display)
+        rows.append((key, description, format_value(value, most=None), unit_label(display)))
     return rows
 
 

@@ -128,7 +128,7 @@ def format_duty_report(result) -> str:
                      f"{'a₁ = ' + format_number(np.ravel(values['life.a1'])[0]):>14}")
     outputs = result.model.outputs
     def cell(value):  # one life, or each bearing's of a shaft
-        return format_number(value) if np.ndim(value) == 0 else "[" + ", ".join(format_number(x) for x in value) + "]"
+        return format_value(value, most=None)
 
     for key, out in outputs.items():
         if f"duty.{key}" in values:
