@@ -67,11 +67,8 @@ def normal_clearance(bore) -> float | None:
 
 def _ratings(balls, ball_diameter, pitch_diameter):
     """ISO 281 C_r and ISO 76 C₀r [N] of a deep groove ball set (α = 0)."""
-    mm = ball_diameter * 1e3
-    fc = np.interp(ball_diameter / pitch_diameter, life.FC_RATIO, life.FC_VALUE)
-    common = life.BM_BALL * fc * balls ** (2.0 / 3.0)
-    dynamic = common * (mm**1.8 if mm <= 25.4 else 3.647 * mm**1.4)
-    return dynamic, float(static_safety.ball_static_load_rating(balls, ball_diameter, pitch_diameter, 0.0))
+    return (float(life.ball_dynamic_load_rating(balls, ball_diameter, pitch_diameter, 0.0)),
+            float(static_safety.ball_static_load_rating(balls, ball_diameter, pitch_diameter, 0.0)))
 
 
 def estimate_ball_set(bore, outside_diameter, dynamic_load_rating=None, static_load_rating=None) -> BallSet:

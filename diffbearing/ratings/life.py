@@ -36,25 +36,33 @@ BM_BALL = 1.3  # ISO 281 Table 1: radial and angular-contact ball bearings, self
 
 def basic_dynamic_load_rating(bearing: BallBearing):
     """ISO 281 basic dynamic radial load rating C_r [N] of a single-row ball bearing from its geometry."""
-    return _dynamic_load_rating(bearing, jnp.interp(_diameter_ratio(bearing), FC_RATIO, FC_VALUE), rows=1)
+    return ball_dynamic_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter,
+                                    bearing.nominal_contact_angle)
+
+
+def ball_dynamic_load_rating(ball_count, ball_diameter, pitch_diameter, contact_angle, rows=1):
+    """ISO 281 C_r [N] of `rows` rows of Z balls of D_w on D_pw [m] at the nominal angle α [rad], f_c of
+    Table 2's groove column (`_dynamic_load_rating`)."""
+    fc = jnp.interp(ball_diameter * jnp.cos(contact_angle) / pitch_diameter, FC_RATIO, FC_VALUE)
+    return _dynamic_load_rating(ball_count, ball_diameter, contact_angle, fc, rows)
 
 
 def self_aligning_load_rating(bearing: BallBearing, rows=2):
     """ISO 281 C_r [N] of a self-aligning ball bearing of `rows` rows of `bearing`'s balls, f_c of
     Table 2's self-aligning column."""
-    return _dynamic_load_rating(bearing, jnp.interp(_diameter_ratio(bearing), SELF_ALIGNING_FC_RATIO,
-                                                    SELF_ALIGNING_FC_VALUE), rows)
+    return _dynamic_load_rating(bearing.ball_count, bearing.ball_diameter, bearing.nominal_contact_angle,
+                                jnp.interp(_diameter_ratio(bearing), SELF_ALIGNING_FC_RATIO, SELF_ALIGNING_FC_VALUE), rows)
 
 
 def _diameter_ratio(bearing: BallBearing):
     return bearing.ball_diameter * jnp.cos(bearing.nominal_contact_angle) / bearing.pitch_diameter
 
 
-def _dynamic_load_rating(bearing: BallBearing, fc, rows):
+def _dynamic_load_rating(ball_count, ball_diameter, contact_angle, fc, rows):
     """ISO 281 eq. (2): b_m f_c (i cos α)^0.7 Z^{2/3} D_w^1.8 (D_w ≤ 25.4 mm), else 3.647 b_m f_c
     (i cos α)^0.7 Z^{2/3} D_w^1.4 [N]."""
-    ball_mm = bearing.ball_diameter * 1e3
-    common = BM_BALL * fc * (rows * jnp.cos(bearing.nominal_contact_angle)) ** 0.7 * bearing.ball_count ** (2.0 / 3.0)
+    ball_mm = ball_diameter * 1e3
+    common = BM_BALL * fc * (rows * jnp.cos(contact_angle)) ** 0.7 * ball_count ** (2.0 / 3.0)
     return jnp.where(ball_mm <= 25.4, common * ball_mm**1.8, common * 3.647 * ball_mm**1.4)
 
 
