@@ -225,3 +225,14 @@ def test_a_bore_past_the_clearance_table_asks_for_the_clearance(capsys, tmp_path
     code = cli.main(["run", str(path)])
     err = capsys.readouterr().err
     assert code == 2 and "bearing.radial_clearance: needed" in err, err
+
+
+@pytest.mark.parametrize("key", ["dynamic_load_rating", "static_load_rating"])
+def test_a_catalogue_rating_that_is_not_positive_exits_2_naming_it(capsys, tmp_path, key):
+    path = tmp_path / "bad.toml"
+    other = "static_load_rating" if key == "dynamic_load_rating" else "dynamic_load_rating"
+    path.write_text(f'[bearing]\ntype = "deep_groove_ball"\ndesignation = "6205"\n{key} = "-1 kN"\n{other} = "7 kN"\n'
+                    '[operating]\ninner_speed = "1000 rpm"\nforce = ["1 kN", "0 N", "0 N"]\n')
+    code = cli.main(["run", str(path)])
+    err = capsys.readouterr().err
+    assert code == 2 and f"bearing.{key}" in err and len(err.strip().splitlines()) == 1, err

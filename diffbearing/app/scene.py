@@ -166,12 +166,10 @@ def expand_designation(document: dict) -> dict[str, str]:
         raise ValueError(f"bearing.static_load_rating: no internal geometry of a {dimensions.bearing_type} bearing is "
                          "estimated from its ratings")
     if estimate is not None:
-        ratings = {key: to_si(bearing[key], "force", f"bearing.{key}") for key in ("dynamic_load_rating", "static_load_rating")
-                   if key in bearing}
-        # the estimator reads the ratings in SI and only the presence of the scene's other [bearing] keys
-        values = estimate(ratings | {key: True for key in bearing if key not in ratings},
-                          to_si(bearing["bore"], "length", "bearing.bore"),
-                          to_si(bearing["outer_diameter"], "length", "bearing.outer_diameter"))
+        ratings = [to_si(bearing[key], "force", f"bearing.{key}") if key in bearing else None
+                   for key in ("dynamic_load_rating", "static_load_rating")]
+        values = estimate(set(bearing), to_si(bearing["bore"], "length", "bearing.bore"),
+                          to_si(bearing["outer_diameter"], "length", "bearing.outer_diameter"), *ratings)
         for key, (value, how) in values.items():
             bearing[key] = value
             derived[f"bearing.{key}"] = f"ESTIMATED: {how}"

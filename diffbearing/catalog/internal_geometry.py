@@ -23,6 +23,7 @@ import dataclasses
 
 import numpy as np
 
+from ..params import check_range
 from ..ratings import life, static_safety
 
 INCH = 25.4e-3
@@ -73,7 +74,11 @@ def _ratings(balls, ball_diameter, pitch_diameter):
 
 def estimate_ball_set(bore, outside_diameter, dynamic_load_rating=None, static_load_rating=None) -> BallSet:
     """The estimated ball set of a deep groove ball bearing of bore d and outside diameter D [m]
-    (module docstring); with both catalogue ratings C_r, C₀r [N] the set that reproduces them."""
+    (module docstring); with both catalogue ratings C_r, C₀r [N] the set that reproduces them
+    (ValueError naming a rating that is not positive)."""
+    for key, rating in (("bearing.dynamic_load_rating", dynamic_load_rating), ("bearing.static_load_rating",
+                                                                                static_load_rating)):
+        check_range(key, rating, low=0.0, unit=" N", why="a catalogue's load rating")
     pitch = 0.5 * (bore + outside_diameter)
     section = outside_diameter - bore
     typical = BALL_SHARE * section
@@ -101,18 +106,17 @@ BALL_SET_KEYS = {"balls": (), "ball_diameter": (), "pitch_diameter": (), "inner_
                  "outer_groove_ratio": ("outer_groove_radius",), "radial_clearance": ("contact_angle",)}
 
 
-def ball_set_estimates(bearing: dict, bore, outside_diameter) -> dict[str, tuple[float, str]]:
-    """{[bearing] key: (estimated SI value, how it was found)} of the ball-set keys the scene's
-    [bearing] table leaves out, from its catalogue ratings where it gives both (dynamic_load_rating,
-    static_load_rating; SI)."""
-    estimate = estimate_ball_set(bore, outside_diameter, bearing.get("dynamic_load_rating"),
-                                 bearing.get("static_load_rating"))
+def ball_set_estimates(given, bore, outside_diameter, dynamic_load_rating=None,
+                       static_load_rating=None) -> dict[str, tuple[float, str]]:
+    """{[bearing] key: (estimated SI value, how it was found)} of the ball-set keys not among the
+    scene's `given` [bearing] keys, from its catalogue ratings C_r, C₀r [N] where it gives both."""
+    estimate = estimate_ball_set(bore, outside_diameter, dynamic_load_rating, static_load_rating)
     how = {"balls": estimate.how, "ball_diameter": estimate.how, "pitch_diameter": "(d + D)/2",
            "inner_groove_ratio": "the usual deep groove conformity", "outer_groove_ratio": "the usual deep groove conformity",
            "radial_clearance": "the middle of ISO 5753-1's normal group CN for the bore"}
     values = {}
     for key, instead in BALL_SET_KEYS.items():
-        if key in bearing or any(other in bearing for other in instead):
+        if key in given or any(other in given for other in instead):
             continue
         value = getattr(estimate, key)
         if value is None:
@@ -122,6 +126,6 @@ def ball_set_estimates(bearing: dict, bore, outside_diameter) -> dict[str, tuple
     return values
 
 
-# bearing type → its [bearing] keys estimated from the boundary dimensions ((table, d, D) →
-# {key: (value, how)}); a type without one takes only d, D, B from its designation
+# bearing type → its [bearing] keys estimated from the boundary dimensions ((the scene's [bearing] keys,
+# d, D, C_r, C₀r) → {key: (value, how)}); a type without one takes only d, D, B from its designation
 GEOMETRY_ESTIMATES = {"deep_groove_ball": ball_set_estimates}
