@@ -89,3 +89,12 @@ def palmgren_moment(f0, f1, load, kinematic_viscosity, rpm, pitch_diameter):
     product, dm = kinematic_viscosity * 1e6 * rpm, pitch_diameter * 1e3
     viscous = 1e-7 * f0 * product ** (2 / 3) * dm**3 if product >= 2000 else 160e-7 * f0 * dm**3
     return (viscous + f1 * load * dm) * 1e-3
+
+
+def assert_exits_2_naming(capsys, arguments, named):
+    """`diffbearing ARGUMENTS` exits 2 with one line on stderr that names `named` (a bad input)."""
+    from diffbearing.app import cli
+
+    code = cli.main(arguments)
+    err = capsys.readouterr().err
+    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err

@@ -22,14 +22,13 @@ from diffbearing import (
     roller_profile,
     run_model,
 )
-from diffbearing.app import cli
 from diffbearing.bearings.roller import cylindrical_roller_thrust as crtb
 from diffbearing.bearings.roller.roller_contact import PALMGREN_STEEL_MODULUS
 from diffbearing.bearings.roller.roller_equilibrium import lamina_positions
 from diffbearing.bearings.roller.roller_geometry import roller_modulus
 from diffbearing.ratings import reference_life, roller_life
 
-from .helpers import assert_jvp_matches_central_difference, palmgren_moment
+from .helpers import assert_exits_2_naming, assert_jvp_matches_central_difference, palmgren_moment
 
 SCENE = importlib.resources.files("diffbearing.scenes") / "thrust_roller_shaft.toml"
 
@@ -222,9 +221,7 @@ def test_a_bad_thrust_roller_entry_exits_2_naming_its_key(capsys, tmp_path, chan
     """The example with one bad key in its thrust bearing's entry: exit 2, one line naming it."""
     path = tmp_path / "bad.toml"
     path.write_text(SCENE.read_text().replace(*change))
-    code = cli.main(["run", str(path)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", str(path)], named)
 
 
 @pytest.mark.slow

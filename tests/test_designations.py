@@ -16,7 +16,7 @@ from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
 from diffbearing.catalog import designations
 
-from .helpers import example_scene
+from .helpers import assert_exits_2_naming, example_scene
 
 # d × D × B [mm] as the manufacturers' catalogues print them (SKF, FAG: the same ISO 15 values)
 CATALOGUE = {
@@ -141,9 +141,7 @@ def test_a_scenes_designation_gives_its_boundary_dimensions_and_says_so(capsys, 
     ('designation = "6222"\n', "bearing.bore must be"),  # its 110 mm bore does not fit the scene's own balls
 ])
 def test_a_bad_designation_in_a_scene_exits_2(capsys, tmp_path, lines, named):
-    code = cli.main(["run", _scene(tmp_path, lines)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", _scene(tmp_path, lines)], named)
 
 
 def test_the_bearings_command_lists_the_data(capsys):
@@ -213,9 +211,7 @@ def test_a_scene_of_a_designation_alone_runs_with_its_estimates_marked(capsys, t
     ('bore = "25 mm"\nouter_diameter = "52 mm"\nstatic_load_rating = "7.85 kN"\n', "bearing.static_load_rating is read with"),
 ])
 def test_a_catalogue_c0_without_a_designation_exits_2(capsys, tmp_path, lines, named):
-    code = cli.main(["run", _scene(tmp_path, lines)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", _scene(tmp_path, lines)], named)
 
 
 def test_a_bore_past_the_clearance_table_asks_for_the_clearance(capsys, tmp_path):

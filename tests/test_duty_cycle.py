@@ -14,7 +14,7 @@ from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
 from diffbearing.ratings import duty_cycle
 
-from .helpers import assert_jvp_matches_central_difference, example_scene
+from .helpers import assert_exits_2_naming, assert_jvp_matches_central_difference, example_scene
 
 RPM = np.pi / 30
 SCENE = example_scene("gearbox_6411_ratings")  # the 6411E in oil: L10, L10r, L10m, L10rm
@@ -141,9 +141,7 @@ def test_the_cycles_life_derivative_through_the_solved_bearing(tmp_path):
     ('[[duty]]\nrevolution_share = 1.0\n', "duty: no case sets a scene key"),
 ])
 def test_a_bad_cycle_exits_2_naming_it(capsys, tmp_path, cycle, named):
-    code = cli.main(["run", _scene(tmp_path, cycle)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", _scene(tmp_path, cycle)], named)
 
 
 @pytest.mark.slow
@@ -173,9 +171,7 @@ def test_a_shafts_cycle_is_its_bearings_miner_sums_and_their_system_life():
 def test_a_bad_shaft_case_exits_2_naming_it(capsys, tmp_path, change, named):
     path = tmp_path / "shaft.toml"
     path.write_text(open(example_scene("gearbox_shaft_duty_cycle")).read().replace(*change))
-    code = cli.main(["run", str(path)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", str(path)], named)
 
 
 @pytest.mark.slow

@@ -27,7 +27,6 @@ from diffbearing import (
     run_model,
     solve_roller_equilibrium,
 )
-from diffbearing.app import cli
 from diffbearing.app.adapters.systems.shaft import end_lamina_share, misalignment_warnings
 from diffbearing.bearings.interface import ContactLoads
 from diffbearing.bearings.roller import roller_equilibrium
@@ -36,7 +35,7 @@ from diffbearing.bearings.roller.roller_contact import PALMGREN_STEEL_MODULUS
 from diffbearing.bearings.roller.roller_geometry import roller_modulus
 from diffbearing.ratings import roller_life
 
-from .helpers import assert_jvp_matches_central_difference, palmgren_moment
+from .helpers import assert_exits_2_naming, assert_jvp_matches_central_difference, palmgren_moment
 
 SCENE = importlib.resources.files("diffbearing.scenes") / "needle_roller_shaft.toml"
 
@@ -218,9 +217,7 @@ def test_a_bad_needle_entry_exits_2_naming_its_key(capsys, tmp_path, change, nam
     """The example with one bad key in its needle bearing's entry: exit 2, one line naming it."""
     path = tmp_path / "bad.toml"
     path.write_text(SCENE.read_text().replace(*change))
-    code = cli.main(["run", str(path)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", str(path)], named)
 
 
 @pytest.mark.slow

@@ -23,12 +23,11 @@ from diffbearing import (
     spherical_roller_raceways,
     spherical_roller_support,
 )
-from diffbearing.app import cli
 from diffbearing.bearings.roller import spherical_roller as srb
 from diffbearing.app.adapters.systems.shaft import pressure_warnings
 from diffbearing.friction import skf_friction
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import assert_exits_2_naming, assert_jvp_matches_central_difference
 
 SCENE = importlib.resources.files("diffbearing.scenes") / "spherical_roller_shaft.toml"
 
@@ -178,9 +177,7 @@ def test_a_bad_spherical_roller_entry_exits_2_naming_its_key(capsys, tmp_path, c
     """The example with one bad key: exit 2, one line naming it."""
     path = tmp_path / "bad.toml"
     path.write_text(SCENE.read_text().replace(*change, 1))
-    code = cli.main(["run", str(path)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", str(path)], named)
 
 
 @pytest.mark.slow

@@ -18,9 +18,8 @@ from diffbearing.bearings.ball import kinematics
 from diffbearing.bearings.ball.ball_equilibrium import BallModel
 from diffbearing.ratings import reference_life, thrust_ball_ratings
 
-from diffbearing.app import cli
 
-from .helpers import assert_jvp_matches_central_difference, palmgren_moment
+from .helpers import assert_exits_2_naming, assert_jvp_matches_central_difference, palmgren_moment
 
 SCENE = importlib.resources.files("diffbearing.scenes") / "thrust_ball_shaft.toml"
 
@@ -196,9 +195,7 @@ def test_a_bad_thrust_entry_exits_2_naming_its_key(capsys, tmp_path, change, nam
     text = SCENE.read_text()
     path = tmp_path / "bad.toml"
     path.write_text(text.replace(*change))
-    code = cli.main(["run", str(path)])
-    err = capsys.readouterr().err
-    assert code == 2 and named in err and len(err.strip().splitlines()) == 1, err
+    assert_exits_2_naming(capsys, ["run", str(path)], named)
 
 
 @pytest.mark.slow
