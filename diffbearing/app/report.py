@@ -8,7 +8,7 @@ import json
 
 import numpy as np
 
-from .duty_cycle import case_dimension, damage_life
+from .duty_cycle import case_dimension, damage_life, describe
 from .formatting import format_number, format_value, swept_display, to_display, unit_label
 from .registry import adapters_for
 from .schema import lookup
@@ -126,21 +126,16 @@ def format_duty_report(result) -> str:
         reliability = format_number(result.model.scene.values["life.reliability"])
         lines.append(f"  {'L_n at the reliability R = ' + reliability + ' %':<56}"
                      f"{'a₁ = ' + format_number(np.ravel(values['life.a1'])[0]):>14}")
-    outputs = result.model.outputs
-    def cell(value):  # one life, or each bearing's of a shaft
-        return format_value(value, most=None)
-
-    for key, out in outputs.items():
+    for key, out in result.model.outputs.items():  # each life over the cycle, one or each bearing's of a shaft
         if f"duty.{key}" in values:
             hours = values.get(f"duty.hours.{key}")
-            extra = "" if hours is None else f"  ({cell(hours)} h)"
-            lines.append(f"  {out.description:<56} {cell(values[f'duty.{key}']):>13}  {unit_label(out.display)}{extra}")
-    if "duty.equivalent_load" in values:
-        lines.append(f"  {'equivalent load of the cycle, (Σ u_i P_i^p)^(1/p)':<56}"
-                     f"{format_number(to_display(values['duty.equivalent_load'], 'N', 'kN')):>14}  kN")
-    if "duty.mean_speed" in values:
-        lines.append(f"  {'mean speed Σ t_i n_i':<56}{format_number(to_display(values['duty.mean_speed'], 'rad/s', 'rpm')):>14}"
-                     f"  {unit_label('rpm')}")
+            extra = "" if hours is None else f"  ({format_value(hours, most=None)} h)"
+            lines.append(f"  {out.description:<56} {format_value(values[f'duty.{key}'], most=None):>13}  "
+                         f"{unit_label(out.display)}{extra}")
+    for key in ("duty.equivalent_load", "duty.mean_speed"):
+        if key in values:
+            description, unit, display = describe(key, result.model.outputs)
+            lines.append(f"  {description:<56}{format_number(to_display(values[key], unit, display)):>14}  {unit_label(display)}")
     lines += _problem_lines(result, most=10)
     lines += ["", f"compile {result.compile_s:.2f} s, run {result.run_s:.3f} s for {duty.count} cases (after compilation)"]
     return "\n".join(lines)
