@@ -175,3 +175,11 @@ def test_needle_and_thrust_bearings_load_their_moment_with_fr_or_fa(kind, radial
     expected = {"needle_roller": (4.0, 5.5, 0.0005, 0.0), "thrust_ball": (1.0, 1.5, 0.0012, 0.33),
                 "cylindrical_roller_thrust": (2.0, 3.0, 0.0015, 0.0)}
     assert friction_torque.PALMGREN_CONSTANTS[kind] == expected[kind]
+
+
+@pytest.mark.parametrize("force", [[10e3, 1e3], [10e3, 5e3]])
+def test_spherical_roller_friction_load_derivative_matches_central_differences(force):
+    """dP₁/d(F_r, F_a) on either side of e (F_a/F_r = 0.1 and 0.5 at α = 10°) against central differences."""
+    angle = np.radians(10.0)
+    assert_jvp_matches_central_difference(lambda f: friction_torque.friction_load("spherical_roller", f[0], f[1], angle),
+                                          jnp.asarray(force), jnp.array([1.0, 0.5]), 1.0, rtol=1e-7)

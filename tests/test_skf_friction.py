@@ -307,3 +307,13 @@ def test_thrust_bearings_rows_are_table_2b_and_3(kind, series, rolling, sliding)
     parts = float(moment.inlet_shear * moment.replenishment * moment.rolling + moment.sliding)
     assert float(moment.total) == pytest.approx(parts, rel=1e-12)
     assert float(moment.rolling) == pytest.approx(float(g_rr) * (30.0 * 300.0) ** 0.6 * 1e-3, rel=1e-12)
+
+
+@pytest.mark.parametrize("kind, series", [("thrust_ball", "511"), ("cylindrical_roller_thrust", "811")])
+def test_thrust_rows_moment_derivative_matches_central_differences(kind, series):
+    """dM/d(F_a, n) of the thrust rows' SKF moment (30 kN, 300 r/min, ν = 30 mm²/s) against central differences."""
+    def moment(x):
+        return skf_friction.frictional_moment(kind, series, 0.0, x[0], x[1] * RPM, 30e-6, 60e-3, 95e-3,
+                                              supply="oil_bath").total
+
+    assert_jvp_matches_central_difference(moment, jnp.array([30e3, 300.0]), jnp.array([1.0, 1.0]), 1e-2, rtol=1e-6)
