@@ -17,6 +17,7 @@ import numpy as np
 from .duty_cycle import describe
 from .formatting import format_value, swept_display, to_display, unit_label
 from .report import format_report
+from .scene import derived_values
 from .schema import lookup
 
 STYLE = """
@@ -33,13 +34,14 @@ img { max-width: 100%; height: auto; }
 """
 
 
-def _input_rows(values: dict, derived: dict) -> list[tuple[str, str, str, str]]:
+def _input_rows(scene) -> list[tuple[str, str, str, str]]:
     """(key, value, unit, from) of each scene input, in its display unit; tables of entries
-    ([[bearings]], [[loads]]) as their entries' SI values; "from" the source of a value the scene did
-    not write itself (`Scene.derived`), else "scene"."""
+    ([[bearings]], [[loads]]) as their entries' SI values, then a row for each value of an entry the
+    scene did not write; "from" the source of a value the scene did not write itself
+    (`Scene.derived`), else "scene"."""
     rows = []
-    for key, value in values.items():
-        source = derived.get(key, "scene")
+    for key, value in scene.values.items():
+        source = scene.derived.get(key, "scene")
         try:
             dimension = lookup(key).dimension
         except ValueError:
@@ -52,6 +54,10 @@ def _input_rows(values: dict, derived: dict) -> list[tuple[str, str, str, str]]:
             continue
         shown, display = swept_display(np.asarray(value, float), dimension)
         rows.append((key, format_value(shown, most=None), unit_label(display) if display else "", source))
+    for key, value, schema_key in derived_values(scene):  # a [[bearings]] entry's, within its table above
+        if key not in scene.values:
+            shown, display = swept_display(np.asarray(value, float), lookup(schema_key).dimension)
+            rows.append((key, format_value(shown, most=None), unit_label(display) if display else "", scene.derived[key]))
     return rows
 
 
@@ -115,7 +121,7 @@ def html_document(result, command: str) -> str:
         f"Python {platform.python_version()}, {when}<br>"
         f"Compile {result.compile_s:.2f} s, run {result.run_s:.4f} s (after compilation).</p>",
         "<h2>Errors and warnings (envelope checks)</h2>", checks,
-        "<h2>Inputs</h2>", _table(("key", "value", "unit", "from"), _input_rows(scene.values, scene.derived),
+        "<h2>Inputs</h2>", _table(("key", "value", "unit", "from"), _input_rows(scene),
                                   numeric_column=1),
         "<h2>Results</h2>", _table(("key", "quantity", "value", "unit"), _output_rows(result), numeric_column=2),
         _figure(result),

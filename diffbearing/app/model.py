@@ -16,6 +16,7 @@ import numpy as np
 
 from . import registry
 from .compilation_cache import use_compilation_cache
+from .adapters.designation import SCENE_LAYER_KEYS
 from .registry import Reads
 from .result import RunResult
 from .scene import Scene
@@ -25,7 +26,7 @@ from .sweep import check_corners, run_points, run_sweep, sweep_axes
 # keys every scene may hold that no input builder reads: the report's title, the bearing type that
 # selects the adapters, the designation the scene layer reads (app/scene.py), and the effects and
 # fidelity tables (checked by `resolve` and `read_by`)
-_SETTINGS = ("title", "bearing.type", "bearing.designation", "bearing.static_load_rating")
+_SETTINGS = ("title", "bearing.type", *SCENE_LAYER_KEYS)
 
 
 def build_inputs(bearing_type: str, blocks, values) -> dict:

@@ -11,6 +11,7 @@ import numpy as np
 from .duty_cycle import case_dimension, damage_life, describe
 from .formatting import format_number, format_value, swept_display, to_display, unit_label
 from .registry import adapters_for
+from .scene import derived_values
 from .schema import lookup
 
 
@@ -32,9 +33,9 @@ def derived_lines(scene) -> list[str]:
     if not scene.derived:
         return []
     lines = ["", "Not written in the scene (any value given there overrides these):"]
-    for key, source in scene.derived.items():
-        shown, display = swept_display(np.asarray(scene.values[key], float), lookup(key).dimension)
-        lines.append(f"  {key} = {format_number(shown)} {unit_label(display)}  ({source})")
+    for key, value, schema_key in derived_values(scene):
+        shown, display = swept_display(np.asarray(value, float), lookup(schema_key).dimension)
+        lines.append(f"  {key} = {format_number(shown)} {unit_label(display)}  ({scene.derived[key]})")
     return lines
 
 

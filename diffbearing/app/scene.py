@@ -12,6 +12,7 @@ from pathlib import Path
 
 from ..catalog.designations import boundary_dimensions
 from ..catalog.internal_geometry import GEOMETRY_ESTIMATES
+from .adapters.designation import ENTRY_DERIVED
 from .units import to_si
 from .schema import lookup, validate
 
@@ -142,38 +143,73 @@ def read_document(path: str | None) -> tuple[dict, str]:
 DESIGNATION_KEYS = {"bore": "bore", "outer_diameter": "outside_diameter", "width": "width"}
 
 
-def expand_designation(document: dict) -> dict[str, str]:
-    """Set `bearing.bore`, `outer_diameter` and `width` from `bearing.designation` where the scene
-    gives none (in place); {key: its source} of those set. ValueError naming `bearing.designation`
-    for a designation the data lacks or one of another bearing type."""
-    bearing = document.get("bearing")
-    if not isinstance(bearing, dict) or "designation" not in bearing:
-        if isinstance(bearing, dict) and "static_load_rating" in bearing:
+def _expand_table(table: dict, where: str) -> dict[str, str]:
+    """Set a [bearing] table's (or a [[bearings]] entry's) `bore`, `outer_diameter` and `width` from
+    its `designation` where it gives none, and the inside its type estimates (in place); {`where`.key:
+    its source} of those set. ValueError naming `bearing.<key>`."""
+    if "designation" not in table:
+        if "static_load_rating" in table:
             raise ValueError("bearing.static_load_rating is read with bearing.designation only (the catalogue's C0, "
                              "which with its C fits the estimated ball set)")
         return {}
-    dimensions = boundary_dimensions(bearing["designation"])
-    if "type" in bearing and bearing["type"] != dimensions.bearing_type:
-        raise ValueError(f"bearing.designation: {bearing['designation']!r} is a {dimensions.bearing_type} bearing's "
-                         f"({dimensions.source}), the scene's bearing.type is {bearing['type']!r}")
+    dimensions = boundary_dimensions(table["designation"])
+    if "type" in table and table["type"] != dimensions.bearing_type:
+        raise ValueError(f"bearing.designation: {table['designation']!r} is a bearing of type {dimensions.bearing_type} "
+                         f"({dimensions.source}), the scene's bearing.type is {table['type']!r}")
     derived = {}
     for key, field in DESIGNATION_KEYS.items():
-        if key not in bearing:
-            bearing[key] = getattr(dimensions, field)
-            derived[f"bearing.{key}"] = f"designation {dimensions.designation}: {dimensions.source}"
+        if key not in table:
+            table[key] = getattr(dimensions, field)
+            derived[f"{where}.{key}"] = f"designation {dimensions.designation}: {dimensions.source}"
     estimate = GEOMETRY_ESTIMATES.get(dimensions.bearing_type)
-    if estimate is None and "static_load_rating" in bearing:
+    if estimate is None and "static_load_rating" in table:
         raise ValueError(f"bearing.static_load_rating: no internal geometry of a {dimensions.bearing_type} bearing is "
                          "estimated from its ratings")
     if estimate is not None:
-        ratings = [to_si(bearing[key], "force", f"bearing.{key}") if key in bearing else None
-                   for key in ("dynamic_load_rating", "static_load_rating")]
-        values = estimate(set(bearing), to_si(bearing["bore"], "length", "bearing.bore"),
-                          to_si(bearing["outer_diameter"], "length", "bearing.outer_diameter"), *ratings)
-        for key, (value, how) in values.items():
-            bearing[key] = value
-            derived[f"bearing.{key}"] = f"ESTIMATED: {how}"
+        def scene_value(key, dimension):
+            return to_si(table[key], dimension, f"bearing.{key}") if key in table else None
+
+        for key, (value, how) in estimate(scene_value, set(table), dimensions.suffix).items():
+            table[key] = value
+            derived[f"{where}.{key}"] = f"ESTIMATED: {how}"
     return derived
+
+
+def expand_designation(document: dict) -> dict[str, str]:
+    """Expand the designation of the scene's [bearing] table and of each [[bearings]] entry of a shaft
+    (`_expand_table`, in place); {key: its source} of the values set, keyed `bearing.<key>` and
+    `bearings[i].<key>`. ValueError naming `bearing.designation` (`bearings[i]: designation`) for a
+    designation the data lacks or one of another bearing type."""
+    derived = {}
+    if isinstance(document.get("bearing"), dict):
+        derived |= _expand_table(document["bearing"], "bearing")
+    entries = document.get("bearings")
+    for index, entry in enumerate(entries if isinstance(entries, list) else []):
+        if not isinstance(entry, dict):
+            continue
+        try:
+            derived |= _expand_table(entry, f"bearings[{index}]")
+        except ValueError as error:
+            raise ValueError(f"bearings[{index}]: {str(error).replace('bearing.', '')}") from None
+    return derived
+
+
+def derived_values(scene: Scene) -> list[tuple[str, object, str]]:
+    """(key, SI value, the schema key whose dimension it has) of each value the scene did not write
+    (`Scene.derived`): a [bearing] key's own, a [[bearings]] entry's `bearings[i].<key>` from the entry."""
+    rows = []
+    for key in scene.derived:
+        where, _, name = key.partition(".")
+        if where == "bearing":
+            rows.append((key, scene.values[key], key))
+        else:
+            rows.append((key, scene.values["bearings"][_entry_index(where)][f"bearing.{name}"], f"bearing.{name}"))
+    return rows
+
+
+def _entry_index(where: str) -> int:
+    """i of "bearings[i]"."""
+    return int(where.removeprefix("bearings[").removesuffix("]"))
 
 
 def load_scene(path: str | None = None, overrides=()) -> Scene:
@@ -183,6 +219,11 @@ def load_scene(path: str | None = None, overrides=()) -> Scene:
     document = apply_overrides(original, [parse_override(text) for text in overrides])
     derived = expand_designation(document)
     values = validate(document)
+    for key in derived:  # a [[bearings]] entry's: named in the entry (its keys need not be read)
+        where, _, name = key.partition(".")
+        if where != "bearing":
+            entry = values["bearings"][_entry_index(where)]
+            entry[ENTRY_DERIVED] = (*entry.get(ENTRY_DERIVED, ()), f"bearing.{name}")
     sweep = document.get("sweep")
     return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source,
                  switched=_switched_effects(original, document), duty=document.get("duty"), derived=derived)

@@ -6,7 +6,7 @@ tabulate them (`boundary_dimensions.csv`: each row with its source table and, wh
 second source; GOST 8328's NU 2220 width is illegible in the copy read, and left out).
 
 Series of other bearing types in a tabulated dimension series take its d, D, B, as ISO 15 defines
-them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 72, 73; self-aligning 12,
+them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 70, 72, 73; self-aligning 12,
 13, 22, 23; four-point QJ2, QJ3; cylindrical roller NU, N, NJ, NUP 2, 3, 4, 10 and N, NJ, NUP 22, 23.
 
 A designation is the series followed by the bore code, as the catalogues write it: 00 → 10, 01 → 12,
@@ -38,7 +38,8 @@ SOURCE_TYPES = {"GOST 8338-75": "deep_groove_ball", "GOST 24696-81": "spherical_
 # types in the dimension series of a tabulated one take its d, D, B. series → (the tabulated series of
 # the same dimension series, that dimension series, the scene's bearing type)
 SAME_DIMENSION_SERIES = {
-    "72": ("62", "02", "angular_contact_ball"), "73": ("63", "03", "angular_contact_ball"),
+    "70": ("60", "10", "angular_contact_ball"), "72": ("62", "02", "angular_contact_ball"),
+    "73": ("63", "03", "angular_contact_ball"),
     "12": ("62", "02", "self_aligning_ball"), "13": ("63", "03", "self_aligning_ball"),
     "22": ("NU22", "22", "self_aligning_ball"), "23": ("NU23", "23", "self_aligning_ball"),
     **{f"{kind}{digits}": (f"NU{digits}", digits, "cylindrical_roller")

@@ -7,13 +7,22 @@ from ...bearings.roller.roller_geometry import ROLLER_KINDS
 from ...params import BALL_BEARING_KINDS
 from ..registry import Adapter, Key, quantity, register
 
+# the keys the scene layer reads (app/scene.py), not an input builder: in [bearing] and in a shaft's
+# [[bearings]] entries
+SCENE_LAYER_KEYS = ("bearing.designation", "bearing.static_load_rating")
+# a [[bearings]] entry's field naming the keys its designation set (the scene layer's, after
+# validation): like [bearing]'s (`Scene.derived`), they need not be read
+ENTRY_DERIVED = "derived"
+
 ADAPTER = register(Adapter(
     name="designation",
     bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
-    keys={"bearing.designation": Key("text", doc="catalogue designation (6205, 22220 E, 61905): bore, outer_diameter "
-                                                 "and width from ISO 15's dimension series where the scene gives none "
-                                                 "(`diffbearing bearings` lists them); a deep groove ball bearing's "
-                                                 "ball set, groove ratios and clearance estimated where it gives none"),
+    keys={"bearing.designation": Key("text", doc="catalogue designation (6205, 7205 B, 22220 E, 61905), also in a "
+                                                 "shaft's [[bearings]]: bore, outer_diameter and width from ISO 15's "
+                                                 "dimension series where the scene gives none (`diffbearing bearings` "
+                                                 "lists them); a deep groove or angular contact ball bearing's ball "
+                                                 "set, groove ratios and clearance or contact angle (its suffix: B 40°, "
+                                                 "AC 25°, A 30°, C 15°) estimated where it gives none"),
           "bearing.static_load_rating": quantity("force", "the catalogue's C0 (with bearing.designation and "
                                                           "bearing.dynamic_load_rating: the ball set that reproduces both)")},
 ))
