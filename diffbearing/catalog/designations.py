@@ -1,20 +1,24 @@
-"""Boundary dimensions by designation: a bearing's series (618, 619, 160, 60, 62, 63, 64 deep groove
-ball; 222, 223, 230, 231, 232, 240, 241 spherical roller; NU22, NU23 cylindrical roller) and bore
-code give its bore d, outside diameter D and width B (and the smallest chamfer r_s min where the
-standard gives it) from ISO 15's dimension series, as GOST 8338-75, GOST 24696-81 and GOST 8328-75
-tabulate them (`boundary_dimensions.csv`: each row with its source table and, where one agrees, a
-second source; GOST 8328's NU 2220 width is illegible in the copy read, and left out).
+"""Boundary dimensions by designation: a bearing's series and bore code give its bore d, outside
+diameter D and width B (a thrust bearing's height H; and the smallest chamfer r_s min where the
+standard gives it) from ISO 15's and ISO 104's dimension series, as these GOST standards tabulate
+them (`boundary_dimensions.csv`: each row with its source table and, where one agrees, a second
+source): GOST 8338-75 deep groove ball 618, 619, 160, 60, 62, 63, 64; GOST 24696-81 spherical roller
+222, 223, 230, 231, 232, 240, 241; GOST 8328-75 cylindrical roller NU22, NU23 (its NU 2220 width is
+illegible in the copy read, and left out); GOST 4252-75 double-row angular contact ball 32, 33;
+GOST 4657-82 needle roller NA49; GOST 23526-79 cylindrical roller thrust 811, 812.
 
-Series of other bearing types in a tabulated dimension series take its d, D, B, as ISO 15 defines
-them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 70, 72, 73; self-aligning 12,
-13, 22, 23; four-point QJ2, QJ3; cylindrical roller NU, N, NJ, NUP 2, 3, 4, 10 and N, NJ, NUP 22, 23.
+Series of other bearing types in a tabulated dimension series take its d, D, B, as ISO 15 and ISO 104
+define them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 70, 72, 73;
+self-aligning 12, 13, 22, 23; four-point QJ2, QJ3; cylindrical roller NU, N, NJ, NUP 2, 3, 4, 10 and N,
+NJ, NUP 22, 23; thrust ball 511, 512.
 
 A designation is the series followed by the bore code, as the catalogues write it: 00 → 10, 01 → 12,
 02 → 15, 03 → 17 mm, 04 … 96 → five times the code in mm, "/d" for d in mm (62/22, 230/500), and a
 single digit below 10 mm (623 → 3 mm); a suffix that begins with a letter, after a space or not
-(22220 E, 22220E, 24130 CC/W33), is kept apart and not read; one that begins with a hyphen or a
-digit (6205-2RS, 6205 2RS) is refused: give the designation without it. 32/33 double row, NA,
-tapered (ISO 355) and thrust (ISO 104) bearings are not in the data yet.
+(22220 E, 22220E, 24130 CC/W33), is kept apart (an angular contact bearing's names its contact
+angle, `internal_geometry.CONTACT_ANGLES`); one that begins with a hyphen or a digit (6205-2RS,
+6205 2RS) is refused: give the designation without it. Tapered (ISO 355), thrust ball 513, 514 and
+the other series are not in the data yet.
 """
 
 import csv
@@ -31,26 +35,37 @@ SOURCES = {
                      "Basic dimensions' (ISO 15 dimension series 30, 31, 32, 40, 41, 22, 23), Tables 1–6",
     "GOST 8328-75": "GOST 8328-75 'Rolling bearings. Radial roller bearings with short cylindrical rollers. Types and basic "
                     "dimensions' (ISO 15 dimension series 22, 23: Tables 4, 6)",
+    "GOST 4252-75": "GOST 4252-75 'Rolling bearings. Radial-thrust double-row ball bearings. Basic dimensions' (ISO 15 "
+                    "dimension series 32, 33), Tables 1, 2; the smallest chamfers from its Amendment No. 2",
+    "GOST 4657-82": "GOST 4657-82 'Rolling bearings. Needle roller bearings with machined rings. Basic dimensions' (ISO 15 "
+                    "dimension series 49), Table 2",
+    "GOST 23526-79": "GOST 23526-79 'Rolling bearings. Single thrust cylindrical roller bearings. Basic dimensions' (ISO 104 "
+                     "dimension series 11, 12), Tables 1, 2 (B: the height H); the smallest chamfers from its Amendment No. 1",
 }
 # the bearing type each source's series are of
-SOURCE_TYPES = {"GOST 8338-75": "deep_groove_ball", "GOST 24696-81": "spherical_roller", "GOST 8328-75": "cylindrical_roller"}
-# ISO 15 gives boundary dimensions by dimension series, whatever the bearing inside: series of other
-# types in the dimension series of a tabulated one take its d, D, B. series → (the tabulated series of
-# the same dimension series, that dimension series, the scene's bearing type)
+SOURCE_TYPES = {"GOST 8338-75": "deep_groove_ball", "GOST 24696-81": "spherical_roller", "GOST 8328-75": "cylindrical_roller",
+                "GOST 4252-75": "double_row_angular_contact_ball", "GOST 4657-82": "needle_roller",
+                "GOST 23526-79": "cylindrical_roller_thrust"}
+# ISO 15 (ISO 104 for thrust bearings) gives boundary dimensions by dimension series, whatever the
+# bearing inside: series of other types in the dimension series of a tabulated one take its d, D, B.
+# series → (the tabulated series of the same dimension series, the standard and that dimension series,
+# the scene's bearing type)
 SAME_DIMENSION_SERIES = {
-    "70": ("60", "10", "angular_contact_ball"), "72": ("62", "02", "angular_contact_ball"),
-    "73": ("63", "03", "angular_contact_ball"),
-    "12": ("62", "02", "self_aligning_ball"), "13": ("63", "03", "self_aligning_ball"),
-    "22": ("NU22", "22", "self_aligning_ball"), "23": ("NU23", "23", "self_aligning_ball"),
-    **{f"{kind}{digits}": (f"NU{digits}", digits, "cylindrical_roller")
+    "70": ("60", "ISO 15 10", "angular_contact_ball"), "72": ("62", "ISO 15 02", "angular_contact_ball"),
+    "73": ("63", "ISO 15 03", "angular_contact_ball"),
+    "12": ("62", "ISO 15 02", "self_aligning_ball"), "13": ("63", "ISO 15 03", "self_aligning_ball"),
+    "22": ("NU22", "ISO 15 22", "self_aligning_ball"), "23": ("NU23", "ISO 15 23", "self_aligning_ball"),
+    **{f"{kind}{digits}": (f"NU{digits}", f"ISO 15 {digits}", "cylindrical_roller")
        for kind in ("N", "NJ", "NUP") for digits in ("22", "23")},
-    "QJ2": ("62", "02", "four_point_contact_ball"), "QJ3": ("63", "03", "four_point_contact_ball"),
-    **{f"{kind}{digits}": (base, dimension, "cylindrical_roller") for kind in ("NU", "N", "NJ", "NUP")
+    "QJ2": ("62", "ISO 15 02", "four_point_contact_ball"), "QJ3": ("63", "ISO 15 03", "four_point_contact_ball"),
+    **{f"{kind}{digits}": (base, f"ISO 15 {dimension}", "cylindrical_roller") for kind in ("NU", "N", "NJ", "NUP")
        for digits, base, dimension in (("2", "62", "02"), ("3", "63", "03"), ("4", "64", "04"), ("10", "60", "10"))},
+    # ISO 104 likewise for thrust bearings: the thrust ball 511, 512 take the 811, 812's d, D and height
+    "511": ("811", "ISO 104 11", "thrust_ball"), "512": ("812", "ISO 104 12", "thrust_ball"),
 }
-# a designation: a letter prefix (NU, N, NJ, NUP, QJ) or none, the series digits and bore code (two
+# a designation: a letter prefix (NU, N, NJ, NUP, NA, QJ) or none, the series digits and bore code (two
 # digits, a single digit, or /d), then an optional suffix
-DESIGNATION = re.compile(r"\s*(?P<prefix>NUP|NU|NJ|N|QJ)?\s*(?P<digits>\d+)(?P<slash>/\d+(?:\.\d+)?)?\s*"
+DESIGNATION = re.compile(r"\s*(?P<prefix>NUP|NU|NJ|NA|N|QJ)?\s*(?P<digits>\d+)(?P<slash>/\d+(?:\.\d+)?)?\s*"
                          r"(?P<suffix>[A-Za-z].*)?\s*")
 
 
@@ -103,8 +118,9 @@ def split_designation(designation: str) -> tuple[str, str, str]:
         if code and (_tabulated(name), code) in _table():
             return name, code, suffix
     known = ", ".join(sorted(series(), key=lambda name: (len(name), name)))
-    raise ValueError(f"bearing.designation: {designation!r} is not in the data (series {known}: ISO 15 as GOST 8338-75 "
-                     "and GOST 24696-81 tabulate them; give bore, outer_diameter and width instead)")
+    raise ValueError(f"bearing.designation: {designation!r} is not in the data (series {known}: ISO 15 and ISO 104 as "
+                     "the GOST standards of `diffbearing bearings` tabulate them; give bore, outer_diameter and width "
+                     "instead)")
 
 
 def boundary_dimensions(designation: str) -> BoundaryDimensions:
@@ -117,7 +133,8 @@ def boundary_dimensions(designation: str) -> BoundaryDimensions:
     bearing_type = SOURCE_TYPES[row["source"]]
     if name in SAME_DIMENSION_SERIES:
         base, dimension, bearing_type = SAME_DIMENSION_SERIES[name]
-        source = f"ISO 15 dimension series {dimension}, as the {base} series: {source}"
+        standard, _, number = dimension.rpartition(" ")
+        source = f"{standard} dimension series {number}, as the {base} series: {source}"
     return BoundaryDimensions(name + code, name, float(row["d_mm"]) / 1e3, float(row["D_mm"]) / 1e3,
                               float(row["B_mm"]) / 1e3, chamfer, source, bearing_type, suffix)
 
