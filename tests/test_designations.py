@@ -53,8 +53,8 @@ def test_boundary_dimensions_are_the_catalogues(designation):
         assert found.source.startswith("ISO 15 dimension series") == (found.series not in ("NU22", "NU23"))
 
 
-# d × D × B (a thrust bearing's height H) [mm] of the double-row, needle and thrust series, as SKF's
-# catalogue prints them (3205 A, 3308 A, NA 4905, 81105 TN, 51105 …), with the bearing type
+# d × D × B (a thrust bearing's height H) [mm] of the double-row, needle, thrust and 213 series, as SKF's
+# catalogue prints them (3205 A, 3308 A, NA 4905, 81105 TN, 51105, 21310 E …), with the bearing type
 OTHER_TYPES = {
     "3205 A": (25, 52, 20.6, "double_row_angular_contact_ball"), "3210": (50, 90, 30.2, "double_row_angular_contact_ball"),
     "3308 A": (40, 90, 36.5, "double_row_angular_contact_ball"), "NA 4905": (25, 42, 17, "needle_roller"),
@@ -62,13 +62,15 @@ OTHER_TYPES = {
     "81105 TN": (25, 42, 11, "cylindrical_roller_thrust"), "81212": (60, 95, 26, "cylindrical_roller_thrust"),
     "81120 TN": (100, 135, 25, "cylindrical_roller_thrust"), "51105": (25, 42, 11, "thrust_ball"),
     "51110": (50, 70, 14, "thrust_ball"), "51206": (30, 52, 16, "thrust_ball"), "51210": (50, 78, 22, "thrust_ball"),
+    "21308 E": (40, 90, 23, "spherical_roller"), "21310 E": (50, 110, 27, "spherical_roller"),
 }
 
 
 @pytest.mark.parametrize("designation", OTHER_TYPES)
 def test_the_double_row_needle_and_thrust_series_are_the_catalogues(designation):
-    """GOST 4252-75 (32, 33), GOST 4657-82 (NA49), GOST 23526-79 (811, 812) and, through ISO 104's
-    dimension series, the thrust ball 511, 512: d, D, B (H) of each as SKF prints it (exact), its type."""
+    """GOST 4252-75 (32, 33), GOST 4657-82 (NA49), GOST 23526-79 (811, 812) and, through their dimension
+    series, the thrust ball 511, 512 (ISO 104) and spherical roller 213 (ISO 15, as 63): d, D, B (H) of
+    each as SKF prints it (exact), its type."""
     found = designations.boundary_dimensions(designation)
     *dimensions, bearing_type = OTHER_TYPES[designation]
     assert [round(x * 1e3, 6) for x in (found.bore, found.outside_diameter, found.width)] == dimensions

@@ -9,7 +9,7 @@ GOST 4657-82 needle roller NA49; GOST 23526-79 cylindrical roller thrust 811, 81
 
 Series of other bearing types in a tabulated dimension series take its d, D, B, as ISO 15 and ISO 104
 define them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 70, 72, 73;
-self-aligning 12, 13, 22, 23; four-point QJ2, QJ3; cylindrical roller NU, N, NJ, NUP 2, 3, 4, 10 and N,
+self-aligning 12, 13, 22, 23; four-point QJ2, QJ3; spherical roller 213; cylindrical roller NU, N, NJ, NUP 2, 3, 4, 10 and N,
 NJ, NUP 22, 23; thrust ball 511, 512.
 
 A designation is the series followed by the bore code, as the catalogues write it: 00 → 10, 01 → 12,
@@ -58,6 +58,7 @@ SAME_DIMENSION_SERIES = {
     **{f"{kind}{digits}": (f"NU{digits}", f"ISO 15 {digits}", "cylindrical_roller")
        for kind in ("N", "NJ", "NUP") for digits in ("22", "23")},
     "QJ2": ("62", "ISO 15 02", "four_point_contact_ball"), "QJ3": ("63", "ISO 15 03", "four_point_contact_ball"),
+    "213": ("63", "ISO 15 03", "spherical_roller"),
     **{f"{kind}{digits}": (base, f"ISO 15 {dimension}", "cylindrical_roller") for kind in ("NU", "N", "NJ", "NUP")
        for digits, base, dimension in (("2", "62", "02"), ("3", "63", "03"), ("4", "64", "04"), ("10", "60", "10"))},
     # ISO 104 likewise for thrust bearings: the thrust ball 511, 512 take the 811, 812's d, D and height
