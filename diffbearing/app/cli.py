@@ -79,12 +79,12 @@ def _bearings(pattern: str) -> int:
               file=sys.stderr)
         return 2
     kind = max(len("type"), *(len(entry.bearing_type) for entry in found)) + 2
-    print(f"{'designation':<12}{'type':<{kind}}{'d [mm]':>8}{'D [mm]':>8}{'B [mm]':>8}{'r_s min [mm]':>14}  source "
-          "(B: a thrust bearing's height H)")
+    print(f"{'designation':<12}{'type':<{kind}}{'d [mm]':>8}{'D [mm]':>8}{'B [mm]':>8}{'T [mm]':>8}{'r_s min [mm]':>14}"
+          "  source (B: a thrust bearing's height H; T: a tapered bearing's total width)")
     for entry in found:
-        chamfer = "" if entry.chamfer is None else f"{entry.chamfer * 1e3:g}"
+        chamfer, total = ("" if value is None else f"{value * 1e3:g}" for value in (entry.chamfer, entry.total_width))
         print(f"{entry.designation:<12}{entry.bearing_type:<{kind}}{entry.bore * 1e3:>8g}"
-              f"{entry.outside_diameter * 1e3:>8g}{entry.width * 1e3:>8g}{chamfer:>14}  {entry.source}")
+              f"{entry.outside_diameter * 1e3:>8g}{entry.width * 1e3:>8g}{total:>8}{chamfer:>14}  {entry.source}")
     print(f"\n{len(found)} bearings; in a scene: bearing.designation = \"{found[0].designation}\" sets bore, outer_diameter "
           "and width")
     print("Sources: " + "; ".join(text for name, text in SOURCES.items() if any(name in entry.source for entry in found)))

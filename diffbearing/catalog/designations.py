@@ -1,24 +1,28 @@
 """Boundary dimensions by designation: a bearing's series and bore code give its bore d, outside
-diameter D and width B (a thrust bearing's height H; and the smallest chamfer r_s min where the
-standard gives it) from ISO 15's and ISO 104's dimension series, as these GOST standards tabulate
-them (`boundary_dimensions.csv`: each row with its source table and, where one agrees, a second
-source): GOST 8338-75 deep groove ball 618, 619, 160, 60, 62, 63, 64; GOST 24696-81 spherical roller
-222, 223, 230, 231, 232, 240, 241; GOST 8328-75 cylindrical roller NU22, NU23 (its NU 2220 width is
-illegible in the copy read, and left out); GOST 4252-75 double-row angular contact ball 32, 33;
-GOST 4657-82 needle roller NA49; GOST 23526-79 cylindrical roller thrust 811, 812.
+diameter D and width B (a thrust bearing's height H, a tapered bearing's inner ring width, with its
+total width T and outer ring width C; and the smallest chamfer r_s min where the source gives it)
+(`boundary_dimensions.csv`: each row with its source table and, where one agrees, a second source).
+Read from ISO 15's and ISO 104's dimension series as these GOST standards tabulate them: GOST 8338-75
+deep groove ball 618, 619, 160, 60, 62, 63, 64; GOST 24696-81 spherical roller 222, 223, 230, 231,
+232, 240, 241; GOST 8328-75 cylindrical roller NU22, NU23 (its NU 2220 width is illegible in the copy
+read, and left out); GOST 4252-75 double-row angular contact ball 32, 33; GOST 4657-82 needle roller
+NA49; GOST 23526-79 cylindrical roller thrust 811, 812. Where no copy of the standard was found
+(ISO 355 / GOST 27365 for tapered, ISO 104 / GOST 7872 for thrust ball bearings), from manufacturers'
+catalogues, each row against a second where it has the bearing: tapered 302, 303, 313, 320, 322, 323
+(Timken's, with the ISO 355 dimension series it prints; URB's, SKF's) and thrust ball 513, 514 (URB's,
+SKF's).
 
 Series of other bearing types in a tabulated dimension series take its d, D, B, as ISO 15 and ISO 104
 define them by dimension series alone (`SAME_DIMENSION_SERIES`): angular contact 70, 72, 73;
-self-aligning 12, 13, 22, 23; four-point QJ2, QJ3; spherical roller 213; cylindrical roller NU, N, NJ, NUP 2, 3, 4, 10 and N,
-NJ, NUP 22, 23; thrust ball 511, 512.
+self-aligning 12, 13, 22, 23; four-point QJ2, QJ3; spherical roller 213; cylindrical roller NU, N, NJ,
+NUP 2, 3, 4, 10 and N, NJ, NUP 22, 23; thrust ball 511, 512.
 
 A designation is the series followed by the bore code, as the catalogues write it: 00 → 10, 01 → 12,
 02 → 15, 03 → 17 mm, 04 … 96 → five times the code in mm, "/d" for d in mm (62/22, 230/500), and a
 single digit below 10 mm (623 → 3 mm); a suffix that begins with a letter, after a space or not
-(22220 E, 22220E, 24130 CC/W33), is kept apart (an angular contact bearing's names its contact
-angle, `internal_geometry.CONTACT_ANGLES`); one that begins with a hyphen or a digit (6205-2RS,
-6205 2RS) is refused: give the designation without it. Tapered (ISO 355), thrust ball 513, 514 and
-the other series are not in the data yet.
+(22220 E, 22220E, 24130 CC/W33, 32010 X), is kept apart (an angular contact bearing's names its
+contact angle, `internal_geometry.CONTACT_ANGLES`); one that begins with a hyphen or a digit
+(6205-2RS, 6205 2RS) is refused: give the designation without it.
 """
 
 import csv
@@ -41,11 +45,14 @@ SOURCES = {
                     "dimension series 49), Table 2",
     "GOST 23526-79": "GOST 23526-79 'Rolling bearings. Single thrust cylindrical roller bearings. Basic dimensions' (ISO 104 "
                      "dimension series 11, 12), Tables 1, 2 (B: the height H); the smallest chamfers from its Amendment No. 1",
+    # no copy of ISO 355 (GOST 27365) nor of ISO 104 (GOST 7872) for thrust ball bearings was found: manufacturers'
+    # catalogues, each row against a second where it has the bearing
+    "Timken Metric Tapered Roller Bearings": "Timken 'Metric Tapered Roller Bearings' catalogue, the ISO 302 … 323 series "
+                                             "with the ISO 355 dimension series it prints",
+    "URB General Catalogue v.14_2017": "URB Group 'Rolling Bearings General Catalogue' v.14_2017 (tapered roller and "
+                                       "thrust ball bearings)",
+    "SKF General Catalogue 6000": "SKF General Catalogue 6000 (Russian edition; tapered roller and thrust ball bearings)",
 }
-# the bearing type each source's series are of
-SOURCE_TYPES = {"GOST 8338-75": "deep_groove_ball", "GOST 24696-81": "spherical_roller", "GOST 8328-75": "cylindrical_roller",
-                "GOST 4252-75": "double_row_angular_contact_ball", "GOST 4657-82": "needle_roller",
-                "GOST 23526-79": "cylindrical_roller_thrust"}
 # ISO 15 (ISO 104 for thrust bearings) gives boundary dimensions by dimension series, whatever the
 # bearing inside: series of other types in the dimension series of a tabulated one take its d, D, B.
 # series → (the tabulated series of the same dimension series, the standard and that dimension series,
@@ -78,11 +85,13 @@ class BoundaryDimensions:
     series: str
     bore: float
     outside_diameter: float
-    width: float
+    width: float  # B: a tapered bearing's inner ring width, a thrust bearing's height H
     chamfer: float | None  # r_s min [m], None where the standard's table gives none
     source: str  # the standard and its table
     bearing_type: str  # the scene type whose series it is
     suffix: str = ""
+    total_width: float | None = None  # T [m] of a tapered roller bearing
+    outer_ring_width: float | None = None  # C [m] of a tapered roller bearing
 
 
 @functools.cache
@@ -131,13 +140,14 @@ def boundary_dimensions(designation: str) -> BoundaryDimensions:
     row = _table()[(_tabulated(name), code)]
     chamfer = float(row["r_smin_mm"]) / 1e3 if row["r_smin_mm"] else None
     source = f"{row['source']} {row['table']}" + (f"; checked: {row['checked']}" if row["checked"] else "")
-    bearing_type = SOURCE_TYPES[row["source"]]
+    bearing_type = row["bearing_type"]
     if name in SAME_DIMENSION_SERIES:
         base, dimension, bearing_type = SAME_DIMENSION_SERIES[name]
         standard, _, number = dimension.rpartition(" ")
         source = f"{standard} dimension series {number}, as the {base} series: {source}"
+    total, outer = (float(row[key]) / 1e3 if row[key] else None for key in ("T_mm", "C_mm"))
     return BoundaryDimensions(name + code, name, float(row["d_mm"]) / 1e3, float(row["D_mm"]) / 1e3,
-                              float(row["B_mm"]) / 1e3, chamfer, source, bearing_type, suffix)
+                              float(row["B_mm"]) / 1e3, chamfer, source, bearing_type, suffix, total, outer)
 
 
 def designations(pattern: str = "*") -> list[BoundaryDimensions]:
