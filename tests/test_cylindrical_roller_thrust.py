@@ -212,8 +212,9 @@ def test_bad_geometry_names_its_key(keys, named):
 
 
 @pytest.mark.parametrize("change, named", [
-    (('bore = "60 mm"', 'bore = "70 mm"'), "bearings[2]: bore: the rollers' inner ends lie at"),
-    (('outer_diameter = "95 mm"', 'outer_diameter = "85 mm"'), "bearings[2]: outer_diameter: the rollers' outer ends"),
+    (('designation = "81212"', 'designation = "81212"\nbore = "70 mm"'), "bearings[2]: bore: the rollers' inner ends lie at"),
+    (('designation = "81212"', 'designation = "81212"\nouter_diameter = "85 mm"'),
+     "bearings[2]: outer_diameter: the rollers' outer ends"),
     (('rollers = 16', 'rollers = 16\nradial_clearance = "20 um"'), "bearings[2]: key 'radial_clearance' is not read"),
     (('rollers = 16', 'rollers = 30'), "bearings[2]: rollers: 30 rollers of 11 mm do not fit"),
 ])
