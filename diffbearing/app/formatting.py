@@ -6,7 +6,7 @@ from .units import SI_UNITS, registry
 
 # display units of swept keys, by schema dimension
 SWEEP_DISPLAY = {"length": "mm", "angular_speed": "rpm", "force": "kN", "moment": "N*m", "angle": "deg",
-                 "pressure": "GPa", "temperature": "degC"}
+                 "pressure": "GPa", "temperature": "degC", "volume_flow": "l/min"}
 
 
 def to_display(value, unit: str, display: str):

@@ -140,7 +140,8 @@ def read_document(path: str | None) -> tuple[dict, str]:
 
 
 # the scene keys a designation sets, and the field of `BoundaryDimensions` each takes
-DESIGNATION_KEYS = {"bore": "bore", "outer_diameter": "outside_diameter", "width": "width"}
+# (a tapered bearing's total width T too; a value the designation's data lacks is not set)
+DESIGNATION_KEYS = {"bore": "bore", "outer_diameter": "outside_diameter", "width": "width", "total_width": "total_width"}
 
 
 def _expand_table(table: dict, where: str) -> dict[str, str]:
@@ -158,7 +159,7 @@ def _expand_table(table: dict, where: str) -> dict[str, str]:
                          f"({dimensions.source}), the scene's bearing.type is {table['type']!r}")
     derived = {}
     for key, field in DESIGNATION_KEYS.items():
-        if key not in table:
+        if key not in table and getattr(dimensions, field) is not None:
             table[key] = getattr(dimensions, field)
             derived[f"{where}.{key}"] = f"designation {dimensions.designation}: {dimensions.source}"
     estimate = GEOMETRY_ESTIMATES.get(dimensions.bearing_type)

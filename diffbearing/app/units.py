@@ -28,6 +28,9 @@ SI_UNITS = {
     "time": "s",
     "temperature": "K",
     "thermal_expansion": "1/K",
+    "temperature_difference": "K",
+    "volume_flow": "m^3/s",
+    "heat_transfer_coefficient": "W/(m^2*K)",
     "dimensionless": "",
 }
 

@@ -40,7 +40,7 @@ class SkfBearing(eqx.Module):
     seals: int = eqx.field(static=True, default=2)
 
 
-def _f0(v, kind: str):
+def palmgren_f0(v, kind: str):
     """f₀ of a bearing kind and the scene's lubrication, or the scene's `friction.f0`."""
     f0_grease, f0_oil, _, _ = friction_torque.PALMGREN_CONSTANTS[kind]
     supply = v.get("lubricant.supply", DEFAULT_SUPPLY)
@@ -58,7 +58,7 @@ def _f1(v):
 
 def _constants(v, built) -> dict:
     """f₀ of the bearing's kind and lubrication, or the scene's; the scene's f₁ or None."""
-    return {"friction_constants": {"f0": _f0(v, built["bearing"].kind), "f1": _f1(v)}}
+    return {"friction_constants": {"f0": palmgren_f0(v, built["bearing"].kind), "f1": _f1(v)}}
 
 
 def _skf_bearing(v, built) -> dict:
@@ -157,7 +157,7 @@ def _shaft_skf_bearings(v, built) -> dict:
 
 def _shaft_constants(v, built) -> dict:
     """f₀ of each of the shaft's bearings (a tuple), the scene's f₁ or None."""
-    return {"friction_constants": {"f0": tuple(_f0(v, kind) for kind in _friction_kinds(
+    return {"friction_constants": {"f0": tuple(palmgren_f0(v, kind) for kind in _friction_kinds(
         built["shaft"], layout_supports(built["shaft"]), "palmgren")),
                                    "f1": _f1(v)}}
 
@@ -180,14 +180,14 @@ def _split(force):
     return jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
 
 
-def _ball_torques(bearing, f0, f1, lubricant, speed, force):
+def ball_torques(bearing, f0, f1, lubricant, speed, force):
     """`_torques` of a ball bearing under [Fx, Fy, Fz] [N] (P₀, C₀ of ISO 76)."""
     return _torques(bearing.kind, f0, f1, lubricant, speed, bearing.pitch_diameter, *_split(force),
                     static_safety.ball_bearing_equivalent_static_load(bearing, force),
                     static_safety.ball_bearing_static_load_rating(bearing))
 
 
-def _roller_torques(bearing, raceways, f0, f1, lubricant, speed, force):
+def roller_torques(bearing, raceways, f0, f1, lubricant, speed, force):
     """`_torques` of a roller bearing under [Fx, Fy, Fz] [N]."""
     return _torques(bearing.kind, f0, f1, lubricant, speed, raceways.pitch_diameter, *_split(force), None, None,
                     raceways.cup_angle)
@@ -199,13 +199,13 @@ def _speed(operating):
 
 def _ball_friction(inputs: dict, settings: dict, results: dict) -> dict:
     constants = inputs["friction_constants"]
-    return _ball_torques(inputs["bearing"], constants["f0"], constants["f1"], inputs["lubricant"],
+    return ball_torques(inputs["bearing"], constants["f0"], constants["f1"], inputs["lubricant"],
                          _speed(inputs["operating"]), results["force"][:3])
 
 
 def _roller_friction(inputs: dict, settings: dict, results: dict) -> dict:
     constants = inputs["friction_constants"]
-    return _roller_torques(inputs["bearing"], inputs["raceways"], constants["f0"], constants["f1"], inputs["lubricant"],
+    return roller_torques(inputs["bearing"], inputs["raceways"], constants["f0"], constants["f1"], inputs["lubricant"],
                            _speed(inputs["operating"]), results["force"][:3])
 
 
@@ -283,7 +283,7 @@ def _shaft_totals(torques, speed) -> dict:
 def _set_friction(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's Palmgren torque from its own load, and the set's together."""
     constants, speed = inputs["friction_constants"], _speed(inputs["operating"])
-    torques = [_ball_torques(inputs["bearing"], constants["f0"], constants["f1"], inputs["lubricant"], speed,
+    torques = [ball_torques(inputs["bearing"], constants["f0"], constants["f1"], inputs["lubricant"], speed,
                              results[f"set.bearings.{number}.force"][:3])["friction.torque"] for number in range(SET_SIZE)]
     return _set_totals(torques, speed)
 

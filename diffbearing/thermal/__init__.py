@@ -1,0 +1,1 @@
+"""Heat: the thermal speed ratings of ISO 15312 and DIN 732 (`thermal_speed`)."""
