@@ -225,3 +225,51 @@ def test_bad_thermal_speed_keys_exit_2_naming_them(capsys, tmp_path, line, named
     path.write_text(text.replace("[thermal_speed]\n", "[thermal_speed]\n" + line)
                     if "heat_transfer" in line else text + line)
     assert_exits_2_naming(capsys, ["run", str(path)], named)
+
+
+def _shaft_values(tmp_path, text):
+    from diffbearing import build_model, load_scene, run_model
+
+    path = tmp_path / "shaft.toml"
+    path.write_text(text)
+    return run_model(build_model(load_scene(str(path))), progress=False)
+
+
+def test_each_bearing_on_a_shaft_gets_its_reference_speed(tmp_path, capsys):
+    """gearbox_shaft's two bearings written as designation = "6411" (d 55, D 140, B 33 mm): each one's
+    n_θr is the heat balance of its own ISO 76 C₀, d, D, B with the kind's factors (1e-12), and the
+    report tables them."""
+    from .helpers import example_scene
+
+    text = open(example_scene("gearbox_shaft")).read().replace('bore = "55 mm"\nouter_diameter = "140 mm"\n',
+                                                               'designation = "6411"\n')
+    text = text.replace("life = true\n", "life = true\nthermal_speed = true\n")
+    result = _shaft_values(tmp_path, text)
+    values = result.values
+    for number in (0, 1):
+        rating = ts.thermal_reference_speed(2.0, ts.reference_friction_factor(0.0009, 0.5),
+                                            values["bearings.thermal_speed.static_load_rating"][number], 0.055, 0.14, 0.033)
+        assert float(values["bearings.thermal_speed.reference_speed"][number]) == pytest.approx(float(rating.speed),
+                                                                                                 rel=1e-12)
+    from diffbearing.app.report import format_report
+
+    assert "Thermal reference speeds (ISO 15312" in format_report(result)
+
+
+@pytest.mark.slow
+def test_a_thrust_bearing_on_a_shaft_is_rated_under_the_thrust_conditions(tmp_path):
+    """thrust_ball_shaft with its radial bearings' d, D, B written: the 51110's n_θr is ISO 15312's thrust
+    balance — A_r = π/2 (D² − d²), ν 24 mm²/s, P₁ = 0.02 C₀a, q_r 20 kW/m² — with HR 1's 511 factors (1e-12)."""
+    from .helpers import example_scene
+
+    envelope = 'bore = "50 mm"\nouter_diameter = "90 mm"\nwidth = "20 mm"\n'
+    text = open(example_scene("thrust_ball_shaft")).read().replace('type = "cylindrical_roller"\n',
+                                                                    'type = "cylindrical_roller"\n' + envelope)
+    text = text.replace("[effects]\n", "[effects]\nthermal_speed = true\n")
+    result = _shaft_values(tmp_path, text)
+    values = result.values
+    rating = ts.thermal_reference_speed(1.5, ts.reference_friction_factor(0.0012, 0.33, "thrust"),
+                                        values["bearings.thermal_speed.static_load_rating"][2], 0.05, 0.07, 0.0, "thrust")
+    assert float(values["bearings.thermal_speed.reference_heat_flow"][2]) == pytest.approx(
+        20e3 * np.pi / 2 * (0.07**2 - 0.05**2), rel=1e-12)
+    assert float(values["bearings.thermal_speed.reference_speed"][2]) == pytest.approx(float(rating.speed), rel=1e-12)

@@ -1,6 +1,7 @@
 """Thermal speed ratings (`effects.thermal_speed = true`, `diffbearing.thermal.thermal_speed`) of a
-single ball or whole roller bearing: ISO 15312's thermal reference speed n_θr under the standard's
-reference conditions, and, with the mounting's heat transfer coefficient
+single ball or whole roller bearing and of each bearing on a shaft: ISO 15312's thermal reference
+speed n_θr under the standard's reference conditions (thrust bearings' for the thrust kinds), and,
+for a single bearing with the mounting's heat transfer coefficient
 `thermal_speed.heat_transfer_coefficient`, DIN 732's thermally safe operating speed n_θ at the solved
 load and the scene's lubricant, both from Palmgren's moments (ISO 15312's friction model) with the
 bearing kind's factors of HR 1 (`friction_torque.PALMGREN_CONSTANTS`) or the scene's."""
@@ -12,8 +13,9 @@ from ....friction import friction_torque
 from ....params import BALL_BEARING_KINDS, check_range
 from ....ratings import static_safety
 from ....thermal import thermal_speed
-from ...registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
 from ..bearings.roller_bearing import EQUILIBRIUM_BLOCK, WHOLE_BEARING
+from ..systems.shaft_layout import check_static_ratings, layout_supports
 from .friction import ball_torques, palmgren_f0, roller_torques
 
 MOUNTING = ("thermal_speed.heat_transfer_coefficient",)  # the scenes DIN 732's rating runs in
@@ -40,6 +42,69 @@ def _reference(v, built) -> dict:
     check_range("thermal_speed.f1r", f1, low=0.0, high=0.01, why="Palmgren's f1 of catalogues, about 1e-4 to 1e-3")
     return {"thermal_reference": {"f0": f0, "f1": f1, "bore": v["bearing.bore"], "outside": v["bearing.outer_diameter"],
                                   "width": v[width_key]}}
+
+
+def _shaft_reference(v, built) -> dict:
+    """ISO 15312's inputs of each of the shaft's bearings (`thermal_reference`, a tuple): its friction
+    kind's (`AbstractSupport.friction_kind`) oil f₀ and f₁ at the reference load, arrangement, d, D and
+    total width from its [[bearings]] entry; a single bearing's factor keys are refused."""
+    for key in ("thermal_speed.f0r", "thermal_speed.f1r"):
+        if key in v:
+            raise ValueError(f"{key}: a single bearing's key, not taken on a shaft (its bearings are of several kinds)")
+    layout = built["shaft"]
+    found = []
+    for number, (support, (bore, outside), width) in enumerate(zip(layout_supports(layout), layout.envelopes,
+                                                                  layout.widths)):
+        kind = support.friction_kind("palmgren")
+        if kind is None:
+            raise ValueError(f"effects.thermal_speed: bearings[{number}] ({layout.kinds[number]}) has no Palmgren factors")
+        arrangement = "thrust" if kind in thermal_speed.THRUST_KINDS else "radial"
+        for name, value in (("bore", bore), ("outer_diameter", outside), ("width", width)):
+            if value is None and (name != "width" or arrangement == "radial"):
+                raise ValueError(f"bearings[{number}]: {name} is needed by effects.thermal_speed (ISO 15312's "
+                                 "reference surface)")
+        _, f0, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
+        found.append({"f0": f0, "f1": thermal_speed.reference_friction_factor(coefficient, exponent, arrangement),
+                      "bore": bore, "outside": outside, "width": width if width is not None else 0.0})
+    return {"thermal_reference": tuple(found)}
+
+
+def _shaft_reference_speeds(inputs: dict, settings: dict, results: dict) -> dict:
+    speeds, flows, ratings, converged = [], [], [], []
+    for support, reference in zip(layout_supports(inputs["shaft"], settings), inputs["thermal_reference"]):
+        rating = support.static_load_rating()
+        arrangement = "thrust" if support.friction_kind("palmgren") in thermal_speed.THRUST_KINDS else "radial"
+        found = thermal_speed.thermal_reference_speed(reference["f0"], reference["f1"], rating, reference["bore"],
+                                                      reference["outside"], reference["width"], arrangement)
+        speeds.append(found.speed)
+        flows.append(found.heat_flow)
+        ratings.append(rating)
+        converged.append(found.converged)
+    return {"bearings.thermal_speed.reference_speed": jnp.stack(speeds),
+            "bearings.thermal_speed.reference_heat_flow": jnp.stack(flows),
+            "bearings.thermal_speed.static_load_rating": jnp.stack(ratings),
+            "bearings.thermal_speed.reference_converged": jnp.stack(converged)}
+
+
+def _shaft_checks(values: dict) -> tuple[list[str], list[str]]:
+    failed = [number for number, ok in enumerate(values["bearings.thermal_speed.reference_converged"]) if not bool(ok)]
+    return ([f"thermal_speed: ISO 15312's heat balance of bearings[{number}] did not converge" for number in failed],
+            [])
+
+
+def _report(result) -> list[str]:
+    """Each of a shaft's bearings' thermal reference speed (a single bearing's are in the output table)."""
+    values = result.values
+    key = "bearings.thermal_speed.reference_speed"
+    if key not in values or jnp.ndim(values[key]) != 1:
+        return []
+    lines = ["", "Thermal reference speeds (ISO 15312, Palmgren's moments; each bearing's kind's HR 1 factors)",
+             f"  {'#':<4}{'type':<34}{'n_θr [rpm]':>12}{'q_r A_r [W]':>13}{'C0 [kN]':>10}"]
+    for number, kind in enumerate(result.model.inputs["shaft"].kinds):
+        lines.append(f"  {number:<4}{kind:<34}{float(values[key][number]) * 30 / jnp.pi:>12.5g}"
+                     f"{float(values['bearings.thermal_speed.reference_heat_flow'][number]):>13.4g}"
+                     f"{float(values['bearings.thermal_speed.static_load_rating'][number]) / 1e3:>10.4g}")
+    return lines
 
 
 def _mounting(v, built) -> dict:
@@ -152,6 +217,17 @@ SAFE_OUTPUTS = (
 )
 
 
+SHAFT_OUTPUTS = (
+    Output("bearings.thermal_speed.reference_speed", "rad/s", "rpm", "each bearing's thermal reference speed n_θr "
+                                                                      "(ISO 15312)", in_report=False),
+    Output("bearings.thermal_speed.reference_heat_flow", "W", "W", "each bearing's q_r A_r (ISO 15312)", in_report=False),
+    Output("bearings.thermal_speed.static_load_rating", "N", "kN", "each bearing's C0 of the reference load",
+           in_report=False),
+    Output("bearings.thermal_speed.reference_converged", "", "", "each bearing's heat balance converged",
+           in_report=False),
+)
+
+
 def _blocks(prefix: str, types, requires, extra_inputs, reference, safe, scene_keys=()) -> tuple[Block, Block]:
     return (Block(name=f"{prefix}thermal_reference_speed", bearing_types=types, enabled_by=("thermal_speed", True),
                   requires=requires, inputs=("bearing", *extra_inputs, "thermal_reference"), outputs=REFERENCE_OUTPUTS,
@@ -163,7 +239,7 @@ def _blocks(prefix: str, types, requires, extra_inputs, reference, safe, scene_k
 
 ADAPTER = register(Adapter(
     name="thermal_speed",
-    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS,
+    bearing_types=BALL_BEARING_KINDS + ROLLER_KINDS + SHAFT,
     keys={"effects.thermal_speed": Key("boolean", doc="thermal speed ratings: ISO 15312's thermal reference speed; "
                                                       "with thermal_speed.heat_transfer_coefficient DIN 732's "
                                                       "thermally safe operating speed"),
@@ -184,9 +260,14 @@ ADAPTER = register(Adapter(
           "bearing.total_width": quantity("length", "a tapered bearing's total width T (ISO 15312's reference "
                                                     "surface; set by its designation)")},
     inputs=(InputBuilder(("thermal_reference",), BALL_BEARING_KINDS + ROLLER_KINDS, _reference, after=("bearing",)),
+            InputBuilder(("thermal_reference",), SHAFT, _shaft_reference, after=("shaft",)),
             InputBuilder(("thermal_mounting",), BALL_BEARING_KINDS + ROLLER_KINDS, _mounting,
                          after=("bearing", "thermal_reference"), scene_keys=MOUNTING)),
     blocks=(*_blocks("", BALL_BEARING_KINDS, ("equilibrium",), (), _ball_reference, _ball_safe),
             *_blocks("roller_", ROLLER_KINDS, (EQUILIBRIUM_BLOCK,), ("raceways",), _roller_reference, _roller_safe,
-                     WHOLE_BEARING)),
+                     WHOLE_BEARING),
+            Block(name="shaft_thermal_reference_speed", bearing_types=SHAFT, enabled_by=("thermal_speed", True),
+                  requires=("shaft",), inputs=("shaft", "thermal_reference"), outputs=SHAFT_OUTPUTS,
+                  compute=_shaft_reference_speeds, checks=_shaft_checks, validate=check_static_ratings)),
+    report=_report,
 ))

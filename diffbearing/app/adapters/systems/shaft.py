@@ -132,10 +132,11 @@ def _check_spacing(entries) -> None:
 
 def _layout(v, built) -> dict:
     shared = {key: v[key] for key in v if key.startswith("material.")}  # (items() would mark every key read)
-    bearings, envelopes, shoulders = [], [], []
+    bearings, envelopes, widths, shoulders = [], [], [], []
     for index, entry in enumerate(v["bearings"]):
         reads = Reads({**shared, **entry})
         envelopes.append((reads.get("bearing.bore"), reads.get("bearing.outer_diameter")))
+        widths.append(reads.get("bearing.total_width", reads.get("bearing.width")))
         mounting = mountings()[entry["bearing.type"]]
         try:
             bearings.append(mounting.parameters(reads))
@@ -163,7 +164,7 @@ def _layout(v, built) -> dict:
                    jnp.stack([jnp.asarray(load["moment"], float) for load in loads])),
         v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
         tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), tuple(shoulders), sections, mesh,
-        tuple(entry["bearing.type"] for entry in v["bearings"]))}
+        tuple(entry["bearing.type"] for entry in v["bearings"]), tuple(widths))}
 
 
 def _life(support, contacts):

@@ -18,7 +18,8 @@ class ShaftLayout(eqx.Module):
     only its type's `Mounting` reads) and their types (`bearing.type`), their
     positions and offsets [m] and orientations (±1), the loads, the shaft speed
     [rad/s], the reference point of the displacement and stiffness [m], each bearing's bore and
-    outer diameter [m] (None where its entry gives none; read by the ratings that need them), each
+    outer diameter [m] and its total width [m] (`bearing.total_width`, else `bearing.width`: a tapered
+    bearing's T) (None where its entry gives none; read by the ratings that need them), each
     ball bearing's shoulder depths [h_i, h_o] [m] (None where its entry gives no shoulder diameters,
     and for a roller bearing), and for a flexible shaft its sections and mesh (None: rigid)."""
 
@@ -34,6 +35,7 @@ class ShaftLayout(eqx.Module):
     sections: ShaftSections | None = None
     mesh: BeamMesh | None = eqx.field(static=True, default=None)
     kinds: tuple = eqx.field(static=True, default=())
+    widths: tuple = ()
 
 
 # The model options of the supports an input builder asks for their ratings and friction rows,
