@@ -203,6 +203,27 @@ from .systems.static_capacity import (
     capacity_curve as capacity_curve,
     capacity_point as capacity_point,
 )
+from .thermal.bearing_thermal import (
+    PalmgrenFactors as PalmgrenFactors,
+    ThermalPaths as ThermalPaths,
+    ThermalState as ThermalState,
+    WaltherLine as WaltherLine,
+    solve_bearing_thermal as solve_bearing_thermal,
+)
+from .thermal.thermal_network import (
+    ThermalNetwork as ThermalNetwork,
+    boundary_heat_flows as boundary_heat_flows,
+    edge_heat_flows as edge_heat_flows,
+    node_temperatures as node_temperatures,
+)
+from .thermal.thermal_speed import (
+    SpeedRating as SpeedRating,
+    heat_balance_speed as heat_balance_speed,
+    thermal_reference_speed as thermal_reference_speed,
+    thermally_safe_speed as thermally_safe_speed,
+)
+from .catalog.designations import boundary_dimensions as boundary_dimensions, designations as designations
+from .catalog.internal_geometry import estimate_ball_set as estimate_ball_set
 from .app.model import build_model as build_model, run_model as run_model
 from .app.rotor_handoff import (
     export_stiffness as export_stiffness,

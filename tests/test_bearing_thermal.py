@@ -23,7 +23,7 @@ BEARING = ball_bearing(kind="deep_groove_ball", ball_diameter=26.9875e-3, pitch_
                        outer_diameter=140e-3, ball_material=BEARING_STEEL, ring_material=BEARING_STEEL)
 MOUNTING = Mounting(shaft_interference=15e-6, housing_interference=-5e-6, reference_temperature=AMBIENT,
                     housing=SEAT_MATERIALS["cast_iron"][0], housing_expansion=SEAT_MATERIALS["cast_iron"][1])
-OIL = bt.Oil(68e-6, 8.7e-6)  # ISO VG 68
+OIL = bt.WaltherLine(68e-6, 8.7e-6)  # ISO VG 68
 FACTORS = bt.PalmgrenFactors(2.0, 0.0009, 0.5)  # HR 1's 62 series, oil
 PATHS = bt.ThermalPaths(inner_ring_shaft=5.0, outer_ring_housing=8.0, inner_ring_lubricant=1.0, outer_ring_lubricant=1.0,
                         shaft_ambient=0.8, housing_ambient=2.0, oil_flow=0.5, ambient_temperature=AMBIENT,
@@ -65,6 +65,7 @@ def test_the_fixed_point_balances_energy_and_is_the_loop_of_guesses():
     assert float(state.temperatures[0]) > float(state.temperatures[1]) > AMBIENT
 
 
+@pytest.mark.slow
 def test_a_bearing_at_rest_stays_at_the_ambient_temperature():
     """No speed, no heat: every free node at the held temperatures' mix (the oil inlet 20 K above the
     ambient warms the lubricant), the clearance the cold mounted one's."""

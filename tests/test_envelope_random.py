@@ -429,7 +429,8 @@ EXAMPLES = ("aero_angular_contact", "mounted_6411", "gearbox_6411_ratings", "cyl
             "tapered_roller_bearing", "cage_b7005", "starved_roller", "spindle_pair")
 SI_OF = {"length": "mm", "force": "N", "moment": "N*m", "angle": "deg", "angular_speed": "rpm", "pressure": "MPa",
          "viscosity": "Pa*s", "kinematic_viscosity": "mm^2/s", "density": "kg/m^3", "inverse_pressure": "1/Pa",
-         "stiffness": "N/m", "time": "s", "temperature": "degC", "thermal_expansion": "1/K", "dimensionless": ""}
+         "stiffness": "N/m", "time": "s", "temperature": "degC", "thermal_expansion": "1/K", "dimensionless": "",
+         "temperature_difference": "K", "volume_flow": "l/min", "heat_transfer_coefficient": "W/(m^2*K)"}
 
 
 SHOULDERS = ('bearing.inner_shoulder_diameter="78 mm"', 'bearing.outer_shoulder_diameter="117 mm"')

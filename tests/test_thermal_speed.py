@@ -179,6 +179,7 @@ def test_a_6205_scenes_ratings_are_the_heat_balances(tmp_path):
     assert float(values["thermal_speed.safe_speed"]) > 0 and float(values["thermal_speed.oil_heat_flow"]) == 0.0
 
 
+@pytest.mark.slow
 def test_at_the_thermally_safe_speed_the_friction_power_is_the_heat_flow(tmp_path):
     """Run again at n = n_θ with effects.friction = "palmgren" (the same f₀, f₁, P₁, ν): its friction
     power M ω equals DIN 732's heat flow Φ (1e-9) — the rating and the friction effect agree."""
@@ -188,6 +189,7 @@ def test_at_the_thermally_safe_speed_the_friction_power_is_the_heat_flow(tmp_pat
     assert float(again["friction.power"]) == pytest.approx(float(first["thermal_speed.heat_flow"]), rel=1e-9)
 
 
+@pytest.mark.slow
 def test_circulating_oil_adds_its_heat_flow(tmp_path):
     """With 0.5 l/min warmed by 10 K: Φ_L = 0.0286 kW/(l/min·K) · 0.5 · 10 = 143 W more, a higher n_θ."""
     dry = _run(tmp_path).values
@@ -196,6 +198,7 @@ def test_circulating_oil_adds_its_heat_flow(tmp_path):
     assert float(oiled.values["thermal_speed.safe_speed"]) > float(dry["thermal_speed.safe_speed"])
 
 
+@pytest.mark.slow
 def test_running_above_the_thermally_safe_speed_is_warned(tmp_path):
     """At 20 000 r/min, above the 6205's n_θ: a warning naming DIN 732's speed."""
     errors, warnings = _run(tmp_path, overrides=['operating.inner_speed="20000 rpm"']).problems
@@ -235,6 +238,7 @@ def _shaft_values(tmp_path, text):
     return run_model(build_model(load_scene(str(path))), progress=False)
 
 
+@pytest.mark.slow
 def test_each_bearing_on_a_shaft_gets_its_reference_speed(tmp_path, capsys):
     """gearbox_shaft's two bearings written as designation = "6411" (d 55, D 140, B 33 mm): each one's
     n_θr is the heat balance of its own ISO 76 C₀, d, D, B with the kind's factors (1e-12), and the

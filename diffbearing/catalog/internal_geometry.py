@@ -41,6 +41,7 @@ FILLING_ANGLE = 3.4  # rad: the arc a Conrad assembly fills
 CAGE_FILL = 0.88  # of the balls that would touch: an angular contact bearing's typical count
 GROOVE_RATIOS = (0.52, 0.53)  # f_i, f_o
 PRIOR_WEIGHT = 0.2  # of (ln D_w/(share (D − d)))² in the fit to the ratings
+CANDIDATE_BLOCK = 1024  # the fit's candidate sets are rated in blocks of this many
 # an angular contact ball bearing's free contact angle [deg] by the suffix its designation begins with
 # (SKF's, FAG's, NSK's and Timken's designation systems), the longest matching first
 CONTACT_ANGLES = {"A5": 25.0, "AC": 25.0, "A": 30.0, "B": 40.0, "C": 15.0}
@@ -114,9 +115,10 @@ def contact_angle_of_suffix(suffix: str) -> float | None:
 
 
 def _ratings(balls, ball_diameter, pitch_diameter, contact_angle):
-    """ISO 281 C_r and ISO 76 C₀r [N] of a single-row ball set."""
-    return (float(life.ball_dynamic_load_rating(balls, ball_diameter, pitch_diameter, contact_angle)),
-            float(static_safety.ball_static_load_rating(balls, ball_diameter, pitch_diameter, contact_angle)))
+    """ISO 281 C_r and ISO 76 C₀r [N] of a single-row ball set (floats, or arrays of candidate sets)."""
+    dynamic = np.asarray(life.ball_dynamic_load_rating(balls, ball_diameter, pitch_diameter, contact_angle))
+    static = np.asarray(static_safety.ball_static_load_rating(balls, ball_diameter, pitch_diameter, contact_angle))
+    return (float(dynamic), float(static)) if dynamic.ndim == 0 else (dynamic, static)
 
 
 def estimate_ball_set(bore, outside_diameter, dynamic_load_rating=None, static_load_rating=None,
@@ -134,15 +136,19 @@ def estimate_ball_set(bore, outside_diameter, dynamic_load_rating=None, static_l
     if dynamic_load_rating is None or static_load_rating is None:
         ball = float(INCH_BALLS[np.argmin(np.abs(INCH_BALLS - typical))])
         return BallSet(proportions.typical_count(ball, pitch), ball, pitch, *GROOVE_RATIOS, proportions.how)
-    best = None
-    for ball in INCH_BALLS[(INCH_BALLS >= 0.2 * section) & (INCH_BALLS <= 0.45 * section)]:
-        for balls in range(5, proportions.most_balls(ball, pitch) + 1):
-            dynamic, static = _ratings(balls, ball, pitch, contact_angle)
-            misfit = (np.log(dynamic_load_rating / dynamic) ** 2 + np.log(static_load_rating / static) ** 2
-                      + PRIOR_WEIGHT * np.log(ball / typical) ** 2)
-            if best is None or misfit < best[0]:
-                best = (misfit, balls, float(ball), dynamic, static)
-    _, balls, ball, dynamic, static = best
+    # every candidate (D_w, Z) at once: one evaluation of each rating over the arrays
+    candidates = [(ball, balls) for ball in INCH_BALLS[(INCH_BALLS >= 0.2 * section) & (INCH_BALLS <= 0.45 * section)]
+                  for balls in range(5, proportions.most_balls(ball, pitch) + 1)]
+    diameters, counts = (np.array(column, float) for column in zip(*candidates))
+    # padded to a multiple of `CANDIDATE_BLOCK`, so that the ratings' array programs keep a few shapes
+    padded = -len(counts) % CANDIDATE_BLOCK
+    dynamic, static = (np.asarray(rating)[:len(counts)] for rating in _ratings(
+        np.pad(counts, (0, padded), constant_values=5.0), np.pad(diameters, (0, padded), constant_values=typical),
+        pitch, contact_angle))
+    misfit = (np.log(dynamic_load_rating / dynamic) ** 2 + np.log(static_load_rating / static) ** 2
+              + PRIOR_WEIGHT * np.log(diameters / typical) ** 2)
+    best = int(np.argmin(misfit))  # the first of equal misfits, as the loop over sizes, then counts, found it
+    balls, ball, dynamic, static = int(counts[best]), float(diameters[best]), float(dynamic[best]), float(static[best])
     return BallSet(balls, ball, pitch, *GROOVE_RATIOS,
                    f"from the catalogue's C_r, C₀r (ISO 281, ISO 76 give {dynamic / 1e3:.3g}, {static / 1e3:.3g} kN)")
 

@@ -69,7 +69,7 @@ def bearing_network(paths: ThermalPaths) -> ThermalNetwork:
     return ThermalNetwork(NODES, EDGES, (5, 6), conductances, held)
 
 
-class Oil(eqx.Module):
+class WaltherLine(eqx.Module):
     """The lubricant's Walther line: kinematic viscosities at 40 °C and 100 °C [m²/s]."""
 
     viscosity_40: jax.Array
@@ -116,7 +116,7 @@ def bearing_at(bearing: BallBearing, mounting: Mounting, operating: Operating, t
     return with_radial_clearance(bearing, clearance), clearance
 
 
-def bearing_heat(temperatures, bearing: BallBearing, mounting: Mounting, operating: Operating, oil: Oil,
+def bearing_heat(temperatures, bearing: BallBearing, mounting: Mounting, operating: Operating, oil: WaltherLine,
                  factors: PalmgrenFactors, model: ball_equilibrium.BallModel):
     """(heat sources [W] at `NODES`, the clearance, the equilibrium, viscous and load powers [W]) of the
     bearing at the node `temperatures` [K]: its equilibrium at that clearance, Palmgren's moments at
@@ -150,7 +150,7 @@ def _residual(free, args):
     return free - node_temperatures(bearing_network(paths), sources)[:FREE]
 
 
-def solve_bearing_thermal(bearing: BallBearing, mounting: Mounting, operating: Operating, oil: Oil,
+def solve_bearing_thermal(bearing: BallBearing, mounting: Mounting, operating: Operating, oil: WaltherLine,
                           factors: PalmgrenFactors, paths: ThermalPaths,
                           model: ball_equilibrium.BallModel = ball_equilibrium.BallModel()) -> ThermalState:
     """The bearing's thermal–mechanical steady state (module docstring). `mounting` holds the fits
