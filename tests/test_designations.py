@@ -238,19 +238,30 @@ def test_every_ball_designation_has_a_ball_set_that_fits_its_rings():
         assert (normal_clearance(entry.bore) is None) == (entry.bore > 0.1 or entry.bore <= 2.5e-3), entry
 
 
-def test_a_scene_of_a_designation_alone_runs_with_its_estimates_marked(capsys, tmp_path):
-    """A [bearing] table holding only type and designation = "6205": the run converges with the
-    published 9 × 7.938 mm balls, d_m 38.5 mm, f 0.52/0.53 and ISO 5753-1's CN middle, 12.5 µm (5–20 µm),
-    each named ESTIMATED in the report and the JSON."""
-    path = tmp_path / "only.toml"
-    path.write_text('[bearing]\ntype = "deep_groove_ball"\ndesignation = "6205"\n[operating]\ninner_speed = "3000 rpm"\n'
-                    'force = ["3 kN", "0 N", "0.5 kN"]\n[effects]\nlife = true\n')
+BALL_SET = ("balls", "ball_diameter", "pitch_diameter", "inner_groove_ratio", "outer_groove_ratio")
+
+
+def _runs_with_estimates(capsys, tmp_path, text: str, keys) -> Path:
+    """Run the scene `text` through the CLI: exit 0, each [bearing] key of `keys` named ESTIMATED in
+    the JSON's "derived" and listed in the report; the scene's path."""
+    path = tmp_path / "estimated.toml"
+    path.write_text(text)
     document = tmp_path / "out.json"
     assert cli.main(["run", str(path), "--json", str(document)]) == 0
     out = capsys.readouterr().out
     derived = json.loads(document.read_text())["derived"]
-    for key in ("balls", "ball_diameter", "pitch_diameter", "inner_groove_ratio", "outer_groove_ratio", "radial_clearance"):
+    for key in keys:
         assert derived[f"bearing.{key}"].startswith("ESTIMATED") and f"bearing.{key} = " in out
+    return path
+
+
+def test_a_scene_of_a_designation_alone_runs_with_its_estimates_marked(capsys, tmp_path):
+    """A [bearing] table holding only type and designation = "6205": the run converges with the
+    published 9 × 7.938 mm balls, d_m 38.5 mm, f 0.52/0.53 and ISO 5753-1's CN middle, 12.5 µm (5–20 µm),
+    each named ESTIMATED in the report and the JSON."""
+    path = _runs_with_estimates(capsys, tmp_path, '[bearing]\ntype = "deep_groove_ball"\ndesignation = "6205"\n[operating]\n'
+                                'inner_speed = "3000 rpm"\nforce = ["3 kN", "0 N", "0.5 kN"]\n[effects]\nlife = true\n',
+                                BALL_SET + ("radial_clearance",))
     scene = load_scene(str(path))
     assert (scene.values["bearing.balls"], scene.values["bearing.radial_clearance"]) == (9, pytest.approx(12.5e-6))
 
@@ -347,17 +358,11 @@ def test_an_angular_contact_designation_alone_runs_with_its_angle_marked(capsys,
     """A [bearing] table of type, designation = "7218 B" and Timken's ratings: the run converges with
     Harris's 16 × 22.225 mm balls and the suffix's 40°, each named ESTIMATED in the report and JSON;
     its free contact angle is the suffix's."""
-    path = tmp_path / "ac.toml"
-    path.write_text('[bearing]\ntype = "angular_contact_ball"\ndesignation = "7218 B"\ndynamic_load_rating = "106.6 kN"\n'
-                    'static_load_rating = "93.7 kN"\n[operating]\ninner_speed = "3000 rpm"\nforce = ["5 kN", "0 N", "8 kN"]\n'
-                    '[effects]\nlife = true\n')
-    document = tmp_path / "out.json"
-    assert cli.main(["run", str(path), "--json", str(document)]) == 0
-    out = capsys.readouterr().out
-    derived = json.loads(document.read_text())["derived"]
-    for key in ("balls", "ball_diameter", "pitch_diameter", "inner_groove_ratio", "outer_groove_ratio", "contact_angle"):
-        assert derived[f"bearing.{key}"].startswith("ESTIMATED") and f"bearing.{key} = " in out
-    assert "radial_clearance" not in " ".join(derived)
+    path = _runs_with_estimates(capsys, tmp_path, '[bearing]\ntype = "angular_contact_ball"\ndesignation = "7218 B"\n'
+                                'dynamic_load_rating = "106.6 kN"\nstatic_load_rating = "93.7 kN"\n[operating]\n'
+                                'inner_speed = "3000 rpm"\nforce = ["5 kN", "0 N", "8 kN"]\n[effects]\nlife = true\n',
+                                BALL_SET + ("contact_angle",))
+    assert "radial_clearance" not in " ".join(load_scene(str(path)).derived)
     scene = load_scene(str(path))
     assert (scene.values["bearing.balls"], scene.values["bearing.contact_angle"]) == (16, pytest.approx(np.radians(40)))
 
