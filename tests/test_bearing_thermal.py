@@ -38,6 +38,7 @@ def _operating(rpm=3000.0):
 solve = jax.jit(bt.solve_bearing_thermal)
 
 
+@pytest.mark.slow
 def test_the_fixed_point_balances_energy_and_is_the_loop_of_guesses():
     """At 3000 r/min under 8 kN: converged; the heat leaving at the ambient and the oil inlet equals the
     friction power (1e-10); the temperatures are the network's for the heat they give (1e-9 K) and the

@@ -79,10 +79,11 @@ def test_a_convective_fin_as_a_chain_of_nodes(segments):
     assert -base_flow / 50.0 == pytest.approx(exact, rel=2.0 / segments**2)
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(st.integers(2, 8), st.integers(1, 3), st.randoms(use_true_random=False))
 def test_the_energy_balance_holds_over_random_networks(free, held, rng):
-    """A random connected network (a spanning chain plus random extra edges, conductances 0.01–100 W/K,
+    """40 random connected networks (a spanning chain plus random extra edges, conductances 0.01–100 W/K,
     sources −50–200 W, held temperatures 0–150 °C): the heat leaving at the held nodes sums to the heat
     generated, and every free node balances, to round-off (1e-12 of the largest G T and Q)."""
     count = free + held

@@ -34,9 +34,13 @@ HR1 = {
 DOUBTFUL = ("6016", "32210-A")
 
 
+reference_speed = jax.jit(ts.thermal_reference_speed, static_argnums=6)  # one program for every case
+safe_speed = jax.jit(ts.thermally_safe_speed)
+
+
 def _reference_rpm(d, D, width, static_kn, f0, coefficient, exponent):
     f1 = ts.reference_friction_factor(coefficient, exponent)
-    rating = ts.thermal_reference_speed(f0, f1, static_kn * 1e3, d * 1e-3, D * 1e-3, width * 1e-3)
+    rating = reference_speed(f0, f1, static_kn * 1e3, d * 1e-3, D * 1e-3, width * 1e-3, "radial")
     assert bool(rating.converged)
     return float(rating.speed / ts.RPM)
 
@@ -133,7 +137,7 @@ def test_the_reference_speeds_derivatives_are_central_differences():
 def test_the_heat_balance_converges_over_its_envelope(f0, f1, viscosity, pitch, load, flow):
     """Random f₀, f₁, ν, d_m, P₁, Φ over catalogue ranges: the root converges, positive and finite, and
     its powers sum to Φ (1e-9)."""
-    rating = ts.thermally_safe_speed(f0, f1, load, viscosity, pitch, flow)
+    rating = safe_speed(f0, f1, load, viscosity, pitch, flow)
     assert bool(rating.converged) and float(rating.speed) > 0 and np.isfinite(float(rating.speed))
     assert float(rating.viscous_power + rating.load_power) == pytest.approx(flow, rel=1e-9)
 
