@@ -144,6 +144,7 @@ def test_the_shafts_derivative_through_a_toy_bearing_matches_central_differences
                                           step=1e-5, rtol=1e-6)
 
 
+@pytest.mark.slow
 def test_a_toy_bearing_beside_a_ball_bearing_on_a_flexible_shaft():
     """A mixed shaft (a spring and a deep-groove ball bearing) as a Timoshenko beam: it converges
     and balances the radial load, and as the beam stiffens (0.04, 0.3, 0.6 m solid shafts) its

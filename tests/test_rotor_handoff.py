@@ -64,6 +64,7 @@ def test_exports_carry_the_matrices_with_units(scene, table, tmp_path):
         stiffness_over_speed(dataclasses.replace(scene, sweep={"operating.inner_speed": [0.0]}), SPEEDS)
 
 
+@pytest.mark.slow
 def test_ross_rotor_on_two_diffbearing_bearings(scene, table):
     """A 0.5 m, Ø40 mm steel shaft with a 7.8 kg disk on two 6208s: ROSS's bearing elements hold the
     exact k_xx, k_xy, k_yx, k_yy at the given speeds (its spline, 1e-6); the static analysis carries
