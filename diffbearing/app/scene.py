@@ -12,7 +12,6 @@ from pathlib import Path
 
 from ..catalog.designations import boundary_dimensions
 from ..catalog.internal_geometry import GEOMETRY_ESTIMATES
-from .adapters.designation import ENTRY_DERIVED
 from .units import to_si
 from .schema import lookup, validate
 
@@ -220,11 +219,6 @@ def load_scene(path: str | None = None, overrides=()) -> Scene:
     document = apply_overrides(original, [parse_override(text) for text in overrides])
     derived = expand_designation(document)
     values = validate(document)
-    for key in derived:  # a [[bearings]] entry's: named in the entry (its keys need not be read)
-        where, _, name = key.partition(".")
-        if where != "bearing":
-            entry = values["bearings"][_entry_index(where)]
-            entry[ENTRY_DERIVED] = (*entry.get(ENTRY_DERIVED, ()), f"bearing.{name}")
     sweep = document.get("sweep")
     return Scene(title=values.get("title", Path(source).stem), values=values, sweep=sweep, source=source,
                  switched=_switched_effects(original, document), duty=document.get("duty"), derived=derived)

@@ -10,9 +10,6 @@ from ..registry import Adapter, Key, quantity, register
 # the keys the scene layer reads (app/scene.py), not an input builder: in [bearing] and in a shaft's
 # [[bearings]] entries
 SCENE_LAYER_KEYS = ("bearing.designation", "bearing.static_load_rating")
-# a [[bearings]] entry's field naming the keys its designation set (the scene layer's, after
-# validation): like [bearing]'s (`Scene.derived`), they need not be read
-ENTRY_DERIVED = "derived"
 
 ADAPTER = register(Adapter(
     name="designation",

@@ -35,7 +35,7 @@ from .shaft_layout import ShaftLayout, check_dynamic_ratings, layout_supports, m
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import shoulder_checks, validity_errors
 from ..bearings.roller_bearing import ADAPTER as ROLLER_BEARING_ADAPTER
-from ..designation import ENTRY_DERIVED, SCENE_LAYER_KEYS
+from ..designation import SCENE_LAYER_KEYS
 
 # the [fidelity] keys of the ball and roller bearing models, read by the shaft's block for every bearing
 FIDELITY = {key: dataclasses.replace(adapter.keys[key], read_by=("shaft",))
@@ -148,8 +148,7 @@ def _layout(v, built) -> dict:
                 shoulders[-1] = mounting.shoulders(reads, bearings[-1])
             except ValueError as error:
                 raise ValueError(f"bearings[{index}]: {str(error).replace('bearing.', '')}") from None
-        unread = sorted(set(entry) - reads.asked - set(PLACEMENT) - set(SCENE_LAYER_KEYS) - {ENTRY_DERIVED}
-                        - set(entry.get(ENTRY_DERIVED, ())))
+        unread = sorted(set(entry) - reads.asked - set(PLACEMENT) - set(SCENE_LAYER_KEYS))
         if unread:
             raise ValueError(f"bearings[{index}]: key {unread[0].removeprefix('bearing.')!r} is not read by a "
                              "bearing on a shaft")
