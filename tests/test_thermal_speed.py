@@ -131,6 +131,17 @@ def test_the_reference_speeds_derivatives_are_central_differences():
         assert_jvp_matches_central_difference(speed, point, direction, step, rtol=1e-6)
 
 
+def test_the_thermally_safe_speeds_derivatives_are_central_differences():
+    """∂n_θ/∂(f₀, f₁, P₁, ν, d_m, Φ) through the implicit root against central differences (1e-6), at
+    KRW's NJ 220 E."""
+    def speed(x):
+        return ts.thermally_safe_speed(*x).speed
+
+    point = jnp.array([2.0, 3e-4, 30e3, 27e-6, 0.14, 840.0])
+    for index, step in enumerate((1e-4, 1e-8, 1e-1, 1e-9, 1e-6, 1e-2)):
+        assert_jvp_matches_central_difference(speed, point, jnp.zeros(6).at[index].set(1.0), step, rtol=1e-6)
+
+
 @settings(max_examples=60, deadline=None)
 @given(f0=st.floats(0.5, 10.0), f1=st.floats(1e-5, 2e-3), viscosity=st.floats(2e-6, 500e-6),
        pitch=st.floats(0.005, 1.0), load=st.floats(0.0, 1e6), flow=st.floats(1e-2, 1e5))
@@ -281,3 +292,14 @@ def test_a_thrust_bearing_on_a_shaft_is_rated_under_the_thrust_conditions(tmp_pa
     assert float(values["bearings.thermal_speed.reference_heat_flow"][2]) == pytest.approx(
         20e3 * np.pi / 2 * (0.07**2 - 0.05**2), rel=1e-12)
     assert float(values["bearings.thermal_speed.reference_speed"][2]) == pytest.approx(float(rating.speed), rel=1e-12)
+
+
+def test_a_shaft_bearings_width_outside_its_envelope_exits_2(capsys, tmp_path):
+    """A [[bearings]] entry's width of −1 mm with effects.thermal_speed: exit 2 naming bearings[0].width."""
+    from .helpers import assert_exits_2_naming, example_scene
+
+    text = open(example_scene("gearbox_shaft")).read().replace('bore = "55 mm"\nouter_diameter = "140 mm"\n',
+                                                               'designation = "6411"\nwidth = "-1 mm"\n', 1)
+    path = tmp_path / "bad.toml"
+    path.write_text(text.replace("life = true\n", "life = true\nthermal_speed = true\n"))
+    assert_exits_2_naming(capsys, ["run", str(path)], "bearings[0].width must be")

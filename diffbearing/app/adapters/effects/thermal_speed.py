@@ -63,6 +63,9 @@ def _shaft_reference(v, built) -> dict:
             if value is None and (name != "width" or arrangement == "radial"):
                 raise ValueError(f"bearings[{number}]: {name} is needed by effects.thermal_speed (ISO 15312's "
                                  "reference surface)")
+        if arrangement == "radial":
+            check_range(f"bearings[{number}].width", width, low=0.0, high=outside, unit=" m",
+                        why="positive, below the outer diameter (a tapered bearing's total width T as total_width)")
         _, f0, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
         found.append({"f0": f0, "f1": thermal_speed.reference_friction_factor(coefficient, exponent, arrangement),
                       "bore": bore, "outside": outside, "width": width if width is not None else 0.0})
