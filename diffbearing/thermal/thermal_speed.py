@@ -40,6 +40,12 @@ REFERENCE_CONDITIONS = {"radial": (0.05, 12e-6, 16e3, -0.34), "thrust": (0.02, 2
 AREA_BREAK = 0.05  # m² (50 000 mm²)
 # the friction kinds (`friction_torque.PALMGREN_CONSTANTS`) rated under the thrust conditions; all others radial
 THRUST_KINDS = ("thrust_ball", "cylindrical_roller_thrust")
+
+
+def reference_arrangement(kind: str) -> str:
+    """The reference conditions ("radial" or "thrust", `REFERENCE_CONDITIONS`) of a friction kind."""
+    return "thrust" if kind in THRUST_KINDS else "radial"
+
 REFERENCE_OUTER_RING_TEMPERATURE = 343.15  # K (70 °C)
 REFERENCE_AMBIENT_TEMPERATURE = 293.15  # K (20 °C)
 OIL_HEAT_PER_FLOW = 0.0286e3 / (1e-3 / 60.0)  # W per (m³/s · K): DIN 732's 0.0286 kW/(l/min·K), ρc of mineral oil

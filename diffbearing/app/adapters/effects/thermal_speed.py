@@ -58,7 +58,7 @@ def _shaft_reference(v, built) -> dict:
         kind = support.friction_kind("palmgren")
         if kind is None:
             raise ValueError(f"effects.thermal_speed: bearings[{number}] ({layout.kinds[number]}) has no Palmgren factors")
-        arrangement = "thrust" if kind in thermal_speed.THRUST_KINDS else "radial"
+        arrangement = thermal_speed.reference_arrangement(kind)
         for name, value in (("bore", bore), ("outer_diameter", outside), ("width", width)):
             if value is None and (name != "width" or arrangement == "radial"):
                 raise ValueError(f"bearings[{number}]: {name} is needed by effects.thermal_speed (ISO 15312's "
@@ -76,7 +76,7 @@ def _shaft_reference_speeds(inputs: dict, settings: dict, results: dict) -> dict
     speeds, flows, ratings, converged = [], [], [], []
     for support, reference in zip(layout_supports(inputs["shaft"], settings), inputs["thermal_reference"]):
         rating = support.static_load_rating()
-        arrangement = "thrust" if support.friction_kind("palmgren") in thermal_speed.THRUST_KINDS else "radial"
+        arrangement = thermal_speed.reference_arrangement(support.friction_kind("palmgren"))
         found = thermal_speed.thermal_reference_speed(reference["f0"], reference["f1"], rating, reference["bore"],
                                                       reference["outside"], reference["width"], arrangement)
         speeds.append(found.speed)
