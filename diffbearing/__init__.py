@@ -204,12 +204,16 @@ from .systems.static_capacity import (
     capacity_point as capacity_point,
 )
 from .thermal.bearing_thermal import (
+    AbstractHeatedBearing as AbstractHeatedBearing,
+    BearingHeat as BearingHeat,
+    MountedBallBearing as MountedBallBearing,
     PalmgrenFactors as PalmgrenFactors,
     ThermalPaths as ThermalPaths,
     ThermalState as ThermalState,
     WaltherLine as WaltherLine,
-    solve_bearing_thermal as solve_bearing_thermal,
+    solve_thermal as solve_thermal,
 )
+from .thermal.pair_thermal import MountedBallPair as MountedBallPair
 from .thermal.thermal_network import (
     ThermalNetwork as ThermalNetwork,
     boundary_heat_flows as boundary_heat_flows,

@@ -35,7 +35,12 @@ def _operating(rpm=3000.0):
                      misalignment=[0.0, 0.0])
 
 
-solve = jax.jit(bt.solve_bearing_thermal)
+def _mounted(mounting=MOUNTING, operating=None):
+    return bt.MountedBallBearing(BEARING, mounting, _operating() if operating is None else operating, OIL, FACTORS)
+
+
+solve = jax.jit(bt.solve_thermal)
+heat = jax.jit(lambda heated, temperatures: heated.heat(temperatures).sources)
 
 
 @pytest.mark.slow
@@ -45,20 +50,20 @@ def test_the_fixed_point_balances_energy_and_is_the_loop_of_guesses():
     limit of Picard's loop T ← T_network(Q(T)) from the ambient (1e-7 K); the clearance is the mounting
     model's at the solved ring, shaft and housing temperatures (1e-15 m)."""
     operating = _operating()
-    state = solve(BEARING, MOUNTING, operating, OIL, FACTORS, PATHS)
+    heated = _mounted(operating=operating)
+    state = solve(heated, PATHS)
     assert bool(state.converged)
     power = float(state.viscous_power + state.load_power)
     assert float(jnp.sum(state.boundary_heat)) == pytest.approx(power, rel=1e-10)
     network = bt.bearing_network(PATHS)
-    heat = jax.jit(bt.bearing_heat, static_argnums=6)
-    sources = heat(state.temperatures, BEARING, MOUNTING, operating, OIL, FACTORS, bt.ball_equilibrium.BallModel())[0]
+    sources = heat(heated, state.temperatures)
     np.testing.assert_allclose(node_temperatures(network, sources)[:bt.FREE], state.temperatures[:bt.FREE], atol=1e-9)
     temperatures = jnp.full(7, AMBIENT).at[6].set(AMBIENT + 20.0)
     for _ in range(60):
-        sources = heat(temperatures, BEARING, MOUNTING, operating, OIL, FACTORS, bt.ball_equilibrium.BallModel())[0]
+        sources = heat(heated, temperatures)
         temperatures = node_temperatures(network, sources)
     np.testing.assert_allclose(temperatures, state.temperatures, atol=1e-7)
-    mounted = bt._mounted(MOUNTING, state.temperatures)
+    mounted = bt.mounted_at(MOUNTING, state.temperatures)
     change = operating_clearance_change(mounted, 0.055, 0.0975 - 0.0269875, 0.0975 + 0.0269875, 0.14, 0.0269875,
                                         BEARING_STEEL, operating.inner_speed, 0.0).change
     assert float(state.clearance) == pytest.approx(float(radial_clearance(BEARING) + change), abs=1e-15)
@@ -70,7 +75,7 @@ def test_the_fixed_point_balances_energy_and_is_the_loop_of_guesses():
 def test_a_bearing_at_rest_stays_at_the_ambient_temperature():
     """No speed, no heat: every free node at the held temperatures' mix (the oil inlet 20 K above the
     ambient warms the lubricant), the clearance the cold mounted one's."""
-    state = solve(BEARING, MOUNTING, _operating(0.0), OIL, FACTORS, PATHS)
+    state = solve(_mounted(operating=_operating(0.0)), PATHS)
     assert bool(state.converged) and float(state.viscous_power + state.load_power) == 0.0
     zero = node_temperatures(bt.bearing_network(PATHS), jnp.zeros(7))
     np.testing.assert_allclose(state.temperatures, zero, atol=1e-9)
@@ -86,7 +91,7 @@ def test_derivatives_through_the_fixed_point_are_central_differences():
         paths = bt.ThermalPaths(5.0, 8.0, 1.0, 1.0, 0.8, x[0], 0.5, AMBIENT, AMBIENT + 20.0)
         mounting = Mounting(shaft_interference=x[1], housing_interference=-5e-6, reference_temperature=AMBIENT,
                             housing=SEAT_MATERIALS["cast_iron"][0], housing_expansion=SEAT_MATERIALS["cast_iron"][1])
-        state = bt.solve_bearing_thermal(BEARING, mounting, _operating(x[2]), OIL, FACTORS, paths)
+        state = bt.solve_thermal(_mounted(mounting, _operating(x[2])), paths)
         return jnp.stack([state.temperatures[0], state.clearance * 1e6])
 
     point = jnp.array([2.0, 15e-6, 3000.0])
@@ -104,6 +109,6 @@ def test_thermal_runaway_is_reported_not_a_nan():
                                                                "inner_ring_lubricant", "outer_ring_lubricant",
                                                                "shaft_ambient", "housing_ambient", "oil_flow")),
                            AMBIENT, AMBIENT + 20.0)
-    state = solve(BEARING, MOUNTING, _operating(), OIL, FACTORS, weak)
+    state = solve(_mounted(), weak)
     assert not bool(state.converged)
     assert all(bool(jnp.all(jnp.isfinite(leaf))) for leaf in jax.tree.leaves(state))

@@ -1,5 +1,5 @@
-"""The thermal–mechanical steady state of a radial ball bearing in its mounting, solved as one fixed
-point: the friction heat warms the rings, shaft, housing and lubricant through a thermal network
+"""The thermal–mechanical steady state of a ball bearing (or a preloaded pair, `pair_thermal`) in its
+mounting, solved as one fixed point: the friction heat warms the rings, shaft, housing and lubricant through a thermal network
 (`thermal_network`); their temperatures set the operating clearance (the mounting model,
 `systems.operating_clearance`) and the lubricant's viscosity (its Walther line); the clearance and
 the load set the ball loads (`ball_equilibrium`), and with the viscosity the friction heat.
@@ -18,22 +18,25 @@ angular contact pair's bearings), not the internal preload of a single radial be
 contact-level loss model would see it.
 
 The unknowns are the five free temperatures T; the residual is R(T) = T − T_network(Q(T)), Q the
-heat of the bearing at the state T gives. Newton (optimistix) on R with the implicit derivative of
+heat of the bearing at the state T gives (`AbstractHeatedBearing.heat`: one bearing,
+`MountedBallBearing`; a pair, `pair_thermal.MountedBallPair`). Newton (optimistix) on R with the implicit derivative of
 the root: ∂T/∂p = −(∂R/∂T)⁻¹ ∂R/∂p, through the inner equilibrium solve's own implicit derivative.
 Where no steady state exists inside the model (thermal runaway: a preloaded bearing whose warming
 closes its clearance faster than the paths carry the heat away), or the temperatures leave the
 mounting model's −60…250 °C, `converged` is False and the values stay finite.
 """
 
+import abc
+
 import equinox as eqx
 import jax
 import jax.numpy as jnp
-import optimistix as optx
 
 from ..bearings.ball import ball_equilibrium
 from ..film.viscosity_temperature import walther_viscosity
 from ..friction import friction_torque
-from ..params import BallBearing, Operating, radial_clearance, with_radial_clearance
+from ..params import BallBearing, Operating, radial_clearance
+from ..newton import implicit_root, newton
 from ..ratings import static_safety
 from ..systems.operating_clearance import Mounting, operating_clearance_change
 from .thermal_network import ThermalNetwork, boundary_heat_flows, node_temperatures
@@ -42,7 +45,8 @@ NODES = ("inner_ring", "outer_ring", "lubricant", "shaft", "housing", "ambient",
 FREE = 5  # the first five nodes are free
 EDGES = ((0, 3), (1, 4), (0, 2), (1, 2), (3, 5), (4, 5), (2, 6))
 TEMPERATURE_RANGE = (213.15, 523.15)  # K: the mounting model's (−60 … 250 °C)
-SOLVER = optx.Newton(rtol=1e-10, atol=1e-8)
+MAX_STEPS = 60
+RESIDUAL_TOLERANCE = 1e-6  # K: the largest |R| of a converged state
 
 
 class ThermalPaths(eqx.Module):
@@ -84,14 +88,38 @@ class PalmgrenFactors(eqx.Module):
     exponent: float = eqx.field(static=True)
 
 
+class BearingHeat(eqx.Module):
+    """What a bearing's mechanics give at one set of node temperatures: the heat sources [W] at
+    `NODES`, the operating diametral clearance [m], the viscous and load-dependent friction powers
+    [W], the mechanical state (the type's equilibrium) and whether that state converged."""
+
+    sources: jax.Array
+    clearance: jax.Array
+    viscous_power: jax.Array
+    load_power: jax.Array
+    mechanics: eqx.Module
+    converged: jax.Array
+
+
+class AbstractHeatedBearing(eqx.Module):
+    """The mechanical side of the fixed point (module docstring): a bearing (or set) in its
+    mounting whose heat at the node temperatures `heat` gives. `MountedBallBearing` here,
+    `pair_thermal.MountedBallPair` for a preloaded pair."""
+
+    @abc.abstractmethod
+    def heat(self, temperatures) -> BearingHeat:
+        """The heat and state at the node `temperatures` [K] (all of `NODES`)."""
+
+
 class ThermalState(eqx.Module):
     """The solved state (SI): every node's temperature (`NODES`), the operating diametral clearance,
-    the equilibrium at it, the viscous and load-dependent friction powers, the heat leaving at the
-    ambient and the oil inlet, the residual's largest |R| [K], whether it converged inside the model."""
+    the mechanical state at it (`BearingHeat.mechanics`), the viscous and load-dependent friction
+    powers, the heat leaving at the ambient and the oil inlet, the residual's largest |R| [K],
+    whether it converged inside the model."""
 
     temperatures: jax.Array
     clearance: jax.Array
-    equilibrium: ball_equilibrium.Equilibrium
+    mechanics: eqx.Module
     viscous_power: jax.Array
     load_power: jax.Array
     boundary_heat: jax.Array
@@ -99,7 +127,8 @@ class ThermalState(eqx.Module):
     converged: jax.Array
 
 
-def _mounted(mounting: Mounting, temperatures) -> Mounting:
+def mounted_at(mounting: Mounting, temperatures) -> Mounting:
+    """`mounting` with its ring, shaft and housing temperatures those of the nodes [K]."""
     return eqx.tree_at(lambda m: (m.inner_ring_temperature, m.outer_ring_temperature, m.shaft_temperature,
                                   m.housing_temperature), mounting,
                        (temperatures[0], temperatures[1], temperatures[3], temperatures[4]))
@@ -107,35 +136,59 @@ def _mounted(mounting: Mounting, temperatures) -> Mounting:
 
 def bearing_at(bearing: BallBearing, mounting: Mounting, operating: Operating, temperatures):
     """(the bearing at the operating clearance its mounting leaves at the node `temperatures`, that
-    clearance [m])."""
+    clearance [m]). The change ΔG shifts the groove centres' radial distance by −ΔG/2 (the
+    interference ι − ΔG) and keeps the free contact angle: the same rings as the contact angle
+    arccos(1 − G/(2 B D_w)) at a clamped axial position (`bearing_set.clamped_offset`), without that
+    angle's infinite slope at G = 0, through which a warming bearing's clearance may pass."""
     pitch, ball = bearing.pitch_diameter, bearing.ball_diameter
-    change = operating_clearance_change(_mounted(mounting, temperatures), bearing.bore, pitch - ball, pitch + ball,
+    change = operating_clearance_change(mounted_at(mounting, temperatures), bearing.bore, pitch - ball, pitch + ball,
                                         bearing.outer_diameter, ball, bearing.ring_material, operating.inner_speed,
-                                        operating.outer_speed)
-    clearance = radial_clearance(bearing) + change.change
-    return with_radial_clearance(bearing, clearance), clearance
+                                        operating.outer_speed).change
+    running = eqx.tree_at(lambda b: b.interference, bearing, bearing.interference - change)
+    return running, radial_clearance(running)
 
 
-def bearing_heat(temperatures, bearing: BallBearing, mounting: Mounting, operating: Operating, oil: WaltherLine,
-                 factors: PalmgrenFactors, model: ball_equilibrium.BallModel):
-    """(heat sources [W] at `NODES`, the clearance, the equilibrium, viscous and load powers [W]) of the
-    bearing at the node `temperatures` [K]: its equilibrium at that clearance, Palmgren's moments at
-    the lubricant node's viscosity (module docstring)."""
-    running, clearance = bearing_at(bearing, mounting, operating, temperatures)
-    solution = ball_equilibrium.solve_equilibrium(running, operating, model)
-    force = solution.force[:3]
+def palmgren_powers(running: BallBearing, force, speed, viscosity, factors: PalmgrenFactors):
+    """(viscous power M₀ω, load-dependent power M₁ω) [W] of one ball bearing carrying `force`
+    ([Fx, Fy, Fz] in its own frame [N]) at the relative ring speed `speed` [rad/s] in oil of
+    kinematic `viscosity` [m²/s] (`friction_torque`: Palmgren's moments; f₁ from P₀/C₀)."""
     radial, axial = jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
     f1 = friction_torque.speed_factor(factors.coefficient, factors.exponent,
                                       static_safety.ball_bearing_equivalent_static_load(running, force),
                                       static_safety.ball_bearing_static_load_rating(running))
-    speed = jnp.abs(operating.inner_speed - operating.outer_speed)
-    load_power = friction_torque.load_torque(f1, friction_torque.friction_load(running.kind, radial, axial),
-                                             running.pitch_diameter) * speed
-    viscosity = walther_viscosity(oil.viscosity_40, oil.viscosity_100, temperatures[2])
-    viscous_power = friction_torque.viscous_torque(factors.f0, viscosity, speed, running.pitch_diameter) * speed
+    load = friction_torque.load_torque(f1, friction_torque.friction_load(running.kind, radial, axial),
+                                       running.pitch_diameter) * speed
+    viscous = friction_torque.viscous_torque(factors.f0, viscosity, speed, running.pitch_diameter) * speed
+    return viscous, load
+
+
+def ring_sources(viscous_power, load_power):
+    """Heat sources [W] at `NODES`: the load-dependent loss half into each ring, the viscous loss
+    into the lubricant (module docstring)."""
     zero = jnp.zeros(())
-    sources = jnp.stack([0.5 * load_power, 0.5 * load_power, viscous_power, zero, zero, zero, zero])
-    return sources, clearance, solution, viscous_power, load_power
+    return jnp.stack([0.5 * load_power, 0.5 * load_power, viscous_power, zero, zero, zero, zero])
+
+
+class MountedBallBearing(AbstractHeatedBearing):
+    """One radial ball bearing in its `mounting` (its fits; the temperatures are the unknowns),
+    under `operating`, in `oil`, with Palmgren's `factors`, its equilibrium by `model`."""
+
+    bearing: BallBearing
+    mounting: Mounting
+    operating: Operating
+    oil: WaltherLine
+    factors: PalmgrenFactors
+    model: ball_equilibrium.BallModel = eqx.field(static=True, default=ball_equilibrium.BallModel())
+
+    def heat(self, temperatures) -> BearingHeat:
+        """The equilibrium at the clearance the node temperatures leave, Palmgren's moments at the
+        lubricant node's viscosity."""
+        running, clearance = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
+        solution = ball_equilibrium.solve_equilibrium(running, self.operating, self.model)
+        speed = jnp.abs(self.operating.inner_speed - self.operating.outer_speed)
+        viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100, temperatures[2])
+        viscous, load = palmgren_powers(running, solution.force[:3], speed, viscosity, self.factors)
+        return BearingHeat(ring_sources(viscous, load), clearance, viscous, load, solution, solution.converged)
 
 
 def _assembled(free, paths: ThermalPaths):
@@ -144,31 +197,38 @@ def _assembled(free, paths: ThermalPaths):
 
 
 def _residual(free, args):
-    bearing, mounting, operating, oil, factors, paths, model = args
-    temperatures = _assembled(free, paths)
-    sources = bearing_heat(temperatures, bearing, mounting, operating, oil, factors, model)[0]
+    """R(T) with the heat taken at T clipped into the model's range: a Newton step past its edges
+    meets a residual linear in T there, which leads back, and no heat is asked where the mounting
+    model and the lubricant's line do not hold; a root inside is unchanged."""
+    heated, paths = args
+    sources = heated.heat(_assembled(jnp.clip(free, *TEMPERATURE_RANGE), paths)).sources
     return free - node_temperatures(bearing_network(paths), sources)[:FREE]
 
 
-def solve_bearing_thermal(bearing: BallBearing, mounting: Mounting, operating: Operating, oil: WaltherLine,
-                          factors: PalmgrenFactors, paths: ThermalPaths,
-                          model: ball_equilibrium.BallModel = ball_equilibrium.BallModel()) -> ThermalState:
-    """The bearing's thermal–mechanical steady state (module docstring). `mounting` holds the fits
-    (its temperatures are the unknowns, replaced); the start is the network's temperatures for the
-    heat at the ambient temperature. Differentiable in every input (implicit function theorem)."""
-    args = (bearing, mounting, operating, oil, factors, paths, model)
-    cold = jnp.full(FREE, jnp.asarray(paths.ambient_temperature, float))
-    start_sources = bearing_heat(jax.lax.stop_gradient(_assembled(cold, paths)), *args[:5], model)[0]
-    start = jax.lax.stop_gradient(node_temperatures(bearing_network(paths), start_sources)[:FREE])
-    start = jnp.clip(start, *TEMPERATURE_RANGE)
-    solution = optx.root_find(_residual, SOLVER, start, args=args, max_steps=40, throw=False,
-                              adjoint=optx.ImplicitAdjoint())
-    inside = jnp.all((solution.value >= TEMPERATURE_RANGE[0]) & (solution.value <= TEMPERATURE_RANGE[1]))
-    free = jnp.where(inside, solution.value, jnp.clip(solution.value, *TEMPERATURE_RANGE))
-    temperatures = _assembled(free, paths)
-    sources, clearance, equilibrium, viscous, load = bearing_heat(temperatures, *args[:5], model)
+def _damped_newton(residual, start, args):
+    """(root, steps): the house's damped Newton (`newton.newton`: Armijo backtracking on ½‖R‖², and
+    Levenberg–Marquardt steps where it stalls); the lubricant's viscosity, steep in its
+    temperature, sends full Newton steps far past the root."""
+    y, steps = newton(residual, start, args, max_steps=MAX_STEPS, loop="while", fallback=True, floor=1e-10)
+    return y, steps.astype(y.dtype)
+
+
+@eqx.filter_jit
+def solve_thermal(heated: AbstractHeatedBearing, paths: ThermalPaths) -> ThermalState:
+    """The thermal–mechanical steady state (module docstring) of `heated` cooled by `paths`; the
+    start is the network's temperatures for the heat at the ambient temperature. Differentiable in
+    every input (implicit function theorem)."""
     network = bearing_network(paths)
-    residual = jnp.max(jnp.abs(free - node_temperatures(network, sources)[:FREE]))
-    converged = (solution.result == optx.RESULTS.successful) & inside & equilibrium.converged & (residual < 1e-6)
-    return ThermalState(temperatures, clearance, equilibrium, viscous, load,
-                        boundary_heat_flows(network, temperatures, sources), residual, converged)
+    cold = jnp.full(FREE, jnp.asarray(paths.ambient_temperature, float))
+    start_sources = jax.lax.stop_gradient(heated.heat(_assembled(cold, paths)).sources)
+    start = jax.lax.stop_gradient(node_temperatures(network, start_sources)[:FREE])
+    start = jnp.clip(start, *TEMPERATURE_RANGE)
+    value, steps = implicit_root(_residual, start, (heated, paths), _damped_newton, has_aux=True)
+    inside = jnp.all((value >= TEMPERATURE_RANGE[0]) & (value <= TEMPERATURE_RANGE[1]))
+    free = jnp.clip(value, *TEMPERATURE_RANGE)
+    temperatures = _assembled(free, paths)
+    found = heated.heat(temperatures)
+    residual = jax.lax.stop_gradient(jnp.max(jnp.abs(free - node_temperatures(network, found.sources)[:FREE])))
+    converged = inside & found.converged & (residual < RESIDUAL_TOLERANCE) & (steps < MAX_STEPS)
+    return ThermalState(temperatures, found.clearance, found.mechanics, found.viscous_power, found.load_power,
+                        boundary_heat_flows(network, temperatures, found.sources), residual, converged)

@@ -32,3 +32,18 @@ def advection(volume_flow, volumetric_heat_capacity):
     """A fluid's flow from a held inlet temperature through a well-mixed node: G = ρc V̇ (V̇ [m³/s],
     ρc [J/(m³·K)]), the heat it carries out per kelvin of the node over the inlet."""
     return volumetric_heat_capacity * volume_flow
+
+
+def in_series(*conductances):
+    """Paths one after another: 1/G = Σ 1/Gᵢ (Incropera eq. 3.19)."""
+    return 1.0 / sum(1.0 / g for g in conductances)
+
+
+def rotating_cylinder_coefficient(speed, diameter, kinematic_viscosity, conductivity, prandtl):
+    """h [W/(m²·K)] of a cylinder turning at `speed` Ω [rad/s] in a still fluid: Nu_D = 0.133 Re_D^{2/3}
+    Pr^{1/3}, Re_D = Ω D²/ν, for Re_D < 4.3e5 and 0.7 < Pr < 670 (Incropera et al., 7th ed., problem 9.62,
+    after Kays & Bjorklund); 0 at rest (the double `where` keeps the derivative finite there)."""
+    reynolds = jnp.abs(speed) * diameter ** 2 / kinematic_viscosity
+    turning = reynolds > 0.0
+    safe = jnp.where(turning, reynolds, 1.0)
+    return jnp.where(turning, 0.133 * safe ** (2.0 / 3.0) * prandtl ** (1.0 / 3.0) * conductivity / diameter, 0.0)

@@ -1,6 +1,10 @@
 """The lubricant ([lubricant] table: preset, explicit viscosity, or the viscosities at 40 °C and
 100 °C with an operating temperature) and the surfaces' roughness."""
 
+import collections
+
+import jax.numpy as jnp
+
 from ...bearings.roller.roller_geometry import ROLLER_KINDS
 from ...film.viscosity_temperature import REFERENCE_TEMPERATURES, walther_viscosity
 from ...params import (
@@ -15,8 +19,10 @@ from ...params import (
 )
 from ..registry import SHAFT, Adapter, InputBuilder, Key, quantity, register
 
+TEMPERATURE_RANGE = (253.15, 473.15)  # K: the Walther line's range of the lubricant's temperature (−20 … 200 °C)
 
-def _kinematic_pair(values) -> tuple | None:
+
+def walther_line(values) -> tuple | None:
     """(ν₄₀, ν₁₀₀) [m²/s] of the scene's oil (its keys, else its ISO VG preset), or None."""
     given = [values.get(f"lubricant.kinematic_viscosity_{t}") for t in (40, 100)]
     if any(v is not None for v in given):
@@ -35,10 +41,10 @@ def _kinematic_pair(values) -> tuple | None:
     return None
 
 
-def _lubricant(values, built) -> dict:
+def lubricant_input(values, built) -> dict:
     base = LUBRICANTS[values["lubricant.preset"]] if "lubricant.preset" in values else None
     density = values.get("lubricant.density", base.density if base else MINERAL_OIL_DENSITY)
-    pair = _kinematic_pair(values)
+    pair = walther_line(values)
     if "lubricant.temperature" in values or "lubricant.kinematic_viscosity_40" in values:
         if "lubricant.viscosity" in values:
             raise ValueError("lubricant.viscosity is the viscosity at the operating temperature: give it, or "
@@ -47,7 +53,8 @@ def _lubricant(values, built) -> dict:
             raise ValueError("lubricant.temperature needs the oil's viscosities: lubricant.preset, or "
                              "lubricant.kinematic_viscosity_40 and lubricant.kinematic_viscosity_100")
         temperature = values.get("lubricant.temperature", REFERENCE_TEMPERATURES[0])
-        check_range("lubricant.temperature", temperature, low=253.15, high=473.15, unit=" K", why="−20 °C to 200 °C")
+        check_range("lubricant.temperature", temperature, low=TEMPERATURE_RANGE[0], high=TEMPERATURE_RANGE[1], unit=" K",
+                    why="−20 °C to 200 °C")
         viscosity = walther_viscosity(*pair, temperature) * density
     else:
         viscosity = values.get("lubricant.viscosity", base.viscosity if base else None)
@@ -59,6 +66,20 @@ def _lubricant(values, built) -> dict:
     return {"lubricant": Lubricant(viscosity, alpha, density, name=base.name if base else "custom",
                                    viscosity_law=values.get("lubricant.viscosity_law", "roelands"),
                                    density_law=values.get("lubricant.density_law", "dowson_higginson"))}
+
+
+def lubricant_at(values, temperature) -> Lubricant:
+    """The scene's oil at `temperature` [K] on its Walther line (a scene whose temperature another
+    effect sets: `effects.thermal`); ValueError where the scene gives no line or a temperature of its own."""
+    for key in ("lubricant.temperature", "lubricant.viscosity"):
+        if key in values:
+            raise ValueError(f"{key}: the lubricant's temperature is the thermal network's with effects.thermal (give "
+                             "the oil's viscosities at 40 °C and 100 °C, or lubricant.preset)")
+    if walther_line(values) is None:
+        raise ValueError("effects.thermal needs the oil's Walther line: lubricant.preset, or "
+                         "lubricant.kinematic_viscosity_40 and lubricant.kinematic_viscosity_100")
+    inside = jnp.clip(temperature, *TEMPERATURE_RANGE)  # a state beyond it is the thermal effect's error
+    return lubricant_input(collections.ChainMap({"lubricant.temperature": inside}, values), {})["lubricant"]
 
 
 def _roughness(values, built) -> dict:
@@ -88,5 +109,8 @@ ADAPTER = register(Adapter(
         "lubricant.density_law": Key("choice", choices=("incompressible", "dowson_higginson")),
         "material.roughness": quantity("length", "composite RMS roughness √(σ₁² + σ₂²) of the contacting surfaces"),
     },
-    inputs=(InputBuilder(("lubricant",), TYPES, _lubricant), InputBuilder(("roughness",), TYPES, _roughness)),
+    # a ball bearing's with effects.thermal: the thermal effect's, at the temperature it solves
+    inputs=(InputBuilder(("lubricant",), BALL_BEARING_KINDS, lubricant_input, scene_keys=("!effects.thermal",)),
+            InputBuilder(("lubricant",), ROLLER_KINDS + SHAFT, lubricant_input),
+            InputBuilder(("roughness",), TYPES, _roughness)),
 ))

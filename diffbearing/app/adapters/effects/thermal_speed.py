@@ -1,5 +1,5 @@
 """Thermal speed ratings (`effects.thermal_speed = true`, `diffbearing.thermal.thermal_speed`) of a
-single ball or whole roller bearing and of each bearing on a shaft: ISO 15312's thermal reference
+single ball or whole roller bearing, of each bearing of a matched pair and of each on a shaft: ISO 15312's thermal reference
 speed n_θr under the standard's reference conditions (thrust bearings' for the thrust kinds), and,
 for a single bearing with the mounting's heat transfer coefficient
 `thermal_speed.heat_transfer_coefficient`, DIN 732's thermally safe operating speed n_θ at the solved
@@ -269,6 +269,9 @@ ADAPTER = register(Adapter(
     blocks=(*_blocks("", BALL_BEARING_KINDS, ("equilibrium",), (), _ball_reference, _ball_safe),
             *_blocks("roller_", ROLLER_KINDS, (EQUILIBRIUM_BLOCK,), ("raceways",), _roller_reference, _roller_safe,
                      WHOLE_BEARING),
+            Block(name="set_thermal_reference_speed", bearing_types=BALL_BEARING_KINDS, enabled_by=("thermal_speed", True),
+                  requires=("bearing_set",), inputs=("bearing", "thermal_reference"), outputs=REFERENCE_OUTPUTS,
+                  compute=_ball_reference, checks=_reference_checks, scene_keys=("bearing.arrangement",)),
             Block(name="shaft_thermal_reference_speed", bearing_types=SHAFT, enabled_by=("thermal_speed", True),
                   requires=("shaft",), inputs=("shaft", "thermal_reference"), outputs=SHAFT_OUTPUTS,
                   compute=_shaft_reference_speeds, checks=_shaft_checks, validate=check_static_ratings)),

@@ -32,12 +32,17 @@ OPERATING_CLEARANCE_FLOOR = 0.01  # of d_m: −G_r above that is outside the pre
 WHOLE_BEARING = ("operating.force",)  # a whole roller bearing's layout (as adapters/roller_bearing.py)
 
 
-def _mounting(v, built) -> dict:
+def mounting_input(v, built) -> dict:
     """The change of clearance (`OperatingClearance`) of the scene's [mounting] table, or None
     without `effects.mounting`: computed once here, added to the clearance by the bearing's own
     builder and reported by the blocks below."""
     if v.get(EFFECT_ON, False) is not True:
         return {"mounting": None}
+    return {"mounting": clearance_change(v, scene_mounting(v))}
+
+
+def scene_mounting(v) -> Mounting:
+    """The [mounting] table's fits, seats and temperatures as a `Mounting` (checked: `_check_envelope`)."""
     if "bearing.bore" not in v or "bearing.outer_diameter" not in v:
         raise ValueError("effects.mounting needs bearing.bore and bearing.outer_diameter (the rings' thickness "
                          "for the fits)")
@@ -45,7 +50,7 @@ def _mounting(v, built) -> dict:
     shaft, shaft_expansion = SEAT_MATERIALS[v.get("mounting.shaft_material", "steel")]
     housing, housing_expansion = SEAT_MATERIALS[v.get("mounting.housing_material", "steel")]
     reference = v.get("mounting.reference_temperature", 293.15)
-    mounting = Mounting(
+    return Mounting(
         shaft_interference=_interference(v, "shaft", "bearing.bore", bearing_fits.shaft_interference),
         housing_interference=_interference(v, "housing", "bearing.outer_diameter", bearing_fits.housing_interference),
         shaft_bore=v.get("mounting.shaft_bore", 0.0),
@@ -58,13 +63,17 @@ def _mounting(v, built) -> dict:
         housing_expansion=v.get("mounting.housing_expansion", housing_expansion),
         shaft=shaft, housing=housing,
     )
+
+
+def clearance_change(v, mounting: Mounting) -> OperatingClearance:
+    """The change of clearance `mounting` makes to the scene's bearing at its speed."""
     # the rings run from the bore to d_m − D and from d_m + D to the outside (D the ball, or the
     # cylindrical roller, diameter)
     pitch = v["bearing.pitch_diameter"]
     element = v["bearing.ball_diameter"] if "bearing.ball_diameter" in v else v["bearing.roller_diameter"]
-    return {"mounting": operating_clearance_change(
+    return operating_clearance_change(
         mounting, v["bearing.bore"], pitch - element, pitch + element, v["bearing.outer_diameter"], element,
-        material(v), v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))}
+        material(v), v.get("operating.inner_speed", 0.0), v.get("operating.outer_speed", 0.0))
 
 
 def _check_envelope(v) -> None:
@@ -198,7 +207,9 @@ ADAPTER = register(Adapter(
         "mounting.housing_expansion": quantity("thermal_expansion", "linear expansion coefficient (default: the "
                                                                     "material's)"),
     },
-    inputs=(InputBuilder(("mounting",), BALL_BEARING_KINDS + ROLLER_KINDS, _mounting),),
+    # a ball bearing's with effects.thermal: the thermal effect's, at the temperatures it solves
+    inputs=(InputBuilder(("mounting",), BALL_BEARING_KINDS, mounting_input, scene_keys=("!effects.thermal",)),
+            InputBuilder(("mounting",), ROLLER_KINDS, mounting_input)),
     blocks=(Block(
         name="mounting",
         bearing_types=BALL_BEARING_KINDS,

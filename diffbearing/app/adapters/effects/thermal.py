@@ -1,0 +1,255 @@
+"""The thermal–mechanical steady state (`effects.thermal = true`, `diffbearing.thermal`) of a single
+ball bearing or a preloaded pair in its mounting: a thermal network of the rings, the lubricant, the
+shaft and the housing (paths from their geometry, `thermal.mounting_paths`), heated by Palmgren's
+moments (ISO 15312's friction model) at the state the temperatures give, solved as one fixed point
+(`bearing_thermal.solve_thermal`).
+
+The effect sets what the scene's mounting and lubricant would otherwise take as given: the
+[mounting] table's fits at the solved ring, shaft and housing temperatures are the `mounting` input
+(the clearance the equilibrium, the set and every effect after them run at), and the oil at the
+solved lubricant temperature on its Walther line is the `lubricant` input (the film, the friction
+and a_ISO's κ). It needs `effects.mounting` (the fits) and the oil's Walther line; the temperatures
+it sets are refused as scene keys."""
+
+import jax.numpy as jnp
+import numpy as np
+
+from ....friction import friction_torque
+from ....params import BALL_BEARING_KINDS, check_range, radial_clearance, with_radial_clearance
+from ....systems.bearing_set import preload_offset
+from ....thermal import bearing_thermal
+from ....thermal.mounting_paths import CONDUCTIVITIES, Cooling, MountingGeometry, mounting_paths
+from ....thermal.pair_thermal import MountedBallPair
+from ...registry import Adapter, Block, InputBuilder, Key, Output, quantity, register
+from ..bearings.ball import ball_model, catalogue_bearing
+from ..lubricant import lubricant_at, lubricant_input, walther_line
+from ..materials import material
+from ..systems.mounting import TEMPERATURES, clearance_change, mounting_input, scene_mounting
+from .friction import palmgren_f0
+
+EFFECT_ON = "effects.thermal"
+SINGLE, PAIR = (EFFECT_ON, "!bearing.arrangement"), (EFFECT_ON, "bearing.arrangement")
+TEMPERATURE_RANGE = (253.15, 473.15)  # K: the scene's ambient and oil inlet, −20 °C to 200 °C
+COEFFICIENT_RANGE = (1.0, 1e5)  # W/(m²·K): still air to a water-cooled jacket
+NODE_NAMES = ("inner_ring", "outer_ring", "lubricant", "shaft", "housing")
+
+
+def _settings(v) -> dict:
+    """The effects and fidelity tables from the scene's dotted keys (the model options of the
+    equilibrium the fixed point solves)."""
+    tables: dict = {"effects": {}, "fidelity": {}}
+    for key in v:
+        table, _, name = key.partition(".")
+        if table in tables:
+            tables[table][name] = v[key]
+    return tables
+
+
+def _geometry(v, width) -> MountingGeometry:
+    bore, outside = v["bearing.bore"], v["bearing.outer_diameter"]
+    pitch, ball = v["bearing.pitch_diameter"], v["bearing.ball_diameter"]
+    housing_diameter = v.get("thermal.housing_outer_diameter", v.get("mounting.housing_outer_diameter", 2.0 * outside))
+    check_range("thermal.housing_outer_diameter", housing_diameter, low=outside, unit=" m",
+                why="a housing around bearing.outer_diameter")
+    housing_length = v.get("thermal.housing_length", 2.0 * width)
+    check_range("thermal.housing_length", housing_length, low=0.0, unit=" m")
+    shaft_length = v.get("thermal.shaft_length", 2.0 * bore)
+    check_range("thermal.shaft_length", shaft_length, low=0.0, unit=" m", why="the shaft beyond the bearing, each side")
+    return MountingGeometry(
+        bore=bore, outer_diameter=outside, width=width, inner_raceway_diameter=pitch - ball,
+        outer_raceway_diameter=pitch + ball, shaft_bore=v.get("mounting.shaft_bore", 0.0), shaft_length=shaft_length,
+        housing_outer_diameter=housing_diameter, housing_length=housing_length,
+        ring_conductivity=CONDUCTIVITIES["bearing_steel"],
+        shaft_conductivity=CONDUCTIVITIES[v.get("mounting.shaft_material", "steel")],
+        housing_conductivity=CONDUCTIVITIES[v.get("mounting.housing_material", "steel")])
+
+
+def _cooling(v, line) -> Cooling:
+    ambient = v.get("thermal.ambient_temperature", 293.15)
+    inlet = v.get("thermal.oil_inlet_temperature", ambient)
+    for key, value in (("thermal.ambient_temperature", ambient), ("thermal.oil_inlet_temperature", inlet)):
+        check_range(key, value, low=TEMPERATURE_RANGE[0], high=TEMPERATURE_RANGE[1], unit=" K", why="−20 °C to 200 °C")
+    flow = v.get("thermal.oil_flow", 0.0)
+    check_range("thermal.oil_flow", flow, low=0.0, high=1e-3, low_open=False, unit=" m³/s", why="up to 60 l/min")
+    coefficients = {}
+    for name in ("housing", "shaft", "oil"):
+        key = f"thermal.{name}_heat_transfer_coefficient"
+        coefficients[name] = v.get(key, 10.0 if name == "housing" else None)
+        check_range(key, coefficients[name], low=COEFFICIENT_RANGE[0], high=COEFFICIENT_RANGE[1], unit=" W/(m²·K)",
+                    why="still air to a water-cooled jacket")
+    speed = jnp.abs(v.get("operating.inner_speed", 0.0) - v.get("operating.outer_speed", 0.0))
+    return Cooling(ambient, inlet, flow, coefficients["housing"], speed, bearing_thermal.WaltherLine(*line),
+                   coefficients["shaft"], coefficients["oil"])
+
+
+def _common(v):
+    """(the bearing as the scene gives it, its `Mounting` without temperatures, the Walther line,
+    Palmgren's factors, the model options), each scene key checked."""
+    if v.get("effects.mounting", False) is not True:
+        raise ValueError("effects.thermal needs effects.mounting (the fits and the rings' expansion that turn the "
+                         "temperatures into the operating clearance)")
+    for part in TEMPERATURES:
+        if f"mounting.{part}_temperature" in v:
+            raise ValueError(f"mounting.{part}_temperature: set by effects.thermal (the network's), not given")
+    lubricant_at(v, 293.15)  # a ValueError naming the key where the scene's oil has no Walther line
+    line = walther_line(v)
+    bearing = catalogue_bearing(v, material(v))
+    kind = bearing.kind
+    _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
+    factors = bearing_thermal.PalmgrenFactors(palmgren_f0(v, kind), coefficient, exponent)
+    return bearing, scene_mounting(v), line, factors, ball_model(_settings(v))
+
+
+def _inputs(v, heated, paths, mounting) -> dict:
+    """The `mounting`, `lubricant` and `thermal` inputs at the state `heated` solves to."""
+    state = bearing_thermal.solve_thermal(heated, paths)
+    warm = bearing_thermal.mounted_at(mounting, state.temperatures)
+    return {"mounting": clearance_change(v, warm), "lubricant": lubricant_at(v, state.temperatures[2]),
+            "thermal": {"state": state, "paths": paths, "heated": heated}}
+
+
+def _plain(v, built) -> dict:
+    """With `effects.thermal = false`: the scene's own mounting and lubricant."""
+    return mounting_input(v, built) | lubricant_input(v, built) | {"thermal": None}
+
+
+def _single(v, built) -> dict:
+    if v[EFFECT_ON] is not True:
+        return _plain(v, built)
+    bearing, mounting, line, factors, model = _common(v)
+    width = v.get("bearing.width")
+    if width is None:
+        raise ValueError("bearing.width is needed by effects.thermal (the rings' and the housing's conduction paths)")
+    paths = mounting_paths(_geometry(v, width), _cooling(v, line))
+    heated = bearing_thermal.MountedBallBearing(bearing, mounting, built["operating"], bearing_thermal.WaltherLine(*line),
+                                                factors, model)
+    return _inputs(v, heated, paths, mounting)
+
+
+def _pair(v, built) -> dict:
+    if v[EFFECT_ON] is not True:
+        return _plain(v, built)
+    bearing, mounting, line, factors, model = _common(v)
+    layout = built["bearing_set"]
+    matched = with_radial_clearance(bearing, layout.matched_clearance)
+    offset = preload_offset(matched, layout.preload, model) if layout.preload is not None else \
+        jnp.asarray(0.0 if layout.offset is None else layout.offset)
+    paths = mounting_paths(_geometry(v, 2.0 * v["bearing.width"]), _cooling(v, line))
+    heated = MountedBallPair(matched, mounting, built["operating"], bearing_thermal.WaltherLine(*line), factors,
+                             layout.spacing, offset, layout.arrangement, model)
+    return _inputs(v, heated, paths, mounting)
+
+
+def _outputs(inputs: dict, settings: dict, results: dict) -> dict:
+    state, paths = inputs["thermal"]["state"], inputs["thermal"]["paths"]
+    out = {f"thermal.{name}_temperature": state.temperatures[number] for number, name in enumerate(NODE_NAMES)}
+    return out | {
+        "thermal.clearance": state.clearance,
+        "thermal.viscous_power": state.viscous_power, "thermal.load_power": state.load_power,
+        "thermal.power": state.viscous_power + state.load_power,
+        "thermal.heat_to_ambient": state.boundary_heat[0], "thermal.heat_to_oil": state.boundary_heat[1],
+        "thermal.residual": state.residual, "thermal.converged": state.converged,
+        "thermal.conductances": jnp.stack([jnp.asarray(getattr(paths, name), float) for name in PATH_NAMES]),
+    }
+
+
+def _ball_outputs(inputs: dict, settings: dict, results: dict) -> dict:
+    """The state, and the identity that holds it together: the equilibrium's clearance is the state's."""
+    return _outputs(inputs, settings, results) | {"thermal.equilibrium_clearance": radial_clearance(inputs["bearing"])}
+
+
+def _set_outputs(inputs: dict, settings: dict, results: dict) -> dict:
+    """The state, and the preload the warm pair carries: each bearing's axial load at the solved
+    clearance without the external load."""
+    thermal = inputs["thermal"]
+    state = thermal["state"]
+    return _outputs(inputs, settings, results) | {
+        "thermal.operating_preload": thermal["heated"].preload_at(state.temperatures),
+        "thermal.bearing_axial_loads": jnp.stack([force[2] for force in state.mechanics.bearing_forces])}
+
+
+def _checks(values: dict) -> tuple[list[str], list[str]]:
+    """No steady state inside the model is an error (thermal runaway, or temperatures outside the
+    mounting model's −60 … 250 °C or the oil's −20 … 200 °C)."""
+    lubricant = float(values["thermal.lubricant_temperature"])
+    if not bool(values["thermal.converged"]):
+        hottest = max(float(values[f"thermal.{name}_temperature"]) for name in NODE_NAMES)
+        return [f"thermal: no steady state found (largest residual {float(values['thermal.residual']):.3g} K, hottest "
+                f"node {hottest - 273.15:.4g} °C): the friction heat outgrows what the paths carry away (thermal "
+                "runaway), or the temperatures leave the model's −60 … 250 °C"], []
+    if not TEMPERATURE_RANGE[0] <= lubricant <= TEMPERATURE_RANGE[1]:
+        return [f"thermal: the lubricant's temperature {lubricant - 273.15:.4g} °C is outside its Walther line's "
+                "−20 … 200 °C"], []
+    return [], []
+
+
+PATH_NAMES = ("inner_ring_shaft", "outer_ring_housing", "inner_ring_lubricant", "outer_ring_lubricant", "shaft_ambient",
+              "housing_ambient", "oil_flow")
+OUTPUTS = (
+    *(Output(f"thermal.{name}_temperature", "K", "degC", f"{name.replace('_', ' ')} temperature") for name in NODE_NAMES),
+    Output("thermal.clearance", "m", "um", "operating diametral clearance at the solved temperatures"),
+    Output("thermal.power", "W", "W", "friction heat M ω (Palmgren)"),
+    Output("thermal.viscous_power", "W", "W", "of it viscous M₀ ω (into the lubricant)"),
+    Output("thermal.load_power", "W", "W", "of it load-dependent M₁ ω (into the rings)"),
+    Output("thermal.heat_to_ambient", "W", "W", "heat to the ambient (shaft and housing)"),
+    Output("thermal.heat_to_oil", "W", "W", "heat carried away by the circulating oil"),
+    Output("thermal.residual", "K", "K", "largest residual of the fixed point", in_report=False),
+    Output("thermal.converged", "", "", "the fixed point converged inside the model", in_report=False),
+    Output("thermal.conductances", "W/K", "W/K", "the paths' conductances (" + ", ".join(PATH_NAMES) + ")",
+           in_report=False),
+)
+
+
+def _report(result) -> list[str]:
+    values = result.values
+    if "thermal.conductances" not in values or np.ndim(values["thermal.conductances"]) != 1:
+        return []
+    lines = ["", "Thermal network (conductances [W/K]; paths from the parts' geometry, docs/theory.md §Thermal network)"]
+    for name, value in zip(PATH_NAMES, np.asarray(values["thermal.conductances"])):
+        lines.append(f"  {name.replace('_', ' '):<24}{value:>10.4g}")
+    state = "converged" if bool(values["thermal.converged"]) else "DID NOT CONVERGE"
+    return lines + [f"  fixed point of temperatures, clearance and heat: {state} (largest residual "
+                    f"{float(values['thermal.residual']):.1e} K)"]
+
+
+KEYS = {
+    EFFECT_ON: Key("boolean", doc="the steady temperatures of the rings, lubricant, shaft and housing, solved with the "
+                                  "clearance and the friction heat (needs effects.mounting); they set the mounting's "
+                                  "temperatures and the lubricant's"),
+    "thermal.ambient_temperature": quantity("temperature", "the air's (default 20 °C)"),
+    "thermal.oil_inlet_temperature": quantity("temperature", "the circulating oil's at the inlet (default: the ambient)"),
+    "thermal.oil_flow": quantity("volume_flow", "circulating oil through the bearing (\"2 l/min\"; default 0: a bath, "
+                                                "oil mist or grease)"),
+    "thermal.housing_heat_transfer_coefficient": quantity("heat_transfer_coefficient", "the housing's outside "
+                                                          "(default 10 W/(m²·K): still air; a cooling jacket 500–3000)"),
+    "thermal.shaft_heat_transfer_coefficient": quantity("heat_transfer_coefficient", "the shaft's ends in air (default: "
+                                                        "a turning cylinder's correlation)"),
+    "thermal.oil_heat_transfer_coefficient": quantity("heat_transfer_coefficient", "rings to oil (default: a turning "
+                                                      "cylinder's correlation at half the ring speed)"),
+    "thermal.housing_outer_diameter": quantity("length", "the housing's outer diameter (default: "
+                                                         "mounting.housing_outer_diameter, else 2 D)"),
+    "thermal.housing_length": quantity("length", "the housing's length (default: twice the bearings' width)"),
+    "thermal.shaft_length": quantity("length", "the shaft's length beyond the bearing, each side (default 2 d)"),
+    "bearing.width": quantity("length", "bearing width B"),
+}
+
+ADAPTER = register(Adapter(
+    name="thermal",
+    bearing_types=BALL_BEARING_KINDS,
+    keys=KEYS,
+    inputs=(InputBuilder(("mounting", "lubricant", "thermal"), BALL_BEARING_KINDS, _single, after=("operating",),
+                         scene_keys=SINGLE),
+            InputBuilder(("mounting", "lubricant", "thermal"), BALL_BEARING_KINDS, _pair,
+                         after=("operating", "bearing_set"), scene_keys=PAIR)),
+    blocks=(Block(name="thermal", bearing_types=BALL_BEARING_KINDS, enabled_by=("thermal", True), requires=("equilibrium",),
+                  inputs=("thermal", "bearing"), outputs=(*OUTPUTS, Output(
+                      "thermal.equilibrium_clearance", "m", "um", "the equilibrium's clearance (the state's)",
+                      in_report=False)), compute=_ball_outputs, checks=_checks, scene_keys=SINGLE),
+            Block(name="set_thermal", bearing_types=BALL_BEARING_KINDS, enabled_by=("thermal", True),
+                  requires=("bearing_set",), inputs=("thermal",), outputs=(*OUTPUTS, Output(
+                      "thermal.operating_preload", "N", "kN", "operating preload (without the external load)"), Output(
+                      "thermal.bearing_axial_loads", "N", "kN", "each bearing's axial load in the fixed point's "
+                      "equilibrium", in_report=False)), compute=_set_outputs, checks=_checks,
+                  scene_keys=PAIR)),
+    report=_report,
+))

@@ -1,0 +1,77 @@
+"""A preloaded pair of angular contact ball bearings (`systems.bearing_set`) in the thermal–mechanical
+fixed point (`bearing_thermal`): the warmth of the rings changes each bearing's operating clearance
+(the mounting model; `bearing_thermal.bearing_at`) while the set stays clamped at its matched
+offset, so the preload the pair carries changes with the temperatures, and with it the heat.
+
+The two bearings share one set of nodes (inner rings, outer rings, lubricant, shaft, housing): a
+lumped pair, their heat summed, the paths those of both bearings side by side. Each bearing's
+Palmgren moments come from the load it carries in the set's equilibrium (`shaft_equilibrium`),
+its preload included, so a pair that warms into a higher preload runs hotter, and one whose warmth
+opens its clearance loses preload.
+"""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+
+from ..bearings.ball import ball_equilibrium
+from ..film.viscosity_temperature import walther_viscosity
+from ..params import BallBearing, Operating
+from ..systems.bearing_set import bearing_set
+from ..systems.operating_clearance import Mounting
+from ..systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
+from .bearing_thermal import (
+    AbstractHeatedBearing,
+    BearingHeat,
+    PalmgrenFactors,
+    WaltherLine,
+    bearing_at,
+    palmgren_powers,
+    ring_sources,
+)
+
+
+class MountedBallPair(AbstractHeatedBearing):
+    """A matched pair (`arrangement` of `bearing_set.ARRANGEMENTS`) of `bearing` (as matched: its
+    clearance the matched one), centres `spacing` [m] apart, each inner ring pushed by the matched
+    `offset` [m] (`bearing_set.preload_offset` of a preload force), in its `mounting` (fits; the
+    temperatures are the unknowns), under `operating` (force and moment on the shaft at the middle
+    of the set, the inner rings turning), in `oil`, with Palmgren's `factors`."""
+
+    bearing: BallBearing
+    mounting: Mounting
+    operating: Operating
+    oil: WaltherLine
+    factors: PalmgrenFactors
+    spacing: jax.Array
+    offset: jax.Array
+    arrangement: str = eqx.field(static=True, default="back_to_back")
+    model: ball_equilibrium.BallModel = eqx.field(static=True, default=ball_equilibrium.BallModel())
+
+    def supports(self, temperatures):
+        """(the two `BallSupport`s at the clearance the node `temperatures` leave, that clearance [m])."""
+        running, clearance = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
+        return bearing_set(running, self.arrangement, spacing=self.spacing, offset=self.offset, model=self.model), \
+            clearance
+
+    def preload_at(self, temperatures):
+        """The preload [N] the pair carries at the node `temperatures`: each bearing's axial load with
+        no external load on the set (the rings turning)."""
+        supports, _ = self.supports(temperatures)
+        unloaded = Shaft(supports, ShaftLoads(jnp.zeros(1), jnp.zeros((1, 3)), jnp.zeros((1, 2))),
+                         self.operating.inner_speed)
+        return jnp.abs(solve_shaft(unloaded).bearing_forces[0][2])
+
+    def heat(self, temperatures) -> BearingHeat:
+        """The set's equilibrium at the node temperatures; each bearing's Palmgren moments from the
+        load it carries, at the lubricant node's viscosity, summed."""
+        supports, clearance = self.supports(temperatures)
+        shaft = Shaft(supports, ShaftLoads(jnp.zeros(1), self.operating.force[None], self.operating.moment[None]),
+                      self.operating.inner_speed)
+        solution = solve_shaft(shaft)
+        viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100, temperatures[2])
+        speed = jnp.abs(self.operating.inner_speed)
+        powers = [palmgren_powers(support.bearing, force[:3], speed, viscosity, self.factors)
+                  for support, force in zip(supports, solution.bearing_forces)]
+        viscous, load = sum(p[0] for p in powers), sum(p[1] for p in powers)
+        return BearingHeat(ring_sources(viscous, load), clearance, viscous, load, solution, solution.converged)
