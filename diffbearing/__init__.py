@@ -38,7 +38,11 @@ from .bearings.ball.raceway_contact import (
     inner_curvature as inner_curvature,
     outer_curvature as outer_curvature,
 )
-from .bearings.interface import AbstractSupport as AbstractSupport, CondensedElements as CondensedElements
+from .bearings.interface import (
+    AbstractSupport as AbstractSupport,
+    CondensedElements as CondensedElements,
+    RingSection as RingSection,
+)
 from .bearings.roller.cylindrical_roller_thrust import (
     CylindricalRollerThrustSupport as CylindricalRollerThrustSupport,
     cylindrical_roller_thrust_bearing as cylindrical_roller_thrust_bearing,
@@ -187,6 +191,7 @@ from .systems.operating_clearance import (
     Mounting as Mounting,
     OperatingClearance as OperatingClearance,
     fit_pressure as fit_pressure,
+    mounted_clearance_change as mounted_clearance_change,
     operating_clearance_change as operating_clearance_change,
 )
 from .systems.shaft_beam import ShaftSections as ShaftSections
@@ -213,7 +218,14 @@ from .thermal.bearing_thermal import (
     WaltherLine as WaltherLine,
     solve_thermal as solve_thermal,
 )
+from .thermal.mounting_paths import (
+    Cooling as Cooling,
+    MountingGeometry as MountingGeometry,
+    mounting_paths as mounting_paths,
+    shaft_paths as shaft_paths,
+)
 from .thermal.pair_thermal import MountedBallPair as MountedBallPair
+from .thermal.shaft_thermal import MountedShaft as MountedShaft, shaft_factors as shaft_factors
 from .thermal.thermal_network import (
     ThermalNetwork as ThermalNetwork,
     boundary_heat_flows as boundary_heat_flows,

@@ -241,6 +241,15 @@ def with_radial_clearance(bearing: BallBearing, clearance) -> BallBearing:
     return eqx.tree_at(lambda b: (b.free_contact_angle, b.interference), bearing, (angle, interference))
 
 
+def clearance_changed(bearing: BallBearing, change) -> BallBearing:
+    """The bearing with its diametral clearance changed by `change` [m] (a mounting's fits and
+    temperatures): the groove centres' radial distance shifted by −change/2 (the interference
+    ι − change), the free contact angle kept. The same rings as `with_radial_clearance`'s angle
+    arccos(1 − G/(2 B D_w)) at a clamped axial position (`bearing_set.clamped_offset`), without that
+    angle's infinite slope at G = 0, through which a warming bearing's clearance may pass."""
+    return eqx.tree_at(lambda b: b.interference, bearing, bearing.interference - change)
+
+
 def contact_angle_and_interference(clearance, distance):
     """(α₀ [rad], ι [m]) of a diametral clearance G_r [m] with groove centre distance B D_w [m]:
     cos α₀ = 1 − G_r/(2 B D_w) for G_r ≥ 0; α₀ = 0 and ι = −G_r for a negative one. The arccos is

@@ -57,7 +57,7 @@ def test_the_fixed_point_balances_energy_and_is_the_loop_of_guesses():
     assert float(jnp.sum(state.boundary_heat)) == pytest.approx(power, rel=1e-10)
     network = bt.bearing_network(PATHS)
     sources = heat(heated, state.temperatures)
-    np.testing.assert_allclose(node_temperatures(network, sources)[:bt.FREE], state.temperatures[:bt.FREE], atol=1e-9)
+    np.testing.assert_allclose(node_temperatures(network, sources)[:bt.SEAT_NODES], state.temperatures[:bt.SEAT_NODES], atol=1e-9)
     temperatures = jnp.full(7, AMBIENT).at[6].set(AMBIENT + 20.0)
     for _ in range(60):
         sources = heat(heated, temperatures)

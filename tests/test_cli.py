@@ -250,7 +250,7 @@ def test_examples_lists_every_packaged_scene(capsys):
                                          "needle_roller_shaft", "thrust_roller_shaft",
                                          "spherical_roller_shaft", "gearbox_duty_cycle",
                                          "gearbox_shaft_duty_cycle", "designation_6205", "gearbox_6411_thermal_speed",
-                                         "spindle_pair_thermal"}
+                                         "spindle_pair_thermal", "spindle_shaft_thermal"}
     for name, description in listed.items():
         assert description and f"{name}" in out and description in out
     assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)
@@ -271,7 +271,8 @@ def test_examples_lists_every_packaged_scene(capsys):
                                   pytest.param("thrust_roller_shaft", marks=pytest.mark.slow),
                                   pytest.param("spherical_roller_shaft", marks=pytest.mark.slow),
                                   pytest.param("gearbox_6411_thermal_speed", marks=pytest.mark.slow),
-                                  pytest.param("spindle_pair_thermal", marks=pytest.mark.slow)])
+                                  pytest.param("spindle_pair_thermal", marks=pytest.mark.slow),
+                                  pytest.param("spindle_shaft_thermal", marks=(pytest.mark.slow, pytest.mark.extended))])
 def test_every_example_runs_by_name(capsys, tmp_path, name):
     """`diffbearing run NAME` runs each packaged example to exit 0 and writes its JSON."""
     path = tmp_path / "out.json"

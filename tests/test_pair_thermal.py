@@ -53,8 +53,8 @@ def test_the_warm_pair_balances_energy_and_carries_the_preload_of_its_clearance(
     assert float(jnp.sum(state.boundary_heat)) == pytest.approx(float(state.viscous_power + state.load_power),
                                                                 rel=1e-10)
     sources = jax.jit(lambda p, t: p.heat(t).sources)(pair, state.temperatures)
-    np.testing.assert_allclose(node_temperatures(bt.bearing_network(PATHS), sources)[:bt.FREE],
-                               state.temperatures[:bt.FREE], atol=1e-8)
+    np.testing.assert_allclose(node_temperatures(bt.bearing_network(PATHS), sources)[:bt.SEAT_NODES],
+                               state.temperatures[:bt.SEAT_NODES], atol=1e-8)
     running = bt.bearing_at(BEARING, MOUNTING, pair.operating, state.temperatures)[0]
     apart = solve_shaft(Shaft(bearing_set(running, "back_to_back", spacing=SPACING, offset=OFFSET),
                               ShaftLoads(jnp.zeros(1), pair.operating.force[None], pair.operating.moment[None]),

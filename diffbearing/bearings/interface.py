@@ -18,7 +18,8 @@ system needs of it (docs/extending.md, "Adding a bearing type"):
   which the effects read (`ratings.reference_life`), its ratings' inputs (`dynamic_load_rating`,
   `contact_ratings`, ISO 281's `equivalent_dynamic_load`; ISO 76's `static_load_rating`,
   `equivalent_static_load`, `pressure_safety`;
-  `rolling_element` for ISO 281's a_ISO; the friction models' rows, `friction_kind`), where a
+  `rolling_element` for ISO 281's a_ISO; the friction models' rows, `friction_kind`; where a
+  mounting's fits and temperatures act, `ring_section` and `with_clearance_change`), where a
   state stands against its envelope, the tilt it permits (`permissible_misalignment`) and its
   overrolling frequencies;
 * where its rolling elements leave the static split at speed (`carries_elements`), their state
@@ -59,6 +60,19 @@ class CondensedElements(eqx.Module):
     stiffness: jax.Array
     correction: jax.Array
     coupling: jax.Array
+
+
+class RingSection(eqx.Module):
+    """What a mounting's fits and temperatures act on (`systems.operating_clearance_change`): the
+    inner and outer raceway diameters [m] (d_m ∓ D: a ball bearing's groove bottoms), the rolling
+    element's diameter D [m] (a roller's at mid-length), the rings' material, and the diametral
+    clearance [m] they change (negative: a preloaded bearing)."""
+
+    inner_raceway_diameter: jax.Array
+    outer_raceway_diameter: jax.Array
+    element_diameter: jax.Array
+    material: eqx.Module
+    clearance: jax.Array
 
 
 CONTACT_KINDS = ("point", "line")
@@ -201,6 +215,17 @@ class AbstractSupport(eqx.Module):
         """α [rad]: the nominal contact angle its ratings and friction loads read (0 for radial
         contact; a tapered roller bearing's cup angle)."""
         return 0.0
+
+    def ring_section(self) -> "RingSection | None":
+        """Its rings' raceway diameters, rolling element, material and clearance (`RingSection`),
+        which a mounting's fits and temperatures act on (`systems.operating_clearance`); None where
+        the type takes no mounting (its clearance is not one diametral clearance)."""
+        return None
+
+    def with_clearance_change(self, change) -> "AbstractSupport":
+        """The support with its diametral clearance changed by `change` [m] (a mounting's:
+        `operating_clearance_change`), for the types whose `ring_section` is not None."""
+        raise NotImplementedError(f"{type(self).__name__} takes no mounting")
 
     def permissible_misalignment(self):
         """The largest tilt [rad] of its inner ring against its outer ring the catalogues permit:

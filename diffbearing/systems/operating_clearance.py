@@ -179,3 +179,12 @@ def operating_clearance_change(mounting: Mounting, bore, inner_raceway, outer_ra
         shaft_interference=shaft_interference,
         housing_interference=housing_interference,
     )
+
+
+def mounted_clearance_change(support, mounting: Mounting, bore, outside, inner_speed=0.0,
+                             outer_speed=0.0) -> OperatingClearance:
+    """`operating_clearance_change` of a bearing on a shaft (an `AbstractSupport` whose type takes a
+    mounting: its `ring_section`), of bore `bore` and outside diameter `outside` [m]."""
+    rings = support.ring_section()
+    return operating_clearance_change(mounting, bore, rings.inner_raceway_diameter, rings.outer_raceway_diameter,
+                                      outside, rings.element_diameter, rings.material, inner_speed, outer_speed)

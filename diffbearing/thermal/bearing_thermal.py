@@ -1,5 +1,6 @@
-"""The thermal–mechanical steady state of a ball bearing (or a preloaded pair, `pair_thermal`) in its
-mounting, solved as one fixed point: the friction heat warms the rings, shaft, housing and lubricant through a thermal network
+"""The thermal–mechanical steady state of a ball bearing (or a preloaded pair, `pair_thermal`; the
+bearings on a shaft, `shaft_thermal`) in its mounting, solved as one fixed point: the friction heat
+warms the rings, shaft, housing and lubricant through a thermal network
 (`thermal_network`); their temperatures set the operating clearance (the mounting model,
 `systems.operating_clearance`) and the lubricant's viscosity (its Walther line); the clearance and
 the load set the ball loads (`ball_equilibrium`), and with the viscosity the friction heat.
@@ -7,9 +8,11 @@ the load set the ball loads (`ball_equilibrium`), and with the viscosity the fri
 Nodes (`NODES`): inner ring, outer ring, lubricant, shaft, housing (free); ambient and oil inlet
 (held). Paths (`ThermalPaths`, conductances [W/K]): inner ring – shaft, outer ring – housing, each
 ring – lubricant, shaft – ambient, housing – ambient, and the circulating oil's flow from the inlet
-(ρc V̇; 0 for a bath or grease). Heat (Palmgren's moments, `friction.friction_torque`; Harris &
-Kotzalas, Rolling Bearing Analysis, 5th ed., vol. 1, ch. 13, for the split): the load-dependent
-loss M₁ ω, generated in the ball–raceway contacts, half into each ring (the balls pass their share
+(ρc V̇; 0 for a bath or grease). Bearings at several seats along a shaft have these five nodes
+each, the neighbouring seats' shaft and housing nodes joined by conduction along them. Heat
+(Palmgren's moments, `friction.friction_torque`; Harris & Kotzalas, Rolling Bearing Analysis, 5th
+ed., vol. 1, ch. 13, for the split): the load-dependent loss M₁ ω, generated in the ball–raceway
+contacts, half into each ring (the balls pass their share
 on to the rings they roll between); the viscous loss M₀ ω into the lubricant.
 
 Palmgren's P₁ is the bearing's external load (`friction_torque.friction_load`), so a clearance the
@@ -17,9 +20,10 @@ warmth closes into a preload raises the heat only where it shows in that load (t
 angular contact pair's bearings), not the internal preload of a single radial bearing: a
 contact-level loss model would see it.
 
-The unknowns are the five free temperatures T; the residual is R(T) = T − T_network(Q(T)), Q the
+The unknowns are the free temperatures T (five a seat); the residual is R(T) = T − T_network(Q(T)), Q the
 heat of the bearing at the state T gives (`AbstractHeatedBearing.heat`: one bearing,
-`MountedBallBearing`; a pair, `pair_thermal.MountedBallPair`). Newton (optimistix) on R with the implicit derivative of
+`MountedBallBearing`; a pair, `pair_thermal.MountedBallPair`; a shaft, `shaft_thermal.MountedShaft`).
+Newton (optimistix) on R with the implicit derivative of
 the root: ∂T/∂p = −(∂R/∂T)⁻¹ ∂R/∂p, through the inner equilibrium solve's own implicit derivative.
 Where no steady state exists inside the model (thermal runaway: a preloaded bearing whose warming
 closes its clearance faster than the paths carry the heat away), or the temperatures leave the
@@ -31,19 +35,21 @@ import abc
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 
 from ..bearings.ball import ball_equilibrium
+from ..bearings.ball.ball_support import BallSupport
+from ..bearings.interface import AbstractSupport
 from ..film.viscosity_temperature import walther_viscosity
 from ..friction import friction_torque
-from ..params import BallBearing, Operating, radial_clearance
+from ..params import BallBearing, Operating, clearance_changed, radial_clearance
 from ..newton import implicit_root, newton
-from ..ratings import static_safety
 from ..systems.operating_clearance import Mounting, operating_clearance_change
 from .thermal_network import ThermalNetwork, boundary_heat_flows, node_temperatures
 
 NODES = ("inner_ring", "outer_ring", "lubricant", "shaft", "housing", "ambient", "oil_inlet")
-FREE = 5  # the first five nodes are free
-EDGES = ((0, 3), (1, 4), (0, 2), (1, 2), (3, 5), (4, 5), (2, 6))
+SEAT_NODES = 5  # a seat's free nodes, the first five of NODES; the held ambient and oil inlet after all seats
+SEAT_EDGES = ((0, 3), (1, 4), (0, 2), (1, 2), (3, "ambient"), (4, "ambient"), (2, "oil_inlet"))
 TEMPERATURE_RANGE = (213.15, 523.15)  # K: the mounting model's (−60 … 250 °C)
 MAX_STEPS = 60
 RESIDUAL_TOLERANCE = 1e-6  # K: the largest |R| of a converged state
@@ -51,7 +57,10 @@ RESIDUAL_TOLERANCE = 1e-6  # K: the largest |R| of a converged state
 
 class ThermalPaths(eqx.Module):
     """The conductances [W/K] of a radial bearing's heat paths (module docstring) and the held
-    temperatures [K] of the ambient and the oil inlet."""
+    temperatures [K] of the ambient and the oil inlet. For bearings at several seats along a shaft
+    (`shaft_thermal`) each path is an array, one per seat in the order of their positions, and
+    `shaft_axial`, `housing_axial` (one fewer) join the shaft and housing nodes of the neighbouring
+    seats `axial_pairs` (None and (): one seat)."""
 
     inner_ring_shaft: jax.Array
     outer_ring_housing: jax.Array
@@ -62,15 +71,50 @@ class ThermalPaths(eqx.Module):
     oil_flow: jax.Array
     ambient_temperature: jax.Array
     inlet_temperature: jax.Array
+    shaft_axial: jax.Array | None = None
+    housing_axial: jax.Array | None = None
+    axial_pairs: tuple[tuple[int, int], ...] = eqx.field(static=True, default=())
+
+    @property
+    def seats(self) -> int:
+        return int(np.size(self.inner_ring_shaft))
+
+
+PATH_NAMES = ("inner_ring_shaft", "outer_ring_housing", "inner_ring_lubricant", "outer_ring_lubricant", "shaft_ambient",
+              "housing_ambient", "oil_flow")
+
+
+def node_names(seats: int) -> tuple[str, ...]:
+    """`NODES` for one seat; for several, each seat's five free nodes numbered (`inner_ring_0`, …),
+    then the ambient and the oil inlet."""
+    if seats == 1:
+        return NODES
+    return tuple(f"{name}_{seat}" for seat in range(seats) for name in NODES[:SEAT_NODES]) + NODES[SEAT_NODES:]
+
+
+def seat_node(seat: int, node: int) -> int:
+    """The index of a seat's free node (`NODES[node]`, node < 5) in the network."""
+    return SEAT_NODES * seat + node
 
 
 def bearing_network(paths: ThermalPaths) -> ThermalNetwork:
-    """The paths as a `ThermalNetwork` over `NODES`."""
-    conductances = jnp.stack([jnp.asarray(x, float) for x in (
-        paths.inner_ring_shaft, paths.outer_ring_housing, paths.inner_ring_lubricant, paths.outer_ring_lubricant,
-        paths.shaft_ambient, paths.housing_ambient, paths.oil_flow)])
-    held = jnp.stack([jnp.asarray(paths.ambient_temperature, float), jnp.asarray(paths.inlet_temperature, float)])
-    return ThermalNetwork(NODES, EDGES, (5, 6), conductances, held)
+    """The paths as a `ThermalNetwork` over `node_names(paths.seats)`."""
+    seats = paths.seats
+    held = {"ambient": SEAT_NODES * seats, "oil_inlet": SEAT_NODES * seats + 1}
+    per_seat = [jnp.broadcast_to(jnp.asarray(getattr(paths, name), float), (seats,)) for name in PATH_NAMES]
+    edges, conductances = [], []
+    for seat in range(seats):
+        for (near, far), values in zip(SEAT_EDGES, per_seat):
+            edges.append((seat_node(seat, near), held[far] if far in held else seat_node(seat, far)))
+            conductances.append(values[seat])
+    if seats > 1:
+        for node, values in ((3, paths.shaft_axial), (4, paths.housing_axial)):
+            for number, (near, far) in enumerate(paths.axial_pairs):
+                edges.append((seat_node(near, node), seat_node(far, node)))
+                conductances.append(jnp.asarray(values, float)[number])
+    temperatures = jnp.stack([jnp.asarray(paths.ambient_temperature, float), jnp.asarray(paths.inlet_temperature, float)])
+    return ThermalNetwork(node_names(seats), tuple(edges), (held["ambient"], held["oil_inlet"]),
+                          jnp.stack(conductances), temperatures)
 
 
 class WaltherLine(eqx.Module):
@@ -127,38 +171,37 @@ class ThermalState(eqx.Module):
     converged: jax.Array
 
 
-def mounted_at(mounting: Mounting, temperatures) -> Mounting:
-    """`mounting` with its ring, shaft and housing temperatures those of the nodes [K]."""
+def mounted_at(mounting: Mounting, temperatures, seat: int = 0) -> Mounting:
+    """`mounting` with its ring, shaft and housing temperatures those of the `seat`'s nodes [K]."""
     return eqx.tree_at(lambda m: (m.inner_ring_temperature, m.outer_ring_temperature, m.shaft_temperature,
                                   m.housing_temperature), mounting,
-                       (temperatures[0], temperatures[1], temperatures[3], temperatures[4]))
+                       tuple(temperatures[seat_node(seat, node)] for node in (0, 1, 3, 4)))
 
 
 def bearing_at(bearing: BallBearing, mounting: Mounting, operating: Operating, temperatures):
     """(the bearing at the operating clearance its mounting leaves at the node `temperatures`, that
-    clearance [m]). The change ΔG shifts the groove centres' radial distance by −ΔG/2 (the
-    interference ι − ΔG) and keeps the free contact angle: the same rings as the contact angle
-    arccos(1 − G/(2 B D_w)) at a clamped axial position (`bearing_set.clamped_offset`), without that
-    angle's infinite slope at G = 0, through which a warming bearing's clearance may pass."""
+    clearance [m]): the change ΔG as `params.clearance_changed` makes it (the free contact angle
+    kept)."""
     pitch, ball = bearing.pitch_diameter, bearing.ball_diameter
     change = operating_clearance_change(mounted_at(mounting, temperatures), bearing.bore, pitch - ball, pitch + ball,
                                         bearing.outer_diameter, ball, bearing.ring_material, operating.inner_speed,
                                         operating.outer_speed).change
-    running = eqx.tree_at(lambda b: b.interference, bearing, bearing.interference - change)
+    running = clearance_changed(bearing, change)
     return running, radial_clearance(running)
 
 
-def palmgren_powers(running: BallBearing, force, speed, viscosity, factors: PalmgrenFactors):
-    """(viscous power M₀ω, load-dependent power M₁ω) [W] of one ball bearing carrying `force`
-    ([Fx, Fy, Fz] in its own frame [N]) at the relative ring speed `speed` [rad/s] in oil of
-    kinematic `viscosity` [m²/s] (`friction_torque`: Palmgren's moments; f₁ from P₀/C₀)."""
+def palmgren_powers(support: AbstractSupport, force, speed, viscosity, factors: PalmgrenFactors):
+    """(viscous power M₀ω, load-dependent power M₁ω) [W] of a bearing (`support`: its friction kind,
+    P₀, C₀ and contact angle as its type rates them) carrying `force` ([Fx, Fy, Fz] in its own frame
+    [N]) at the relative ring speed `speed` [rad/s] in oil of kinematic `viscosity` [m²/s]
+    (`friction_torque`: Palmgren's moments; f₁ from P₀/C₀)."""
     radial, axial = jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
-    f1 = friction_torque.speed_factor(factors.coefficient, factors.exponent,
-                                      static_safety.ball_bearing_equivalent_static_load(running, force),
-                                      static_safety.ball_bearing_static_load_rating(running))
-    load = friction_torque.load_torque(f1, friction_torque.friction_load(running.kind, radial, axial),
-                                       running.pitch_diameter) * speed
-    viscous = friction_torque.viscous_torque(factors.f0, viscosity, speed, running.pitch_diameter) * speed
+    f1 = friction_torque.speed_factor(factors.coefficient, factors.exponent, support.equivalent_static_load(force),
+                                      support.static_load_rating())
+    pitch = 2.0 * support.pitch_radius()
+    load = friction_torque.load_torque(f1, friction_torque.friction_load(support.friction_kind("palmgren"), radial, axial,
+                                                                         support.nominal_contact_angle()), pitch) * speed
+    viscous = friction_torque.viscous_torque(factors.f0, viscosity, speed, pitch) * speed
     return viscous, load
 
 
@@ -187,8 +230,12 @@ class MountedBallBearing(AbstractHeatedBearing):
         solution = ball_equilibrium.solve_equilibrium(running, self.operating, self.model)
         speed = jnp.abs(self.operating.inner_speed - self.operating.outer_speed)
         viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100, temperatures[2])
-        viscous, load = palmgren_powers(running, solution.force[:3], speed, viscosity, self.factors)
+        viscous, load = palmgren_powers(BallSupport(running, 0.0), solution.force[:3], speed, viscosity, self.factors)
         return BearingHeat(ring_sources(viscous, load), clearance, viscous, load, solution, solution.converged)
+
+
+def _free_count(paths: ThermalPaths) -> int:
+    return SEAT_NODES * paths.seats
 
 
 def _assembled(free, paths: ThermalPaths):
@@ -202,7 +249,7 @@ def _residual(free, args):
     model and the lubricant's line do not hold; a root inside is unchanged."""
     heated, paths = args
     sources = heated.heat(_assembled(jnp.clip(free, *TEMPERATURE_RANGE), paths)).sources
-    return free - node_temperatures(bearing_network(paths), sources)[:FREE]
+    return free - node_temperatures(bearing_network(paths), sources)[:_free_count(paths)]
 
 
 def _damped_newton(residual, start, args):
@@ -219,16 +266,17 @@ def solve_thermal(heated: AbstractHeatedBearing, paths: ThermalPaths) -> Thermal
     start is the network's temperatures for the heat at the ambient temperature. Differentiable in
     every input (implicit function theorem)."""
     network = bearing_network(paths)
-    cold = jnp.full(FREE, jnp.asarray(paths.ambient_temperature, float))
+    count = _free_count(paths)
+    cold = jnp.full(count, jnp.asarray(paths.ambient_temperature, float))
     start_sources = jax.lax.stop_gradient(heated.heat(_assembled(cold, paths)).sources)
-    start = jax.lax.stop_gradient(node_temperatures(network, start_sources)[:FREE])
+    start = jax.lax.stop_gradient(node_temperatures(network, start_sources)[:count])
     start = jnp.clip(start, *TEMPERATURE_RANGE)
     value, steps = implicit_root(_residual, start, (heated, paths), _damped_newton, has_aux=True)
     inside = jnp.all((value >= TEMPERATURE_RANGE[0]) & (value <= TEMPERATURE_RANGE[1]))
     free = jnp.clip(value, *TEMPERATURE_RANGE)
     temperatures = _assembled(free, paths)
     found = heated.heat(temperatures)
-    residual = jax.lax.stop_gradient(jnp.max(jnp.abs(free - node_temperatures(network, found.sources)[:FREE])))
+    residual = jax.lax.stop_gradient(jnp.max(jnp.abs(free - node_temperatures(network, found.sources)[:count])))
     converged = inside & found.converged & (residual < RESIDUAL_TOLERANCE) & (steps < MAX_STEPS)
     return ThermalState(temperatures, found.clearance, found.mechanics, found.viscous_power, found.load_power,
                         boundary_heat_flows(network, temperatures, found.sources), residual, converged)

@@ -15,11 +15,18 @@ oil, a circulating oil flow): closed forms of `conductance` and one convection c
   the bearing on each side), h of the turning shaft in air plus `STILL_AIR`; or the scene's;
 - housing – ambient: convection h_housing over its outside cylinder and both end faces;
 - the oil's flow: ρc V̇ with DIN 732's ρc of mineral oil (`thermal_speed.OIL_HEAT_PER_FLOW`).
+
+Bearings at several seats along a shaft (`shaft_paths`): each seat has these paths with its own
+bearing's geometry and a housing piece of the housing's length around it; the shaft's end fins and
+the housing's end faces belong to the outermost seats; the shaft and the housing conduct axially
+between neighbouring seats (the shaft's surface between two seats, inside the housing, is left
+out: no path from it to the air).
 """
 
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 
 from ..film.viscosity_temperature import walther_viscosity
 from .bearing_thermal import ThermalPaths, WaltherLine
@@ -90,16 +97,18 @@ def shaft_coefficient(cooling: Cooling, shaft_diameter):
                                                      AIR_PRANDTL)
 
 
-def mounting_paths(geometry: MountingGeometry, cooling: Cooling) -> ThermalPaths:
-    """The `ThermalPaths` of the parts and the cooling (module docstring)."""
+def _seat_paths(geometry: MountingGeometry, cooling: Cooling, ends: int) -> dict:
+    """The conductances [W/K] of one seat's paths (`bearing_thermal.PATH_NAMES`), the shaft and the
+    housing reaching past it on `ends` of its two sides (2: a single seat; on a shaft the outermost
+    seats 1, the others 0): a shaft end's fin and a housing end face on each."""
     g = geometry
     pitch = 0.5 * (g.inner_raceway_diameter + g.outer_raceway_diameter)
     oil = oil_coefficient(cooling, pitch)
     air = shaft_coefficient(cooling, g.bore)
     shaft_section = 0.25 * jnp.pi * (g.bore ** 2 - g.shaft_bore ** 2)
     housing_surface = jnp.pi * g.housing_outer_diameter * g.housing_length \
-        + 0.5 * jnp.pi * (g.housing_outer_diameter ** 2 - g.outer_diameter ** 2)
-    return ThermalPaths(
+        + ends * 0.25 * jnp.pi * (g.housing_outer_diameter ** 2 - g.outer_diameter ** 2)
+    return dict(
         inner_ring_shaft=cylindrical_shell(g.ring_conductivity, g.width, 0.5 * g.bore, 0.5 * g.inner_raceway_diameter),
         outer_ring_housing=in_series(
             cylindrical_shell(g.ring_conductivity, g.width, 0.5 * g.outer_raceway_diameter, 0.5 * g.outer_diameter),
@@ -107,9 +116,39 @@ def mounting_paths(geometry: MountingGeometry, cooling: Cooling) -> ThermalPaths
                               0.5 * g.housing_outer_diameter)),
         inner_ring_lubricant=convection(oil, jnp.pi * g.inner_raceway_diameter * g.width),
         outer_ring_lubricant=convection(oil, jnp.pi * g.outer_raceway_diameter * g.width),
-        shaft_ambient=2.0 * fin(air, jnp.pi * g.bore, g.shaft_conductivity, shaft_section, g.shaft_length),
+        shaft_ambient=ends * fin(air, jnp.pi * g.bore, g.shaft_conductivity, shaft_section, g.shaft_length),
         housing_ambient=convection(cooling.housing_coefficient, housing_surface),
         oil_flow=advection(cooling.oil_flow, OIL_HEAT_PER_FLOW),
-        ambient_temperature=cooling.ambient_temperature,
-        inlet_temperature=cooling.inlet_temperature,
     )
+
+
+def mounting_paths(geometry: MountingGeometry, cooling: Cooling) -> ThermalPaths:
+    """The `ThermalPaths` of the parts and the cooling (module docstring)."""
+    return ThermalPaths(**_seat_paths(geometry, cooling, 2), ambient_temperature=cooling.ambient_temperature,
+                        inlet_temperature=cooling.inlet_temperature)
+
+
+def shaft_paths(seats: tuple[MountingGeometry, ...], positions, cooling: Cooling) -> ThermalPaths:
+    """The `ThermalPaths` of bearings at several `seats` along a shaft, at axial `positions` [m]
+    (concrete: their order sets which seats neighbour; module docstring): each seat's own paths, the shaft's ends beyond the
+    outermost seats, and conduction along the shaft and the housing between neighbouring seats —
+    through the mean of the two seats' shaft sections, and through the housing's wall outside the
+    larger outer diameter — over the distance of their centres."""
+    order = [int(seat) for seat in np.argsort(np.asarray(positions))]
+    ends = {order[0]: 1, order[-1]: 1} if len(order) > 1 else {order[0]: 2}
+    own = [_seat_paths(geometry, cooling, ends.get(seat, 0)) for seat, geometry in enumerate(seats)]
+    pairs = tuple(zip(order, order[1:]))
+    shaft, housing = [], []
+    for near, far in pairs:
+        first, second = seats[near], seats[far]
+        distance = jnp.abs(jnp.asarray(positions[far]) - jnp.asarray(positions[near]))
+        sections = [0.25 * jnp.pi * (g.bore ** 2 - g.shaft_bore ** 2) for g in (first, second)]
+        shaft.append(first.shaft_conductivity * 0.5 * (sections[0] + sections[1]) / distance)
+        wall = 0.25 * jnp.pi * (first.housing_outer_diameter ** 2 - jnp.maximum(first.outer_diameter,
+                                                                                  second.outer_diameter) ** 2)
+        housing.append(first.housing_conductivity * wall / distance)
+    stacked = {name: jnp.stack([jnp.asarray(paths[name], float) for paths in own]) for name in own[0]}
+    return ThermalPaths(**stacked, ambient_temperature=cooling.ambient_temperature,
+                        inlet_temperature=cooling.inlet_temperature,
+                        shaft_axial=jnp.stack(shaft) if pairs else None, housing_axial=jnp.stack(housing) if pairs else None,
+                        axial_pairs=pairs)

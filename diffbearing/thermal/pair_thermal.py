@@ -71,7 +71,7 @@ class MountedBallPair(AbstractHeatedBearing):
         solution = solve_shaft(shaft)
         viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100, temperatures[2])
         speed = jnp.abs(self.operating.inner_speed)
-        powers = [palmgren_powers(support.bearing, force[:3], speed, viscosity, self.factors)
+        powers = [palmgren_powers(support, force[:3], speed, viscosity, self.factors)
                   for support, force in zip(supports, solution.bearing_forces)]
         viscous, load = sum(p[0] for p in powers), sum(p[1] for p in powers)
         return BearingHeat(ring_sources(viscous, load), clearance, viscous, load, solution, solution.converged)

@@ -111,6 +111,7 @@ ADAPTER = register(Adapter(
     },
     # a ball bearing's with effects.thermal: the thermal effect's, at the temperature it solves
     inputs=(InputBuilder(("lubricant",), BALL_BEARING_KINDS, lubricant_input, scene_keys=("!effects.thermal",)),
-            InputBuilder(("lubricant",), ROLLER_KINDS + SHAFT, lubricant_input),
+            InputBuilder(("lubricant",), ROLLER_KINDS, lubricant_input),
+            InputBuilder(("lubricant",), SHAFT, lubricant_input, scene_keys=("!effects.thermal",)),
             InputBuilder(("roughness",), TYPES, _roughness)),
 ))

@@ -12,9 +12,17 @@ import jax
 import jax.numpy as jnp
 
 from ... import overrolling
-from ...params import SILICON_NITRIDE, BallBearing, Operating, _as_float, groove_curvature_centre_distance
+from ...params import (
+    SILICON_NITRIDE,
+    BallBearing,
+    Operating,
+    _as_float,
+    clearance_changed,
+    groove_curvature_centre_distance,
+    radial_clearance,
+)
 from ...ratings import life, static_safety
-from ..interface import AbstractSupport, CondensedElements, ContactLoads, check_orientation
+from ..interface import AbstractSupport, CondensedElements, ContactLoads, RingSection, check_orientation
 from . import ball_equilibrium, ball_validity
 from .ball_equilibrium import BallModel, BallResults
 
@@ -109,6 +117,15 @@ class BallSupport(AbstractSupport):
 
     def nominal_contact_angle(self):
         return self.bearing.nominal_contact_angle
+
+    def ring_section(self) -> RingSection:
+        """The groove bottoms d_m ∓ D_w, the ball, the rings' material, G_r (`params.radial_clearance`)."""
+        pitch, ball = self.bearing.pitch_diameter, self.bearing.ball_diameter
+        return RingSection(pitch - ball, pitch + ball, ball, self.bearing.ring_material, radial_clearance(self.bearing))
+
+    def with_clearance_change(self, change) -> "BallSupport":
+        """`params.clearance_changed`: the groove centres moved, the free contact angle kept."""
+        return eqx.tree_at(lambda support: support.bearing, self, clearance_changed(self.bearing, change))
 
     def envelope(self, contacts: ContactLoads):
         """`ball_validity`: the largest approach / D_w, the largest loaded |α|, and an angular-contact

@@ -9,7 +9,7 @@ import jax.numpy as jnp
 from ... import overrolling
 from ...params import _as_float, _is_concrete
 from ...ratings import roller_life, static_safety
-from ..interface import AbstractSupport, ContactLoads, check_orientation
+from ..interface import AbstractSupport, ContactLoads, RingSection, check_orientation
 from . import roller_equilibrium
 from .roller_equilibrium import RollerModel, RollerOperating, RollerRaceways, RollerResults
 from .roller_geometry import RollerBearing, mean_roller_diameter
@@ -102,6 +102,22 @@ class RollerSupport(AbstractSupport):
     def nominal_contact_angle(self):
         """The cup angle (0 for a cylindrical roller bearing)."""
         return self.raceways.cup_angle
+
+    def ring_section(self) -> RingSection | None:
+        """A cylindrical roller bearing's raceways d_m ∓ D, its roller, material and clearance P_d; None for a
+        tapered one (its clearance is its axial setting, not a diametral clearance the fits close)."""
+        if self.bearing.kind != "cylindrical_roller":
+            return None
+        pitch, roller = self.raceways.pitch_diameter, mean_roller_diameter(self.bearing)
+        return RingSection(pitch - roller, pitch + roller, roller, self.bearing.material,
+                           self.raceways.diametral_clearance)
+
+    def with_clearance_change(self, change) -> "RollerSupport":
+        """The raceways' diametral clearance P_d + change (a cylindrical roller bearing's)."""
+        if self.ring_section() is None:
+            raise NotImplementedError("a tapered roller bearing takes no mounting (its axial setting)")
+        return eqx.tree_at(lambda support: support.raceways.diametral_clearance, self,
+                           self.raceways.diametral_clearance + change)
 
     def envelope(self, contacts: ContactLoads):
         """The largest lamina approach / mean roller diameter (limit

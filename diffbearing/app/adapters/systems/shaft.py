@@ -16,33 +16,29 @@ import numpy as np
 
 from ....ratings import life
 from ....ratings.reference_life import contact_reference_life
-from ....systems.flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, shaft_mesh, solve_flexible_shaft
+from ....systems.flexible_shaft import FlexibleShaft, flexible_shaft_stiffness, solve_flexible_shaft
 from ....systems.operating_clearance import SEAT_MATERIALS
-from ....systems.shaft_beam import ShaftSections
 from ....systems.shaft_equilibrium import (
     RESIDUAL_TOLERANCE,
     Shaft,
-    ShaftLoads,
     shaft_stiffness,
     solve_shaft,
     transfer,
     turned,
 )
 from ...formatting import format_number, stiffness_lines
-from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, Reads, mountings, quantity, register
+from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, mountings, quantity, register
 from ...units import to_si
-from .shaft_layout import ShaftLayout, check_dynamic_ratings, layout_supports, moment_warnings
+from .shaft_layout import PLACEMENT, ShaftLayout, check_dynamic_ratings, layout_supports, moment_warnings, shaft_layout
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import shoulder_checks, validity_errors
 from ..bearings.roller_bearing import ADAPTER as ROLLER_BEARING_ADAPTER
-from ..designation import SCENE_LAYER_KEYS
 
 # the [fidelity] keys of the ball and roller bearing models, read by the shaft's block for every bearing
 FIDELITY = {key: dataclasses.replace(adapter.keys[key], read_by=("shaft",))
             for adapter, names in ((BALL_ADAPTER, ("fidelity.hertz", "fidelity.race_control", "fidelity.hertz_constants")),
                                    (ROLLER_BEARING_ADAPTER, ("fidelity.laminae",)))
             for key in names}
-PLACEMENT = ("position", "orientation", "offset")
 ORIENTATIONS = {"+z": 1, "-z": -1, "−z": -1}
 
 
@@ -100,70 +96,6 @@ def _section_entry(index: int, table: dict, convert) -> dict:
         raise ValueError(f"{where}: missing required key {missing[0]!r}")
     return {name: to_si(table.get(name, 0.0), "length", f"{where}.{name}")
             for name in ("from", "to", "outer_diameter", "inner_diameter")}
-
-
-def _sections(v, positions, loads) -> tuple:
-    """(ShaftSections, BeamMesh) of `[[shaft.sections]]`, or (None, None) for a rigid shaft."""
-    if "shaft.sections" not in v:
-        return None, None
-    entries = v["shaft.sections"]
-    name = v.get("shaft.material", "steel")
-    sections = ShaftSections([e["from"] for e in entries], [e["to"] for e in entries],
-                             [e["outer_diameter"] for e in entries], [e["inner_diameter"] for e in entries],
-                             SEAT_MATERIALS[name][0])
-    return sections, shaft_mesh(sections, positions, [load["position"] for load in loads],
-                                v.get("shaft.stiffness_at", 0.0), v.get("shaft.element_length"))
-
-
-def _check_spacing(entries) -> None:
-    """Two bearings' centres at least one rolling element apart (closer, their rows would overlap: a
-    double-row bearing is one entry of type double_row_angular_contact_ball, not two at one
-    position); ValueError names the later one."""
-    size = lambda entry: max(entry.get(f"bearing.{name}", 0.0) for name in ("ball_diameter", "roller_diameter",
-                                                                            "roller_large_diameter"))
-    order = sorted(range(len(entries)), key=lambda index: entries[index]["position"])
-    for first, second in zip(order, order[1:]):
-        gap = abs(entries[second]["position"] - entries[first]["position"])
-        least = max(size(entries[first]), size(entries[second]))
-        if gap < least:
-            raise ValueError(f"bearings[{max(first, second)}].position: {gap * 1e3:.4g} mm from bearings"
-                             f"[{min(first, second)}], closer than one rolling element ({least * 1e3:.4g} mm)")
-
-
-def _layout(v, built) -> dict:
-    shared = {key: v[key] for key in v if key.startswith("material.")}  # (items() would mark every key read)
-    bearings, envelopes, widths, shoulders = [], [], [], []
-    for index, entry in enumerate(v["bearings"]):
-        reads = Reads({**shared, **entry})
-        envelopes.append((reads.get("bearing.bore"), reads.get("bearing.outer_diameter")))
-        widths.append(reads.get("bearing.total_width", reads.get("bearing.width")))
-        mounting = mountings()[entry["bearing.type"]]
-        try:
-            bearings.append(mounting.parameters(reads))
-        except ValueError as error:
-            raise ValueError(f"bearings[{index}]: {str(error).replace('bearing.', '')}") from None
-        shoulders.append(None)
-        if mounting.shoulders is not None:
-            try:
-                shoulders[-1] = mounting.shoulders(reads, bearings[-1])
-            except ValueError as error:
-                raise ValueError(f"bearings[{index}]: {str(error).replace('bearing.', '')}") from None
-        unread = sorted(set(entry) - reads.asked - set(PLACEMENT) - set(SCENE_LAYER_KEYS))
-        if unread:
-            raise ValueError(f"bearings[{index}]: key {unread[0].removeprefix('bearing.')!r} is not read by a "
-                             "bearing on a shaft")
-    loads = v["loads"]
-    positions = [entry["position"] for entry in v["bearings"]]
-    _check_spacing(v["bearings"])
-    sections, mesh = _sections(v, positions, loads)
-    return {"shaft": ShaftLayout(
-        tuple(bearings), positions, [entry["offset"] for entry in v["bearings"]],
-        ShaftLoads(np.array([load["position"] for load in loads]),  # forces and moments may be a duty cycle's tracers
-                   jnp.stack([jnp.asarray(load["force"], float) for load in loads]),
-                   jnp.stack([jnp.asarray(load["moment"], float) for load in loads])),
-        v.get("shaft.speed", 0.0), v.get("shaft.stiffness_at", 0.0),
-        tuple(entry["orientation"] for entry in v["bearings"]), tuple(envelopes), tuple(shoulders), sections, mesh,
-        tuple(entry["bearing.type"] for entry in v["bearings"]), tuple(widths))}
 
 
 def _life(support, contacts):
@@ -571,7 +503,8 @@ ADAPTER = register(Adapter(
         **FIDELITY,
     },
     required={"shaft": ("bearings", "loads")},
-    inputs=(InputBuilder(("shaft",), SHAFT, _layout),),
+    # with effects.mounting or effects.thermal, their adapters build the layout (the bearings as mounted)
+    inputs=(InputBuilder(("shaft",), SHAFT, shaft_layout, scene_keys=("!effects.mounting", "!effects.thermal")),),
     blocks=(BLOCK,),
     header=_header,
     report=_report,

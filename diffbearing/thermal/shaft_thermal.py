@@ -1,0 +1,97 @@
+"""The bearings on a rigid shaft (`systems.shaft_equilibrium`) in the thermal–mechanical fixed point
+(`bearing_thermal`): each bearing sits at its own seat of the network (its rings, lubricant, shaft
+and housing nodes; `mounting_paths.shaft_paths` joins the seats along the shaft and the housing),
+its fits and the temperatures of its seat set its operating clearance (the mounting model through
+its type's `AbstractSupport.ring_section` and `with_clearance_change`), and the shaft's equilibrium
+with every bearing at its clearance sets the loads each carries, its preload included, and with the
+viscosity at its seat's lubricant node its Palmgren heat. A warm front bearing that closes its
+clearance, or a shaft that grows against a located pair, shows in every bearing's load.
+
+A bearing type takes part where its support gives a `ring_section` (ball bearings, cylindrical
+roller bearings); its friction kind's Palmgren factors are those of its `PalmgrenFactors`.
+"""
+
+import jax
+import jax.numpy as jnp
+
+from ..film.viscosity_temperature import walther_viscosity
+from ..friction.friction_torque import PALMGREN_CONSTANTS
+from ..systems.operating_clearance import mounted_clearance_change
+from ..systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
+from .bearing_thermal import (
+    SEAT_NODES,
+    AbstractHeatedBearing,
+    BearingHeat,
+    PalmgrenFactors,
+    WaltherLine,
+    mounted_at,
+    palmgren_powers,
+    ring_sources,
+    seat_node,
+)
+
+
+class MountedShaft(AbstractHeatedBearing):
+    """A rigid shaft on `supports` (each an `AbstractSupport` with a `ring_section`, at its clearance
+    as given), bearing k in `mountings[k]` (its fits; the temperatures are the unknowns) with bore
+    and outside diameter `bores[k]`, `outer_diameters[k]` [m] and Palmgren's `factors[k]`, under
+    `loads`, turning at `speed` [rad/s] (outer rings fixed), in `oil`. Bearing k's nodes are seat k's
+    (`bearing_thermal.node_names`)."""
+
+    supports: tuple
+    mountings: tuple
+    bores: jax.Array
+    outer_diameters: jax.Array
+    factors: tuple
+    loads: ShaftLoads
+    speed: jax.Array
+    oil: WaltherLine
+
+    def __check_init__(self):
+        if not (len(self.supports) == len(self.mountings) == len(self.factors)):
+            raise ValueError("supports, mountings, factors: one each per bearing")
+        for number, support in enumerate(self.supports):
+            if support.ring_section() is None:
+                raise ValueError(f"bearings[{number}]: its type takes no mounting (no diametral clearance the fits "
+                                 "and temperatures change)")
+
+    def clearance_changes(self, temperatures):
+        """Each bearing's change of diametral clearance [m] (K,) by its fits at its seat's node
+        `temperatures` and the shaft's speed (`operating_clearance.mounted_clearance_change`)."""
+        return jnp.stack([mounted_clearance_change(support, mounted_at(mounting, temperatures, seat), self.bores[seat],
+                                                   self.outer_diameters[seat], self.speed).change
+                          for seat, (support, mounting) in enumerate(zip(self.supports, self.mountings))])
+
+    def supports_at(self, temperatures) -> tuple:
+        """The supports at the clearances the node `temperatures` leave."""
+        return tuple(support.with_clearance_change(change)
+                     for support, change in zip(self.supports, self.clearance_changes(temperatures)))
+
+    def heat(self, temperatures) -> BearingHeat:
+        """The shaft's equilibrium at the warm clearances; each bearing's Palmgren moments from the
+        load it carries at its seat's lubricant viscosity, into its seat's nodes. `clearance`,
+        `viscous_power` and `load_power` are per bearing (K,)."""
+        warm = self.supports_at(temperatures)
+        solution = solve_shaft(Shaft(warm, self.loads, self.speed))
+        speed = jnp.abs(self.speed)
+        viscous, load = [], []
+        for seat, (support, force, factors) in enumerate(zip(warm, solution.bearing_forces, self.factors)):
+            viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100,
+                                          temperatures[seat_node(seat, 2)])
+            powers = palmgren_powers(support, force[:3], speed, viscosity, factors)
+            viscous.append(powers[0])
+            load.append(powers[1])
+        seats = [ring_sources(v, w)[:SEAT_NODES] for v, w in zip(viscous, load)]
+        sources = jnp.concatenate([*seats, jnp.zeros(2)])
+        clearance = jnp.stack([support.ring_section().clearance for support in warm])
+        return BearingHeat(sources, clearance, jnp.stack(viscous), jnp.stack(load), solution, solution.converged)
+
+
+def shaft_factors(supports, f0) -> tuple[PalmgrenFactors, ...]:
+    """Each bearing's `PalmgrenFactors`: f₀ `f0[k]` and its friction kind's f₁ = a (P₀/C₀)^b
+    (`friction_torque.PALMGREN_CONSTANTS` of `AbstractSupport.friction_kind`)."""
+    found = []
+    for support, own in zip(supports, f0):
+        _, _, coefficient, exponent = PALMGREN_CONSTANTS[support.friction_kind("palmgren")]
+        found.append(PalmgrenFactors(jnp.asarray(own, float), coefficient, exponent))
+    return tuple(found)
