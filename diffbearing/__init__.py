@@ -209,6 +209,7 @@ from .systems.static_capacity import (
     capacity_point as capacity_point,
 )
 from .thermal.bearing_thermal import (
+    AbstractFrictionHeat as AbstractFrictionHeat,
     AbstractHeatedBearing as AbstractHeatedBearing,
     BearingHeat as BearingHeat,
     MountedBallBearing as MountedBallBearing,
@@ -226,6 +227,8 @@ from .thermal.mounting_paths import (
 )
 from .thermal.pair_thermal import MountedBallPair as MountedBallPair
 from .thermal.shaft_thermal import MountedShaft as MountedShaft, shaft_factors as shaft_factors
+from .thermal.skf_heat import SkfHeat as SkfHeat
+from .friction.skf_friction import SkfBearing as SkfBearing
 from .thermal.thermal_network import (
     ThermalNetwork as ThermalNetwork,
     boundary_heat_flows as boundary_heat_flows,

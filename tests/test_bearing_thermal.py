@@ -53,7 +53,7 @@ def test_the_fixed_point_balances_energy_and_is_the_loop_of_guesses():
     heated = _mounted(operating=operating)
     state = solve(heated, PATHS)
     assert bool(state.converged)
-    power = float(state.viscous_power + state.load_power)
+    power = float(state.lubricant_power + state.ring_power)
     assert float(jnp.sum(state.boundary_heat)) == pytest.approx(power, rel=1e-10)
     network = bt.bearing_network(PATHS)
     sources = heat(heated, state.temperatures)
@@ -76,7 +76,7 @@ def test_a_bearing_at_rest_stays_at_the_ambient_temperature():
     """No speed, no heat: every free node at the held temperatures' mix (the oil inlet 20 K above the
     ambient warms the lubricant), the clearance the cold mounted one's."""
     state = solve(_mounted(operating=_operating(0.0)), PATHS)
-    assert bool(state.converged) and float(state.viscous_power + state.load_power) == 0.0
+    assert bool(state.converged) and float(state.lubricant_power + state.ring_power) == 0.0
     zero = node_temperatures(bt.bearing_network(PATHS), jnp.zeros(7))
     np.testing.assert_allclose(state.temperatures, zero, atol=1e-9)
 

@@ -50,7 +50,7 @@ def test_the_warm_pair_balances_energy_and_carries_the_preload_of_its_clearance(
     pair = _pair()
     state = solve(pair, PATHS)
     assert bool(state.converged)
-    assert float(jnp.sum(state.boundary_heat)) == pytest.approx(float(state.viscous_power + state.load_power),
+    assert float(jnp.sum(state.boundary_heat)) == pytest.approx(float(state.lubricant_power + state.ring_power),
                                                                 rel=1e-10)
     sources = jax.jit(lambda p, t: p.heat(t).sources)(pair, state.temperatures)
     np.testing.assert_allclose(node_temperatures(bt.bearing_network(PATHS), sources)[:bt.SEAT_NODES],

@@ -18,7 +18,9 @@ from diffbearing.bearings.roller.roller_equilibrium import roller_raceways
 from diffbearing.bearings.roller.roller_geometry import roller_bearing
 from diffbearing.bearings.roller.roller_profile import roller_profile
 from diffbearing.bearings.roller.roller_support import RollerSupport
-from diffbearing.params import BEARING_STEEL, ball_bearing, radial_clearance
+from diffbearing.film.viscosity_temperature import walther_viscosity
+from diffbearing.params import BEARING_STEEL, ISO_VG_VISCOSITY_100, ball_bearing, radial_clearance
+from diffbearing.ratings.life_modification import reference_viscosity
 from diffbearing.systems import bearing_fits
 from diffbearing.systems.bearing_set import bearing_set, preload_offset
 from diffbearing.systems.operating_clearance import SEAT_MATERIALS, Mounting, mounted_clearance_change, operating_clearance_change
@@ -145,7 +147,7 @@ def test_the_warm_shaft_is_its_networks_and_its_mountings_state():
     shaft, paths = _spindle()
     state = solve(shaft, paths)
     assert bool(state.converged)
-    assert float(jnp.sum(state.boundary_heat)) == pytest.approx(float(jnp.sum(state.viscous_power + state.load_power)),
+    assert float(jnp.sum(state.boundary_heat)) == pytest.approx(float(jnp.sum(state.lubricant_power + state.ring_power)),
                                                                 rel=1e-10)
     sources = jax.jit(lambda s, t: s.heat(t).sources)(shaft, state.temperatures)
     np.testing.assert_allclose(node_temperatures(bt.bearing_network(paths), sources)[:15], state.temperatures[:15],
@@ -189,7 +191,8 @@ def test_the_spindle_shaft_example_holds_one_state():
     """spindle_shaft_thermal: no error; each bearing's clearance as the shaft runs it, as the mounting
     reports it and as the fixed point solved it are one (1e-15 m); the shaft's loads are the fixed
     point's (1e-8); the heat leaving is the friction heat (1e-10); the front pair's operating preload
-    exceeds its matched 500 N, the rear bearing carries none; ISO 15312's n_θr beside it."""
+    exceeds its matched 500 N, the rear bearing carries none; ISO 15312's n_θr beside it; a_ISO's κ is
+    ν/ν₁ with ν at the hottest bearing's lubricant temperature (1e-12)."""
     result = _run(example_scene("spindle_shaft_thermal"))
     values = result.values
     assert result.problems[0] == []
@@ -205,6 +208,11 @@ def test_the_spindle_shaft_example_holds_one_state():
     preload = np.asarray(values["bearings.thermal.operating_preload"])
     assert preload[0] == pytest.approx(preload[1], rel=1e-6) and preload[0] > 500.0 and preload[2] == 0.0
     assert np.all(np.asarray(values["bearings.thermal_speed.reference_speed"]) > 0.0)
+    # a_ISO's κ at the hottest bearing's lubricant temperature on ISO VG 32's Walther line
+    hottest = float(np.max(values["bearings.thermal.lubricant_temperature"]))
+    viscosity = walther_viscosity(32e-6, ISO_VG_VISCOSITY_100[32] * 1e-6, hottest)
+    np.testing.assert_allclose(values["bearings.viscosity_ratio"],
+                               float(viscosity / reference_viscosity(6000.0 * np.pi / 30, 90e-3)), rtol=1e-12)
 
 
 GEARBOX = open(example_scene("gearbox_shaft")).read()

@@ -8,7 +8,8 @@ import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.friction.friction_torque import PALMGREN_CONSTANTS
-from diffbearing.params import with_radial_clearance
+from diffbearing.film.viscosity_temperature import walther_viscosity
+from diffbearing.params import ISO_VG_VISCOSITY_100, with_radial_clearance
 from diffbearing.ratings.static_safety import ball_bearing_static_load_rating
 
 from .helpers import BEARING_6411E, assert_exits_2_naming, example_scene
@@ -20,6 +21,8 @@ width = "33 mm"
 
 [lubricant]
 preset = "iso_vg_68"
+supply = "oil_bath"
+cleanliness = "-/17/14"
 
 [operating]
 inner_speed = "3000 rpm"
@@ -33,6 +36,7 @@ housing_material = "cast_iron"
 [effects]
 mounting = true
 thermal = true
+life = true
 """
 
 
@@ -64,7 +68,8 @@ def test_the_spindle_pair_example_holds_one_state():
 @pytest.mark.slow
 def test_a_single_bearing_runs_at_the_state_it_solves(tmp_path):
     """A 6411 on a tight shaft: the equilibrium's clearance is the state's (1e-15 m); the load heat is
-    Palmgren's f₁ P₁ d_m ω with P₁ = F_r = 8 kN (HR 1's 62-series factors; 1e-9)."""
+    Palmgren's f₁ P₁ d_m ω with P₁ = F_r = 8 kN (HR 1's 62-series factors; 1e-9); a_ISO's viscosity is
+    the oil's at the network's lubricant temperature (1e-12)."""
     path = tmp_path / "single.toml"
     path.write_text(SINGLE)
     result = _run(path)
@@ -75,8 +80,29 @@ def test_a_single_bearing_runs_at_the_state_it_solves(tmp_path):
     # C₀ of the bearing as the scene gives it (the fixed point keeps its free contact angle, `bearing_at`)
     rating = float(ball_bearing_static_load_rating(with_radial_clearance(result.model.inputs["bearing"], 28e-6)))
     f1 = coefficient * (8e3 / rating) ** exponent  # P₀ = F_r (ISO 76: X₀ F_r = 0.6 F_r below it)
-    assert float(values["thermal.load_power"]) == pytest.approx(f1 * 8e3 * 97.5e-3 * 3000 * np.pi / 30, rel=1e-9)
+    assert float(values["thermal.ring_power"]) == pytest.approx(f1 * 8e3 * 97.5e-3 * 3000 * np.pi / 30, rel=1e-9)
     assert min(float(values[f"thermal.{node}_temperature"]) for node in ("inner_ring", "outer_ring", "lubricant")) > 293.15
+    # a_ISO's κ reads the viscosity at the network's lubricant temperature (ISO VG 68's Walther line)
+    viscosity = walther_viscosity(68e-6, ISO_VG_VISCOSITY_100[68] * 1e-6, float(values["thermal.lubricant_temperature"]))
+    assert float(values["life.kinematic_viscosity"]) == pytest.approx(float(viscosity), rel=1e-12)
+
+
+@pytest.mark.slow
+def test_skf_heat_is_the_skf_friction_at_the_state(tmp_path):
+    """With effects.friction = "skf" the fixed point's heat is SKF's four components: the 6411 (64
+    series) and the spindle pair each heat their network by the friction the friction effect reports
+    at the solved loads and lubricant (1e-10); in an oil bath without a drag factor every watt goes
+    into the rings."""
+    path = tmp_path / "single.toml"
+    path.write_text(SINGLE.replace("life = true", 'life = true\nfriction = "skf"').replace(
+        'cleanliness = "-/17/14"', 'cleanliness = "-/17/14"\n\n[friction]\nseries = "64"'))
+    values = _run(path).values
+    assert bool(values["thermal.converged"])
+    assert float(values["thermal.power"]) == pytest.approx(float(values["friction.power"]), rel=1e-10)
+    assert float(values["thermal.lubricant_power"]) == 0.0
+    pair = _run(example_scene("spindle_pair_thermal"), ['effects.friction="skf"']).values
+    assert bool(pair["thermal.converged"])
+    assert float(pair["thermal.power"]) == pytest.approx(float(pair["set.friction.power"]), rel=1e-10)
 
 
 @pytest.mark.parametrize("override, named", [

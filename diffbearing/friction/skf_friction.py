@@ -54,6 +54,7 @@ import numpy as np
 
 from ..numerics import positive_power
 from ..params import _is_concrete, check_range
+from ..ratings import roller_life
 from .friction_torque import friction_power
 
 # Geometry constants by bearing series (SKF General Catalogue 6000, Friction, Table 3).
@@ -191,6 +192,23 @@ class FrictionalMoment(eqx.Module):
     sliding_variable: jax.Array  # G_sl, catalogue units (Table 2)
     total: jax.Array  # M = φ_ish φ_rs M_rr + M_sl + M_seal + M_drag [N·m]
     power: jax.Array  # N = M ω [W]
+
+
+class SkfBearing(eqx.Module):
+    """What SKF's model reads beyond the bearing and its load: its series (Table 3), lubrication
+    (K_rs: one of `SUPPLIES`), bore and outside diameter [m], for the drag in an oil bath V_M [-] and
+    (roller bearings) the inner ring width B [m], and its seals: the row of `SEAL_CONSTANTS` (None:
+    open), their counterface diameter d_s [m] and count."""
+
+    series: str = eqx.field(static=True)
+    supply: str = eqx.field(static=True)
+    bore: jax.Array
+    outside_diameter: jax.Array
+    drag_loss_factor: jax.Array | None
+    inner_ring_width: jax.Array | None
+    seal: str | None = eqx.field(static=True, default=None)
+    counterface_diameter: jax.Array | None = None
+    seals: int = eqx.field(static=True, default=2)
 
 
 # ---- catalogue units -------------------------------------------------------------------------
@@ -567,3 +585,18 @@ def _require(name, value, purpose):
     if value is None:
         raise ValueError(f"{name} is needed for {purpose}")
 
+
+def bearing_moment(kind: str, static_rating, angle, skf: SkfBearing, kinematic_viscosity, speed,
+                   force) -> FrictionalMoment:
+    """`frictional_moment` of a bearing of `kind` described by `skf` under [Fx, Fy, Fz] `force` [N] at
+    the relative ring speed `speed` [rad/s] in oil of `kinematic_viscosity` [m²/s]: its C₀ `static_rating`
+    [N] (a deep-groove ball bearing's α_F reads it; None where unknown), and ISO 281's Y = 0.4 cot α
+    of the cup `angle` [rad] where the kind's rows read it (a tapered one)."""
+    options = {"static_load_rating": static_rating}
+    if "axial_load_factor" in needed_inputs(kind):
+        options["axial_load_factor"] = roller_life.axial_load_factor(angle)
+    radial, axial = jnp.sqrt(force[0] ** 2 + force[1] ** 2), jnp.abs(force[2])
+    return frictional_moment(
+        kind, skf.series, radial, axial, speed, kinematic_viscosity, skf.bore, skf.outside_diameter, supply=skf.supply,
+        drag_loss_factor=skf.drag_loss_factor, inner_ring_width=skf.inner_ring_width, seal=skf.seal,
+        counterface_diameter=skf.counterface_diameter, seals=skf.seals, **options)

@@ -9,15 +9,18 @@ Nodes (`NODES`): inner ring, outer ring, lubricant, shaft, housing (free); ambie
 (held). Paths (`ThermalPaths`, conductances [W/K]): inner ring – shaft, outer ring – housing, each
 ring – lubricant, shaft – ambient, housing – ambient, and the circulating oil's flow from the inlet
 (ρc V̇; 0 for a bath or grease). Bearings at several seats along a shaft have these five nodes
-each, the neighbouring seats' shaft and housing nodes joined by conduction along them. Heat
-(Palmgren's moments, `friction.friction_torque`; Harris & Kotzalas, Rolling Bearing Analysis, 5th
-ed., vol. 1, ch. 13, for the split): the load-dependent loss M₁ ω, generated in the ball–raceway
-contacts, half into each ring (the balls pass their share
-on to the rings they roll between); the viscous loss M₀ ω into the lubricant.
+each, the neighbouring seats' shaft and housing nodes joined by conduction along them. Heat (a
+friction model, `AbstractFrictionHeat`; Harris & Kotzalas, Rolling Bearing Analysis, 5th ed., vol.
+1, ch. 13, for the split): the losses in the rolling contacts half into each ring (the balls pass
+their share on to the rings they roll between), the losses in the oil around them into the
+lubricant. Palmgren's moments (`PalmgrenFactors`, `friction.friction_torque`): the load-dependent
+M₁ ω into the rings, the viscous M₀ ω into the lubricant. SKF's (`skf_heat.SkfHeat`,
+`friction.skf_friction`): the rolling, sliding and seal moments into the rings, the oil bath's drag
+into the lubricant.
 
-Palmgren's P₁ is the bearing's external load (`friction_torque.friction_load`), so a clearance the
-warmth closes into a preload raises the heat only where it shows in that load (the axial load of an
-angular contact pair's bearings), not the internal preload of a single radial bearing: a
+Palmgren's P₁ and SKF's loads are the bearing's external load, so a clearance the warmth closes
+into a preload raises the heat only where it shows in that load (the axial load of an angular
+contact pair's bearings), not the internal preload of a single radial bearing: a
 contact-level loss model would see it.
 
 The unknowns are the free temperatures T (five a seat); the residual is R(T) = T − T_network(Q(T)), Q the
@@ -124,23 +127,38 @@ class WaltherLine(eqx.Module):
     viscosity_100: jax.Array
 
 
-class PalmgrenFactors(eqx.Module):
-    """Palmgren's f₀ and f₁ = a (P₀/C₀)^b of the bearing's kind (`friction_torque.PALMGREN_CONSTANTS`)."""
+class AbstractFrictionHeat(eqx.Module):
+    """A friction model's heat of one bearing: `powers(support, force, speed, viscosity)` → (the
+    power into the lubricant, the power into the rings) [W] of the bearing `support` carrying `force`
+    ([Fx, Fy, Fz] in its own frame [N]) at the relative ring speed `speed` [rad/s] in oil of kinematic
+    `viscosity` [m²/s]. `PalmgrenFactors` here; `skf_heat.SkfHeat`, SKF's four components."""
+
+    @abc.abstractmethod
+    def powers(self, support: AbstractSupport, force, speed, viscosity) -> tuple:
+        """(power into the lubricant, power into the rings) [W]."""
+
+
+class PalmgrenFactors(AbstractFrictionHeat):
+    """Palmgren's f₀ and f₁ = a (P₀/C₀)^b of the bearing's kind (`friction_torque.PALMGREN_CONSTANTS`):
+    the viscous loss M₀ ω into the lubricant, the load-dependent M₁ ω into the rings (`palmgren_powers`)."""
 
     f0: jax.Array
     coefficient: jax.Array
     exponent: float = eqx.field(static=True)
 
+    def powers(self, support: AbstractSupport, force, speed, viscosity) -> tuple:
+        return palmgren_powers(support, force, speed, viscosity, self)
+
 
 class BearingHeat(eqx.Module):
     """What a bearing's mechanics give at one set of node temperatures: the heat sources [W] at
-    `NODES`, the operating diametral clearance [m], the viscous and load-dependent friction powers
-    [W], the mechanical state (the type's equilibrium) and whether that state converged."""
+    `NODES`, the operating diametral clearance [m], the friction powers into the lubricant and into
+    the rings [W], the mechanical state (the type's equilibrium) and whether that state converged."""
 
     sources: jax.Array
     clearance: jax.Array
-    viscous_power: jax.Array
-    load_power: jax.Array
+    lubricant_power: jax.Array
+    ring_power: jax.Array
     mechanics: eqx.Module
     converged: jax.Array
 
@@ -157,15 +175,15 @@ class AbstractHeatedBearing(eqx.Module):
 
 class ThermalState(eqx.Module):
     """The solved state (SI): every node's temperature (`NODES`), the operating diametral clearance,
-    the mechanical state at it (`BearingHeat.mechanics`), the viscous and load-dependent friction
-    powers, the heat leaving at the ambient and the oil inlet, the residual's largest |R| [K],
+    the mechanical state at it (`BearingHeat.mechanics`), the friction powers into the lubricant and
+    into the rings, the heat leaving at the ambient and the oil inlet, the residual's largest |R| [K],
     whether it converged inside the model."""
 
     temperatures: jax.Array
     clearance: jax.Array
     mechanics: eqx.Module
-    viscous_power: jax.Array
-    load_power: jax.Array
+    lubricant_power: jax.Array
+    ring_power: jax.Array
     boundary_heat: jax.Array
     residual: jax.Array
     converged: jax.Array
@@ -205,33 +223,33 @@ def palmgren_powers(support: AbstractSupport, force, speed, viscosity, factors: 
     return viscous, load
 
 
-def ring_sources(viscous_power, load_power):
-    """Heat sources [W] at `NODES`: the load-dependent loss half into each ring, the viscous loss
-    into the lubricant (module docstring)."""
+def ring_sources(lubricant_power, ring_power):
+    """Heat sources [W] at `NODES`: the rings' share half into each ring (the contacts between them),
+    the lubricant's into the lubricant (module docstring)."""
     zero = jnp.zeros(())
-    return jnp.stack([0.5 * load_power, 0.5 * load_power, viscous_power, zero, zero, zero, zero])
+    return jnp.stack([0.5 * ring_power, 0.5 * ring_power, lubricant_power, zero, zero, zero, zero])
 
 
 class MountedBallBearing(AbstractHeatedBearing):
     """One radial ball bearing in its `mounting` (its fits; the temperatures are the unknowns),
-    under `operating`, in `oil`, with Palmgren's `factors`, its equilibrium by `model`."""
+    under `operating`, in `oil`, its heat by the friction model `friction`, its equilibrium by `model`."""
 
     bearing: BallBearing
     mounting: Mounting
     operating: Operating
     oil: WaltherLine
-    factors: PalmgrenFactors
+    friction: AbstractFrictionHeat
     model: ball_equilibrium.BallModel = eqx.field(static=True, default=ball_equilibrium.BallModel())
 
     def heat(self, temperatures) -> BearingHeat:
-        """The equilibrium at the clearance the node temperatures leave, Palmgren's moments at the
-        lubricant node's viscosity."""
+        """The equilibrium at the clearance the node temperatures leave, the friction model's heat at
+        the lubricant node's viscosity."""
         running, clearance = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
         solution = ball_equilibrium.solve_equilibrium(running, self.operating, self.model)
         speed = jnp.abs(self.operating.inner_speed - self.operating.outer_speed)
         viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100, temperatures[2])
-        viscous, load = palmgren_powers(BallSupport(running, 0.0), solution.force[:3], speed, viscosity, self.factors)
-        return BearingHeat(ring_sources(viscous, load), clearance, viscous, load, solution, solution.converged)
+        lubricant, rings = self.friction.powers(BallSupport(running, 0.0), solution.force[:3], speed, viscosity)
+        return BearingHeat(ring_sources(lubricant, rings), clearance, lubricant, rings, solution, solution.converged)
 
 
 def _free_count(paths: ThermalPaths) -> int:
@@ -278,5 +296,5 @@ def solve_thermal(heated: AbstractHeatedBearing, paths: ThermalPaths) -> Thermal
     found = heated.heat(temperatures)
     residual = jax.lax.stop_gradient(jnp.max(jnp.abs(free - node_temperatures(network, found.sources)[:count])))
     converged = inside & found.converged & (residual < RESIDUAL_TOLERANCE) & (steps < MAX_STEPS)
-    return ThermalState(temperatures, found.clearance, found.mechanics, found.viscous_power, found.load_power,
+    return ThermalState(temperatures, found.clearance, found.mechanics, found.lubricant_power, found.ring_power,
                         boundary_heat_flows(network, temperatures, found.sources), residual, converged)

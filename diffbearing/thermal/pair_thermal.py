@@ -5,7 +5,7 @@ offset, so the preload the pair carries changes with the temperatures, and with 
 
 The two bearings share one set of nodes (inner rings, outer rings, lubricant, shaft, housing): a
 lumped pair, their heat summed, the paths those of both bearings side by side. Each bearing's
-Palmgren moments come from the load it carries in the set's equilibrium (`shaft_equilibrium`),
+friction heat comes from the load it carries in the set's equilibrium (`shaft_equilibrium`),
 its preload included, so a pair that warms into a higher preload runs hotter, and one whose warmth
 opens its clearance loses preload.
 """
@@ -21,12 +21,11 @@ from ..systems.bearing_set import bearing_set
 from ..systems.operating_clearance import Mounting
 from ..systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
 from .bearing_thermal import (
+    AbstractFrictionHeat,
     AbstractHeatedBearing,
     BearingHeat,
-    PalmgrenFactors,
     WaltherLine,
     bearing_at,
-    palmgren_powers,
     ring_sources,
 )
 
@@ -36,13 +35,13 @@ class MountedBallPair(AbstractHeatedBearing):
     clearance the matched one), centres `spacing` [m] apart, each inner ring pushed by the matched
     `offset` [m] (`bearing_set.preload_offset` of a preload force), in its `mounting` (fits; the
     temperatures are the unknowns), under `operating` (force and moment on the shaft at the middle
-    of the set, the inner rings turning), in `oil`, with Palmgren's `factors`."""
+    of the set, the inner rings turning), in `oil`, its heat by the friction model `friction`."""
 
     bearing: BallBearing
     mounting: Mounting
     operating: Operating
     oil: WaltherLine
-    factors: PalmgrenFactors
+    friction: AbstractFrictionHeat
     spacing: jax.Array
     offset: jax.Array
     arrangement: str = eqx.field(static=True, default="back_to_back")
@@ -63,7 +62,7 @@ class MountedBallPair(AbstractHeatedBearing):
         return jnp.abs(solve_shaft(unloaded).bearing_forces[0][2])
 
     def heat(self, temperatures) -> BearingHeat:
-        """The set's equilibrium at the node temperatures; each bearing's Palmgren moments from the
+        """The set's equilibrium at the node temperatures; each bearing's friction heat from the
         load it carries, at the lubricant node's viscosity, summed."""
         supports, clearance = self.supports(temperatures)
         shaft = Shaft(supports, ShaftLoads(jnp.zeros(1), self.operating.force[None], self.operating.moment[None]),
@@ -71,7 +70,7 @@ class MountedBallPair(AbstractHeatedBearing):
         solution = solve_shaft(shaft)
         viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100, temperatures[2])
         speed = jnp.abs(self.operating.inner_speed)
-        powers = [palmgren_powers(support, force[:3], speed, viscosity, self.factors)
+        powers = [self.friction.powers(support, force[:3], speed, viscosity)
                   for support, force in zip(supports, solution.bearing_forces)]
-        viscous, load = sum(p[0] for p in powers), sum(p[1] for p in powers)
-        return BearingHeat(ring_sources(viscous, load), clearance, viscous, load, solution, solution.converged)
+        lubricant, rings = sum(p[0] for p in powers), sum(p[1] for p in powers)
+        return BearingHeat(ring_sources(lubricant, rings), clearance, lubricant, rings, solution, solution.converged)

@@ -4,11 +4,12 @@ and housing nodes; `mounting_paths.shaft_paths` joins the seats along the shaft 
 its fits and the temperatures of its seat set its operating clearance (the mounting model through
 its type's `AbstractSupport.ring_section` and `with_clearance_change`), and the shaft's equilibrium
 with every bearing at its clearance sets the loads each carries, its preload included, and with the
-viscosity at its seat's lubricant node its Palmgren heat. A warm front bearing that closes its
+viscosity at its seat's lubricant node its friction heat. A warm front bearing that closes its
 clearance, or a shaft that grows against a located pair, shows in every bearing's load.
 
 A bearing type takes part where its support gives a `ring_section` (ball bearings, cylindrical
-roller bearings); its friction kind's Palmgren factors are those of its `PalmgrenFactors`.
+roller bearings); its heat is its friction model's (`bearing_thermal.AbstractFrictionHeat`, one per
+bearing: its friction kind's Palmgren factors, `shaft_factors`, or SKF's rows).
 """
 
 import jax
@@ -25,7 +26,6 @@ from .bearing_thermal import (
     PalmgrenFactors,
     WaltherLine,
     mounted_at,
-    palmgren_powers,
     ring_sources,
     seat_node,
 )
@@ -34,7 +34,7 @@ from .bearing_thermal import (
 class MountedShaft(AbstractHeatedBearing):
     """A rigid shaft on `supports` (each an `AbstractSupport` with a `ring_section`, at its clearance
     as given), bearing k in `mountings[k]` (its fits; the temperatures are the unknowns) with bore
-    and outside diameter `bores[k]`, `outer_diameters[k]` [m] and Palmgren's `factors[k]`, under
+    and outside diameter `bores[k]`, `outer_diameters[k]` [m] and friction model `friction[k]`, under
     `loads`, turning at `speed` [rad/s] (outer rings fixed), in `oil`. Bearing k's nodes are seat k's
     (`bearing_thermal.node_names`)."""
 
@@ -42,14 +42,14 @@ class MountedShaft(AbstractHeatedBearing):
     mountings: tuple
     bores: jax.Array
     outer_diameters: jax.Array
-    factors: tuple
+    friction: tuple
     loads: ShaftLoads
     speed: jax.Array
     oil: WaltherLine
 
     def __check_init__(self):
-        if not (len(self.supports) == len(self.mountings) == len(self.factors)):
-            raise ValueError("supports, mountings, factors: one each per bearing")
+        if not (len(self.supports) == len(self.mountings) == len(self.friction)):
+            raise ValueError("supports, mountings, friction: one each per bearing")
         for number, support in enumerate(self.supports):
             if support.ring_section() is None:
                 raise ValueError(f"bearings[{number}]: its type takes no mounting (no diametral clearance the fits "
@@ -68,17 +68,17 @@ class MountedShaft(AbstractHeatedBearing):
                      for support, change in zip(self.supports, self.clearance_changes(temperatures)))
 
     def heat(self, temperatures) -> BearingHeat:
-        """The shaft's equilibrium at the warm clearances; each bearing's Palmgren moments from the
-        load it carries at its seat's lubricant viscosity, into its seat's nodes. `clearance`,
-        `viscous_power` and `load_power` are per bearing (K,)."""
+        """The shaft's equilibrium at the warm clearances; each bearing's friction heat from the load
+        it carries at its seat's lubricant viscosity, into its seat's nodes. `clearance`,
+        `lubricant_power` and `ring_power` are per bearing (K,)."""
         warm = self.supports_at(temperatures)
         solution = solve_shaft(Shaft(warm, self.loads, self.speed))
         speed = jnp.abs(self.speed)
         viscous, load = [], []
-        for seat, (support, force, factors) in enumerate(zip(warm, solution.bearing_forces, self.factors)):
+        for seat, (support, force, friction) in enumerate(zip(warm, solution.bearing_forces, self.friction)):
             viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100,
                                           temperatures[seat_node(seat, 2)])
-            powers = palmgren_powers(support, force[:3], speed, viscosity, factors)
+            powers = friction.powers(support, force[:3], speed, viscosity)
             viscous.append(powers[0])
             load.append(powers[1])
         seats = [ring_sources(v, w)[:SEAT_NODES] for v, w in zip(viscous, load)]

@@ -3,14 +3,13 @@ load-dependent moments, `diffbearing.friction.friction_torque`) or "skf" (SKF's 
 moments, `diffbearing.friction.skf_friction`), from the loads the bearing carries, the lubricant's viscosity
 at its temperature and the speed."""
 
-import equinox as eqx
-import jax
 import jax.numpy as jnp
 
 from ....bearings.roller.roller_geometry import ROLLER_KINDS
 from ....friction import friction_torque, skf_friction
+from ....friction.skf_friction import SkfBearing
 from ....params import BALL_BEARING_KINDS, check_range
-from ....ratings import roller_life, static_safety
+from ....ratings import static_safety
 from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
 from ..systems.bearing_set import SET, SET_SIZE
 from .life import SUPPLY_KEY
@@ -21,23 +20,6 @@ FRICTION_MODELS = ("palmgren", "skf")
 DEFAULT_SUPPLY = "oil_bath"
 # lubricant.supply → SKF's lubrication of K_rs: circulating oil is fed as a jet, the bath is a low-level one
 SKF_SUPPLY = {"circulating": "oil_jet", "oil_bath": "oil_bath", "grease": "grease"}
-
-
-class SkfBearing(eqx.Module):
-    """What SKF's model reads beyond the bearing: its series (Table 3), lubrication (K_rs), bore and
-    outside diameter [m], for the drag in an oil bath V_M [-] and (roller bearings) the inner ring
-    width B [m], and its seals: the row of SKF's seal constants (None: open), their counterface
-    diameter d_s [m] and count."""
-
-    series: str = eqx.field(static=True)
-    supply: str = eqx.field(static=True)
-    bore: jax.Array
-    outside_diameter: jax.Array
-    drag_loss_factor: jax.Array | None
-    inner_ring_width: jax.Array | None
-    seal: str | None = eqx.field(static=True, default=None)
-    counterface_diameter: jax.Array | None = None
-    seals: int = eqx.field(static=True, default=2)
 
 
 def palmgren_f0(v, kind: str):
@@ -61,7 +43,7 @@ def _constants(v, built) -> dict:
     return {"friction_constants": {"f0": palmgren_f0(v, built["bearing"].kind), "f1": _f1(v)}}
 
 
-def _skf_bearing(v, built) -> dict:
+def scene_skf_bearing(v, built) -> dict:
     """The scene's SKF series (default `skf_friction.DEFAULT_SERIES`), lubrication, d, D and drag inputs."""
     kind = built["bearing"].kind
     series = v.get("friction.series", skf_friction.DEFAULT_SERIES[kind])
@@ -129,7 +111,7 @@ def _friction_kinds(layout, supports, model: str) -> list[str]:
     return kinds
 
 
-def _shaft_skf_bearings(v, built) -> dict:
+def shaft_skf_bearings(v, built) -> dict:
     """Each of the shaft's bearings' SKF inputs (a tuple): its type's series where its design fixes
     one, else the scene's friction.series where it is one of every bearing's kind's, else each kind's
     default; d and D from each [[bearings]] entry. The oil bath's drag and seals are a single
@@ -219,17 +201,9 @@ def _skf_outputs(moment: skf_friction.FrictionalMoment) -> dict:
 
 
 def _skf_moment(kind, static_rating, angle, skf: SkfBearing, lubricant, speed, force) -> skf_friction.FrictionalMoment:
-    """SKF's moments of a bearing of `kind` under [Fx, Fy, Fz] [N] at the relative ring speed [rad/s]:
-    its C₀ [N] (a deep-groove ball bearing's α_F reads it; None where unknown), Y = 0.4 cot α of the
-    cup (`angle` [rad]) where the kind's rows read it (a tapered one, ISO 281)."""
-    options = {"static_load_rating": static_rating}  # what the model's rows need of these (`needed_inputs`)
-    if "axial_load_factor" in skf_friction.needed_inputs(kind):
-        options["axial_load_factor"] = roller_life.axial_load_factor(angle)
-    return skf_friction.frictional_moment(
-        kind, skf.series, *_split(force), speed, lubricant.viscosity / lubricant.density, skf.bore,
-        skf.outside_diameter, supply=skf.supply, drag_loss_factor=skf.drag_loss_factor,
-        inner_ring_width=skf.inner_ring_width, seal=skf.seal, counterface_diameter=skf.counterface_diameter,
-        seals=skf.seals, **options)
+    """`skf_friction.bearing_moment` in the scene's `lubricant`."""
+    return skf_friction.bearing_moment(kind, static_rating, angle, skf, lubricant.viscosity / lubricant.density, speed,
+                                       force)
 
 
 def _ball_skf_moment(bearing, skf, lubricant, speed, force):
@@ -379,9 +353,9 @@ ADAPTER = register(Adapter(
           "bearing.width": quantity("length", "bearing width B"),
           "lubricant.supply": SUPPLY_KEY},
     inputs=(InputBuilder(("friction_constants",), BALL_BEARING_KINDS + ROLLER_KINDS, _constants, after=("bearing",)),
-            InputBuilder(("skf_bearing",), BALL_BEARING_KINDS + ROLLER_KINDS, _skf_bearing, after=("bearing",)),
+            InputBuilder(("skf_bearing",), BALL_BEARING_KINDS + ROLLER_KINDS, scene_skf_bearing, after=("bearing",)),
             InputBuilder(("friction_constants",), SHAFT, _shaft_constants, after=("shaft",)),
-            InputBuilder(("skf_bearing",), SHAFT, _shaft_skf_bearings, after=("shaft",))),
+            InputBuilder(("skf_bearing",), SHAFT, shaft_skf_bearings, after=("shaft",))),
     blocks=(*_single_bearing_blocks("palmgren", "friction_constants", OUTPUTS, _ball_friction, _roller_friction),
             *_single_bearing_blocks("skf", "skf_bearing", SKF_OUTPUTS, _ball_skf_friction, _roller_skf_friction),
             _set_block("palmgren", "friction_constants", _set_friction),

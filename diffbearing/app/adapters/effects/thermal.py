@@ -1,8 +1,10 @@
 """The thermal–mechanical steady state (`effects.thermal = true`, `diffbearing.thermal`) of a single
 ball bearing, a preloaded pair or the bearings on a rigid shaft in their mounting: a thermal network
 of the rings, the lubricant, the shaft and the housing (on a shaft, at each bearing's seat; paths
-from their geometry, `thermal.mounting_paths`), heated by Palmgren's moments (ISO 15312's friction
-model) at the state the temperatures give, solved as one fixed point (`bearing_thermal.solve_thermal`).
+from their geometry, `thermal.mounting_paths`), heated by the friction the scene's `effects.friction`
+names at the state the temperatures give — SKF's four components with "skf" (`thermal.skf_heat`),
+else Palmgren's moments (ISO 15312's friction model) — solved as one fixed point
+(`bearing_thermal.solve_thermal`).
 
 The effect sets what the scene's mounting and lubricant would otherwise take as given: the
 [mounting] table's fits at the solved ring, shaft and housing temperatures are the `mounting` input
@@ -26,6 +28,7 @@ from ....thermal.bearing_thermal import PATH_NAMES
 from ....thermal.mounting_paths import CONDUCTIVITIES, Cooling, MountingGeometry, mounting_paths, shaft_paths
 from ....thermal.pair_thermal import MountedBallPair
 from ....thermal.shaft_thermal import MountedShaft, shaft_factors
+from ....thermal.skf_heat import SkfHeat
 from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
 from ..bearings.ball import ball_model, catalogue_bearing
 from ..lubricant import lubricant_at, lubricant_input, walther_line
@@ -40,7 +43,7 @@ from ..systems.mounting import (
     shaft_mountings,
 )
 from ..systems.shaft_layout import layout_supports, shaft_layout
-from .friction import palmgren_f0
+from .friction import palmgren_f0, scene_skf_bearing, shaft_skf_bearings
 
 EFFECT_ON = "effects.thermal"
 SINGLE, PAIR = (EFFECT_ON, "!bearing.arrangement"), (EFFECT_ON, "bearing.arrangement")
@@ -118,15 +121,36 @@ def _scene_line(v) -> tuple:
     return walther_line(v)
 
 
+def _skf(v) -> bool:
+    """Whether the heat is SKF's four components (`effects.friction = "skf"`), else Palmgren's."""
+    return v.get("effects.friction") == "skf"
+
+
 def _common(v):
     """(the bearing as the scene gives it, its `Mounting` without temperatures, the Walther line,
-    Palmgren's factors, the model options), each scene key checked."""
+    its friction model's heat, the model options), each scene key checked."""
     line = _scene_line(v)
     bearing = catalogue_bearing(v, material(v))
-    kind = bearing.kind
-    _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
-    factors = bearing_thermal.PalmgrenFactors(palmgren_f0(v, kind), coefficient, exponent)
-    return bearing, scene_mounting(v), line, factors, ball_model(_settings(v))
+    if _skf(v):
+        heat = SkfHeat(scene_skf_bearing(v, {"bearing": bearing})["skf_bearing"])
+    else:
+        _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[bearing.kind]
+        heat = bearing_thermal.PalmgrenFactors(palmgren_f0(v, bearing.kind), coefficient, exponent)
+    return bearing, scene_mounting(v), line, heat, ball_model(_settings(v))
+
+
+def _shaft_heat(v, layout, supports) -> tuple:
+    """Each of the shaft's bearings' friction model's heat (SKF's rows, or Palmgren's factors of its
+    friction kind); ValueError naming the bearing the model does not cover."""
+    if _skf(v):
+        return tuple(SkfHeat(bearing) for bearing in shaft_skf_bearings(v, {"shaft": layout})["skf_bearing"])
+    kinds = []
+    for number, support in enumerate(supports):
+        kind = support.friction_kind("palmgren")
+        if kind is None:
+            raise ValueError(f"effects.thermal: bearings[{number}] ({layout.kinds[number]}) has no Palmgren factors")
+        kinds.append(kind)
+    return shaft_factors(supports, [palmgren_f0(v, kind) for kind in kinds])
 
 
 def _inputs(v, heated, paths, mounting) -> dict:
@@ -145,26 +169,26 @@ def _plain(v, built) -> dict:
 def _single(v, built) -> dict:
     if v[EFFECT_ON] is not True:
         return _plain(v, built)
-    bearing, mounting, line, factors, model = _common(v)
+    bearing, mounting, line, heat, model = _common(v)
     width = v.get("bearing.width")
     if width is None:
         raise ValueError("bearing.width is needed by effects.thermal (the rings' and the housing's conduction paths)")
     paths = mounting_paths(_geometry(v, width), _cooling(v, line))
     heated = bearing_thermal.MountedBallBearing(bearing, mounting, built["operating"], bearing_thermal.WaltherLine(*line),
-                                                factors, model)
+                                                heat, model)
     return _inputs(v, heated, paths, mounting)
 
 
 def _pair(v, built) -> dict:
     if v[EFFECT_ON] is not True:
         return _plain(v, built)
-    bearing, mounting, line, factors, model = _common(v)
+    bearing, mounting, line, heat, model = _common(v)
     layout = built["bearing_set"]
     matched = with_radial_clearance(bearing, layout.matched_clearance)
     offset = preload_offset(matched, layout.preload, model) if layout.preload is not None else \
         jnp.asarray(0.0 if layout.offset is None else layout.offset)
     paths = mounting_paths(_geometry(v, 2.0 * v["bearing.width"]), _cooling(v, line))
-    heated = MountedBallPair(matched, mounting, built["operating"], bearing_thermal.WaltherLine(*line), factors,
+    heated = MountedBallPair(matched, mounting, built["operating"], bearing_thermal.WaltherLine(*line), heat,
                              layout.spacing, offset, layout.arrangement, model)
     return _inputs(v, heated, paths, mounting)
 
@@ -197,19 +221,13 @@ def _shaft(v, built) -> dict:
     layout = shaft_layout(v, built)["shaft"]
     mountings = shaft_mountings(v, layout)
     supports = layout_supports(layout, _settings(v))
-    kinds = []
-    for number, support in enumerate(supports):
-        kind = support.friction_kind("palmgren")
-        if kind is None:
-            raise ValueError(f"effects.thermal: bearings[{number}] ({layout.kinds[number]}) has no Palmgren factors")
-        kinds.append(kind)
+    heat = _shaft_heat(v, layout, supports)
     oil = bearing_thermal.WaltherLine(*line)
     cooling = eqx.tree_at(lambda c: c.speed, _cooling(v, line), jnp.abs(layout.speed))
     paths = shaft_paths(_shaft_geometry(v, layout, supports), layout.positions, cooling)
     heated = MountedShaft(supports, mountings, jnp.stack([jnp.asarray(bore, float) for bore, _ in layout.envelopes]),
                           jnp.stack([jnp.asarray(outside, float) for _, outside in layout.envelopes]),
-                          shaft_factors(supports, [palmgren_f0(v, kind) for kind in kinds]), layout.loads,
-                          layout.speed, oil)
+                          heat, layout.loads, layout.speed, oil)
     state = bearing_thermal.solve_thermal(heated, paths)
     warm = tuple(bearing_thermal.mounted_at(mounting, state.temperatures, seat) for seat, mounting in enumerate(mountings))
     moved, changes = mounted_layout(v, layout, warm)
@@ -223,8 +241,8 @@ def _outputs(inputs: dict, settings: dict, results: dict) -> dict:
     out = {f"thermal.{name}_temperature": state.temperatures[number] for number, name in enumerate(NODE_NAMES)}
     return out | {
         "thermal.clearance": state.clearance,
-        "thermal.viscous_power": state.viscous_power, "thermal.load_power": state.load_power,
-        "thermal.power": state.viscous_power + state.load_power,
+        "thermal.lubricant_power": state.lubricant_power, "thermal.ring_power": state.ring_power,
+        "thermal.power": state.lubricant_power + state.ring_power,
         "thermal.heat_to_ambient": state.boundary_heat[0], "thermal.heat_to_oil": state.boundary_heat[1],
         "thermal.residual": state.residual, "thermal.converged": state.converged,
         "thermal.conductances": jnp.stack([jnp.asarray(getattr(paths, name), float) for name in PATH_NAMES]),
@@ -263,9 +281,9 @@ def _shaft_outputs(inputs: dict, settings: dict, results: dict) -> dict:
                                                          for force in solve_shaft(unloaded).bearing_forces]),
         "bearings.thermal.clearance": state.clearance,
         "bearings.thermal.equilibrium_clearance": jnp.stack(running),
-        "bearings.thermal.viscous_power": state.viscous_power, "bearings.thermal.load_power": state.load_power,
-        "bearings.thermal.power": state.viscous_power + state.load_power,
-        "shaft.thermal.power": jnp.sum(state.viscous_power + state.load_power),
+        "bearings.thermal.lubricant_power": state.lubricant_power, "bearings.thermal.ring_power": state.ring_power,
+        "bearings.thermal.power": state.lubricant_power + state.ring_power,
+        "shaft.thermal.power": jnp.sum(state.lubricant_power + state.ring_power),
         "shaft.thermal.heat_to_ambient": state.boundary_heat[0], "shaft.thermal.heat_to_oil": state.boundary_heat[1],
         "shaft.thermal.residual": state.residual, "shaft.thermal.converged": state.converged,
         "bearings.thermal.conductances": jnp.stack([jnp.broadcast_to(jnp.asarray(getattr(paths, name), float), (seats,))
@@ -312,9 +330,9 @@ def _checks(values: dict) -> tuple[list[str], list[str]]:
 OUTPUTS = (
     *(Output(f"thermal.{name}_temperature", "K", "degC", f"{name.replace('_', ' ')} temperature") for name in NODE_NAMES),
     Output("thermal.clearance", "m", "um", "operating diametral clearance at the solved temperatures"),
-    Output("thermal.power", "W", "W", "friction heat M ω (Palmgren)"),
-    Output("thermal.viscous_power", "W", "W", "of it viscous M₀ ω (into the lubricant)"),
-    Output("thermal.load_power", "W", "W", "of it load-dependent M₁ ω (into the rings)"),
+    Output("thermal.power", "W", "W", "friction heat M ω (Palmgren's; SKF's with effects.friction = \"skf\")"),
+    Output("thermal.lubricant_power", "W", "W", "of it into the lubricant (Palmgren's viscous M₀ ω; SKF's drag)"),
+    Output("thermal.ring_power", "W", "W", "of it into the rings (Palmgren's M₁ ω; SKF's rolling, sliding, seals)"),
     Output("thermal.heat_to_ambient", "W", "W", "heat to the ambient (shaft and housing)"),
     Output("thermal.heat_to_oil", "W", "W", "heat carried away by the circulating oil"),
     Output("thermal.residual", "K", "K", "largest residual of the fixed point", in_report=False),
@@ -334,10 +352,11 @@ SHAFT_OUTPUTS = (
     Output("bearings.thermal.operating_preload", "N", "kN", "each bearing's axial load without the external loads, at "
                                                             "the solved clearances (its operating preload)",
            in_report=False),
-    Output("bearings.thermal.power", "W", "W", "each bearing's friction heat (Palmgren)", in_report=False),
-    Output("bearings.thermal.viscous_power", "W", "W", "of it viscous M₀ ω", in_report=False),
-    Output("bearings.thermal.load_power", "W", "W", "of it load-dependent M₁ ω", in_report=False),
-    Output("shaft.thermal.power", "W", "W", "friction heat of the shaft's bearings (Palmgren)"),
+    Output("bearings.thermal.power", "W", "W", "each bearing's friction heat", in_report=False),
+    Output("bearings.thermal.lubricant_power", "W", "W", "of it into the lubricant", in_report=False),
+    Output("bearings.thermal.ring_power", "W", "W", "of it into the rings", in_report=False),
+    Output("shaft.thermal.power", "W", "W", "friction heat of the shaft's bearings (Palmgren's; SKF's with "
+                                            "effects.friction = \"skf\")"),
     Output("shaft.thermal.heat_to_ambient", "W", "W", "heat to the ambient (shaft ends and housing)"),
     Output("shaft.thermal.heat_to_oil", "W", "W", "heat carried away by the circulating oil"),
     Output("shaft.thermal.residual", "K", "K", "largest residual of the fixed point", in_report=False),
