@@ -1,5 +1,5 @@
-"""The one finite-difference helper every derivative test uses, the test scenes' shared bearing, and
-the path of a packaged example scene."""
+"""The one finite-difference helper every derivative test uses, the test scenes' shared bearing, the
+spindle tests' bearing, and the path of a packaged example scene."""
 
 import functools
 import importlib.resources
@@ -7,6 +7,8 @@ import importlib.resources
 import jax
 import jax.numpy as jnp
 import numpy as np
+
+from diffbearing.params import BEARING_STEEL, ball_bearing
 
 
 def central_difference_jvp(function, point, direction, step):
@@ -52,6 +54,11 @@ def _names(tree):
 
 
 # The 6411E deep-groove ball bearing (D_w = 26.9875 mm, d_m = 97.5 mm, 7 balls) as a scene's [bearing] table.
+# the spindle_pair example's 7014 C type angular contact ball bearing (SI)
+SPINDLE_7014C = ball_bearing(kind="angular_contact_ball", ball_diameter=11.112e-3, pitch_diameter=90e-3, balls=21,
+                             inner_groove_ratio=0.52, outer_groove_ratio=0.53, contact_angle=np.radians(15.0),
+                             bore=70e-3, outer_diameter=110e-3, ball_material=BEARING_STEEL, ring_material=BEARING_STEEL)
+
 BEARING_6411E = """
 [bearing]
 type = "deep_groove_ball"

@@ -8,7 +8,7 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
-from diffbearing.params import BEARING_STEEL, Operating, ball_bearing
+from diffbearing.params import Operating
 from diffbearing.systems.bearing_set import bearing_set, preload_offset
 from diffbearing.systems.operating_clearance import Mounting
 from diffbearing.systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
@@ -16,13 +16,10 @@ from diffbearing.thermal import bearing_thermal as bt
 from diffbearing.thermal.pair_thermal import MountedBallPair
 from diffbearing.thermal.thermal_network import node_temperatures
 
-from .helpers import assert_jvp_matches_central_difference
+from .helpers import SPINDLE_7014C, assert_jvp_matches_central_difference
 
 AMBIENT = 293.15
-# the spindle_pair example's 7014 C type bearings, back to back, 500 N preload as matched
-BEARING = ball_bearing(kind="angular_contact_ball", ball_diameter=11.112e-3, pitch_diameter=90e-3, balls=21,
-                       inner_groove_ratio=0.52, outer_groove_ratio=0.53, contact_angle=np.radians(15.0), bore=70e-3,
-                       outer_diameter=110e-3, ball_material=BEARING_STEEL, ring_material=BEARING_STEEL)
+BEARING = SPINDLE_7014C  # back to back, 500 N preload as matched
 MOUNTING = Mounting(shaft_interference=5e-6, housing_interference=-2e-6, reference_temperature=AMBIENT)
 OIL = bt.WaltherLine(22e-6, 4.3e-6)  # ISO VG 22
 FACTORS = bt.PalmgrenFactors(1.0, 0.001, 0.33)  # HR 1's 72-B series f1; f0 of oil mist

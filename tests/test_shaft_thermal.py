@@ -19,7 +19,7 @@ from diffbearing.bearings.roller.roller_geometry import roller_bearing
 from diffbearing.bearings.roller.roller_profile import roller_profile
 from diffbearing.bearings.roller.roller_support import RollerSupport
 from diffbearing.film.viscosity_temperature import walther_viscosity
-from diffbearing.params import BEARING_STEEL, ISO_VG_VISCOSITY_100, ball_bearing, radial_clearance
+from diffbearing.params import BEARING_STEEL, ISO_VG_VISCOSITY_100, radial_clearance
 from diffbearing.ratings.life_modification import reference_viscosity
 from diffbearing.systems import bearing_fits
 from diffbearing.systems.bearing_set import bearing_set, preload_offset
@@ -30,13 +30,10 @@ from diffbearing.thermal.mounting_paths import CONDUCTIVITIES, Cooling, Mounting
 from diffbearing.thermal.shaft_thermal import MountedShaft, shaft_factors
 from diffbearing.thermal.thermal_network import boundary_heat_flows, node_temperatures
 
-from .helpers import assert_exits_2_naming, assert_jvp_matches_central_difference, example_scene
+from .helpers import SPINDLE_7014C, assert_exits_2_naming, assert_jvp_matches_central_difference, example_scene
 
 AMBIENT = 293.15
-# the spindle_pair example's 7014 C type bearing
-BEARING = ball_bearing(kind="angular_contact_ball", ball_diameter=11.112e-3, pitch_diameter=90e-3, balls=21,
-                       inner_groove_ratio=0.52, outer_groove_ratio=0.53, contact_angle=np.radians(15.0), bore=70e-3,
-                       outer_diameter=110e-3, ball_material=BEARING_STEEL, ring_material=BEARING_STEEL)
+BEARING = SPINDLE_7014C
 MOUNTING = Mounting(shaft_interference=5e-6, housing_interference=-2e-6, reference_temperature=AMBIENT)
 OIL = bt.WaltherLine(32e-6, 5.4e-6)  # ISO VG 32
 SEAT = MountingGeometry(bore=70e-3, outer_diameter=110e-3, width=20e-3, inner_raceway_diameter=90e-3 - 11.112e-3,

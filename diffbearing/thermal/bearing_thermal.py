@@ -47,7 +47,7 @@ from ..film.viscosity_temperature import walther_viscosity
 from ..friction import friction_torque
 from ..params import BallBearing, Operating, clearance_changed, radial_clearance
 from ..newton import implicit_root, newton
-from ..systems.operating_clearance import Mounting, operating_clearance_change
+from ..systems.operating_clearance import Mounting, mounted_clearance_change
 from .thermal_network import ThermalNetwork, boundary_heat_flows, node_temperatures
 
 NODES = ("inner_ring", "outer_ring", "lubricant", "shaft", "housing", "ambient", "oil_inlet")
@@ -200,10 +200,8 @@ def bearing_at(bearing: BallBearing, mounting: Mounting, operating: Operating, t
     """(the bearing at the operating clearance its mounting leaves at the node `temperatures`, that
     clearance [m]): the change ΔG as `params.clearance_changed` makes it (the free contact angle
     kept)."""
-    pitch, ball = bearing.pitch_diameter, bearing.ball_diameter
-    change = operating_clearance_change(mounted_at(mounting, temperatures), bearing.bore, pitch - ball, pitch + ball,
-                                        bearing.outer_diameter, ball, bearing.ring_material, operating.inner_speed,
-                                        operating.outer_speed).change
+    change = mounted_clearance_change(BallSupport(bearing, 0.0), mounted_at(mounting, temperatures), bearing.bore,
+                                      bearing.outer_diameter, operating.inner_speed, operating.outer_speed).change
     running = clearance_changed(bearing, change)
     return running, radial_clearance(running)
 
