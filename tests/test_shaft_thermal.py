@@ -250,10 +250,26 @@ def test_bad_shaft_thermal_inputs_exit_2_naming_their_key(capsys, tmp_path, over
     assert_exits_2_naming(capsys, ["run", str(path), "--set", override], named)
 
 
-def test_a_shaft_without_what_the_network_needs_exits_2(capsys, tmp_path):
-    """A bearing without its width, and a flexible shaft: exit 2 naming bearings[0] and shaft.sections."""
+def test_a_bearing_without_its_width_exits_2(capsys, tmp_path):
+    """A bearing without its width (the network's conduction paths): exit 2 naming bearings[0]."""
     path = tmp_path / "shaft.toml"
     path.write_text(THERMAL_GEARBOX.replace('width = "33 mm"\n', "", 1))
     assert_exits_2_naming(capsys, ["run", str(path)], "bearings[0]: width")
+
+
+@pytest.mark.slow
+def test_a_flexible_shaft_holds_one_state(tmp_path):
+    """The gearbox shaft as a 55 mm Timoshenko beam: converged; each bearing's clearance as the shaft
+    runs it is the state's (1e-15 m); the flexible shaft's loads are the fixed point's (1e-8); the
+    heat balance closes (1e-10)."""
+    path = tmp_path / "shaft.toml"
     path.write_text(THERMAL_GEARBOX + '\n[[shaft.sections]]\nfrom = "-150 mm"\nto = "150 mm"\nouter_diameter = "55 mm"\n')
-    assert_exits_2_naming(capsys, ["run", str(path)], "shaft.sections")
+    result = _run(path)
+    values = result.values
+    assert result.problems[0] == [] and bool(values["shaft.thermal.converged"])
+    np.testing.assert_allclose(values["bearings.thermal.equilibrium_clearance"], values["bearings.thermal.clearance"],
+                               atol=1e-15)
+    for got, want in zip(result.model.inputs["thermal"]["state"].mechanics.bearing_forces, values["bearings.force"]):
+        np.testing.assert_allclose(got, want, rtol=1e-8, atol=1e-6)
+    assert float(values["shaft.thermal.heat_to_ambient"] + values["shaft.thermal.heat_to_oil"]) == pytest.approx(
+        float(values["shaft.thermal.power"]), rel=1e-10)

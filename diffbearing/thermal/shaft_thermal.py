@@ -1,23 +1,27 @@
-"""The bearings on a rigid shaft (`systems.shaft_equilibrium`) in the thermal–mechanical fixed point
-(`bearing_thermal`): each bearing sits at its own seat of the network (its rings, lubricant, shaft
-and housing nodes; `mounting_paths.shaft_paths` joins the seats along the shaft and the housing),
-its fits and the temperatures of its seat set its operating clearance (the mounting model through
-its type's `AbstractSupport.ring_section` and `with_clearance_change`), and the shaft's equilibrium
-with every bearing at its clearance sets the loads each carries, its preload included, and with the
-viscosity at its seat's lubricant node its friction heat. A warm front bearing that closes its
-clearance, or a shaft that grows against a located pair, shows in every bearing's load.
+"""The bearings on a shaft, rigid (`systems.shaft_equilibrium`) or flexible (`systems.flexible_shaft`),
+in the thermal–mechanical fixed point (`bearing_thermal`): each bearing sits at its own seat of the
+network (its rings, lubricant, shaft and housing nodes; `mounting_paths.shaft_paths` joins the
+seats along the shaft and the housing), its fits and the temperatures of its seat set its operating
+clearance (the mounting model through its type's `AbstractSupport.ring_section` and
+`with_clearance_change`), and the shaft's equilibrium with every bearing at its clearance sets the
+loads each carries, its preload included, and with the viscosity at its seat's lubricant node its
+friction heat: a warm front pair that closes its clearance shows in every bearing's load. The
+shaft's axial growth against the housing's is not modelled (the bearings' offsets stay as given).
 
 A bearing type takes part where its support gives a `ring_section` (ball bearings, cylindrical
 roller bearings); its heat is its friction model's (`bearing_thermal.AbstractFrictionHeat`, one per
 bearing: its friction kind's Palmgren factors, `shaft_factors`, or SKF's rows).
 """
 
+import equinox as eqx
 import jax
 import jax.numpy as jnp
 
 from ..film.viscosity_temperature import walther_viscosity
 from ..friction.friction_torque import PALMGREN_CONSTANTS
 from ..systems.operating_clearance import mounted_clearance_change
+from ..systems.flexible_shaft import FlexibleShaft, solve_flexible_shaft
+from ..systems.shaft_beam import BeamMesh, ShaftSections
 from ..systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
 from .bearing_thermal import (
     SEAT_NODES,
@@ -35,8 +39,9 @@ class MountedShaft(AbstractHeatedBearing):
     """A rigid shaft on `supports` (each an `AbstractSupport` with a `ring_section`, at its clearance
     as given), bearing k in `mountings[k]` (its fits; the temperatures are the unknowns) with bore
     and outside diameter `bores[k]`, `outer_diameters[k]` [m] and friction model `friction[k]`, under
-    `loads`, turning at `speed` [rad/s] (outer rings fixed), in `oil`. Bearing k's nodes are seat k's
-    (`bearing_thermal.node_names`)."""
+    `loads`, turning at `speed` [rad/s] (outer rings fixed), in `oil`; rigid, or with `sections`
+    (and their `mesh`, `reference` the point of `flexible_shaft.FlexibleShaft`) a Timoshenko beam.
+    Bearing k's nodes are seat k's (`bearing_thermal.node_names`)."""
 
     supports: tuple
     mountings: tuple
@@ -46,6 +51,9 @@ class MountedShaft(AbstractHeatedBearing):
     loads: ShaftLoads
     speed: jax.Array
     oil: WaltherLine
+    sections: ShaftSections | None = None
+    reference: jax.Array = 0.0
+    mesh: BeamMesh | None = eqx.field(static=True, default=None)
 
     def __check_init__(self):
         if not (len(self.supports) == len(self.mountings) == len(self.friction)):
@@ -67,12 +75,19 @@ class MountedShaft(AbstractHeatedBearing):
         return tuple(support.with_clearance_change(change)
                      for support, change in zip(self.supports, self.clearance_changes(temperatures)))
 
+    def equilibrium(self, supports, loads):
+        """The shaft's equilibrium on `supports` under `loads` at its speed, rigid or flexible."""
+        shaft = Shaft(supports, loads, self.speed)
+        if self.sections is None:
+            return solve_shaft(shaft)
+        return solve_flexible_shaft(FlexibleShaft(shaft, self.sections, self.reference, self.mesh))
+
     def heat(self, temperatures) -> BearingHeat:
         """The shaft's equilibrium at the warm clearances; each bearing's friction heat from the load
         it carries at its seat's lubricant viscosity, into its seat's nodes. `clearance`,
         `lubricant_power` and `ring_power` are per bearing (K,)."""
         warm = self.supports_at(temperatures)
-        solution = solve_shaft(Shaft(warm, self.loads, self.speed))
+        solution = self.equilibrium(warm, self.loads)
         speed = jnp.abs(self.speed)
         viscous, load = [], []
         for seat, (support, force, friction) in enumerate(zip(warm, solution.bearing_forces, self.friction)):

@@ -1,5 +1,5 @@
 """The thermal–mechanical steady state (`effects.thermal = true`, `diffbearing.thermal`) of a single
-ball bearing, a preloaded pair or the bearings on a rigid shaft in their mounting: a thermal network
+ball bearing, a preloaded pair or the bearings on a shaft (rigid or flexible) in their mounting: a thermal network
 of the rings, the lubricant, the shaft and the housing (on a shaft, at each bearing's seat; paths
 from their geometry, `thermal.mounting_paths`), heated by the friction the scene's `effects.friction`
 names at the state the temperatures give — SKF's four components with "skf" (`thermal.skf_heat`),
@@ -22,7 +22,7 @@ import numpy as np
 from ....friction import friction_torque
 from ....params import BALL_BEARING_KINDS, check_range, radial_clearance, with_radial_clearance
 from ....systems.bearing_set import preload_offset
-from ....systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
+from ....systems.shaft_equilibrium import ShaftLoads
 from ....thermal import bearing_thermal
 from ....thermal.bearing_thermal import PATH_NAMES
 from ....thermal.mounting_paths import CONDUCTIVITIES, Cooling, MountingGeometry, mounting_paths, shaft_paths
@@ -215,9 +215,6 @@ def _shaft(v, built) -> dict:
     if v[EFFECT_ON] is not True:
         return shaft_input(v, built) | lubricant_input(v, built) | {"thermal": None}
     line = _scene_line(v)
-    if "shaft.sections" in v:
-        raise ValueError("shaft.sections: effects.thermal runs on a rigid shaft (the flexible shaft's bending does "
-                         "not enter the fixed point)")
     layout = shaft_layout(v, built)["shaft"]
     mountings = shaft_mountings(v, layout)
     supports = layout_supports(layout, _settings(v))
@@ -227,7 +224,7 @@ def _shaft(v, built) -> dict:
     paths = shaft_paths(_shaft_geometry(v, layout, supports), layout.positions, cooling)
     heated = MountedShaft(supports, mountings, jnp.stack([jnp.asarray(bore, float) for bore, _ in layout.envelopes]),
                           jnp.stack([jnp.asarray(outside, float) for _, outside in layout.envelopes]),
-                          heat, layout.loads, layout.speed, oil)
+                          heat, layout.loads, layout.speed, oil, layout.sections, layout.stiffness_at, layout.mesh)
     state = bearing_thermal.solve_thermal(heated, paths)
     warm = tuple(bearing_thermal.mounted_at(mounting, state.temperatures, seat) for seat, mounting in enumerate(mountings))
     moved, changes = mounted_layout(v, layout, warm)
@@ -275,10 +272,11 @@ def _shaft_outputs(inputs: dict, settings: dict, results: dict) -> dict:
     layout = inputs["shaft"]
     supports = layout_supports(layout, settings)
     running = [support.ring_section().clearance for support in supports]
-    unloaded = Shaft(supports, ShaftLoads(jnp.zeros(1), jnp.zeros((1, 3)), jnp.zeros((1, 2))), layout.speed)
+    loads = layout.loads  # at the same points (a flexible shaft's mesh has nodes there), none of them
+    unloaded = inputs["thermal"]["heated"].equilibrium(supports, ShaftLoads(
+        loads.positions, jnp.zeros_like(loads.forces), jnp.zeros_like(loads.moments)))
     return out | {
-        "bearings.thermal.operating_preload": jnp.stack([jnp.abs(force[2])
-                                                         for force in solve_shaft(unloaded).bearing_forces]),
+        "bearings.thermal.operating_preload": jnp.stack([jnp.abs(force[2]) for force in unloaded.bearing_forces]),
         "bearings.thermal.clearance": state.clearance,
         "bearings.thermal.equilibrium_clearance": jnp.stack(running),
         "bearings.thermal.lubricant_power": state.lubricant_power, "bearings.thermal.ring_power": state.ring_power,
