@@ -4,6 +4,8 @@ the clearance against the mounting model at the solved temperatures, a bearing a
 ambient temperature, derivatives through the fixed point against central differences, and thermal
 runaway reported, not a NaN."""
 
+import os
+
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -112,3 +114,42 @@ def test_thermal_runaway_is_reported_not_a_nan():
     state = solve(_mounted(), weak)
     assert not bool(state.converged)
     assert all(bool(jnp.all(jnp.isfinite(leaf))) for leaf in jax.tree.leaves(state))
+
+
+SEED = int(os.environ.get("DIFFBEARING_SEED", "20261204"))
+# the draws' envelope: shaft interference [m], speed [r/min], F_r, F_a [N], then the seven paths [W/K]
+# (inner ring – shaft, outer ring – housing, each ring – lubricant, shaft – ambient, housing –
+# ambient, the oil's flow) and the oil inlet's temperature above the ambient [K]
+RANDOM_ENVELOPE = ((-10e-6, 20e-6), (0.0, 6000.0), (1e3, 20e3), (0.0, 3e3), (1.0, 50.0), (1.0, 50.0), (0.2, 10.0),
+                   (0.2, 10.0), (0.1, 5.0), (0.5, 50.0), (0.0, 5.0), (-10.0, 40.0))
+LOG_DRAWN = range(4, 10)  # the conductances of the parts, log-uniform
+
+
+def _random_case(row):
+    interference, rpm, radial, axial, *conductances, inlet = (row[i] for i in range(12))
+    mounting = Mounting(shaft_interference=interference, housing_interference=-5e-6, reference_temperature=AMBIENT,
+                        housing=SEAT_MATERIALS["cast_iron"][0], housing_expansion=SEAT_MATERIALS["cast_iron"][1])
+    operating = Operating(inner_speed=rpm * jnp.pi / 30, outer_speed=0.0, force=jnp.stack([radial, 0.0, axial]),
+                          moment=jnp.zeros(2), misalignment=jnp.zeros(2))
+    paths = bt.ThermalPaths(*conductances, AMBIENT, AMBIENT + inlet)
+    state = bt.solve_thermal(bt.MountedBallBearing(BEARING, mounting, operating, OIL, FACTORS), paths)
+    power = state.lubricant_power + state.ring_power
+    return state.converged, state.temperatures, state.clearance, power, jnp.sum(state.boundary_heat)
+
+
+def test_random_mounted_bearings_converge_or_say_so():
+    """48 seeded random mounted 6411s over fits, speeds, loads, paths and oil inlet temperatures
+    (`RANDOM_ENVELOPE`; DIFFBEARING_SEED sets the seed): every output finite; each converges — its
+    heat balance closed (1e-8) inside the model's −60 … 250 °C — or reports that its temperatures
+    left the model (a node held at 250 °C, not converged). A single bearing's Palmgren heat falls
+    as it warms (its viscosity does), so a steady state exists wherever the model holds."""
+    rng = np.random.default_rng(SEED)
+    rows = np.stack([np.exp(rng.uniform(np.log(low), np.log(high), 48)) if column in LOG_DRAWN else
+                     rng.uniform(low, high, 48) for column, (low, high) in enumerate(RANDOM_ENVELOPE)], axis=1)
+    converged, temperatures, clearance, power, leaving = (np.asarray(x) for x in jax.jit(jax.vmap(_random_case))(rows))
+    assert all(np.all(np.isfinite(x)) for x in (temperatures, clearance, power, leaving)), SEED
+    np.testing.assert_allclose(leaving[converged], power[converged], rtol=1e-8, atol=1e-9, err_msg=str(SEED))
+    assert np.all(temperatures[converged] <= bt.TEMPERATURE_RANGE[1]), SEED
+    left = np.max(temperatures, axis=1) >= bt.TEMPERATURE_RANGE[1]
+    assert np.all(converged | left), (SEED, rows[~(converged | left)])
+    assert np.mean(converged) > 0.5, (SEED, np.mean(converged))
