@@ -23,6 +23,7 @@ Writes benchmarks/results/thermal.md.
 """
 
 import argparse
+import dataclasses
 import sys
 import time
 from pathlib import Path
@@ -107,10 +108,9 @@ class ClassicalFixedPoint:
     def heat(self, temperatures, rpm):
         """Sources [W] at the five free nodes."""
         speed = rpm * np.pi / 30
-        warm = Mounting(shaft_interference=0.0, housing_interference=-5e-6, reference_temperature=AMBIENT,
-                        housing=SEAT_MATERIALS["cast_iron"][0], housing_expansion=SEAT_MATERIALS["cast_iron"][1],
-                        inner_ring_temperature=temperatures[0], outer_ring_temperature=temperatures[1],
-                        shaft_temperature=temperatures[3], housing_temperature=temperatures[4])
+        warm = dataclasses.replace(MOUNTING, inner_ring_temperature=temperatures[0],
+                                   outer_ring_temperature=temperatures[1], shaft_temperature=temperatures[3],
+                                   housing_temperature=temperatures[4])
         pitch, ball = 97.5e-3, 26.9875e-3
         change = float(operating_clearance_change(warm, 55e-3, pitch - ball, pitch + ball, 140e-3, ball, BEARING_STEEL,
                                                   speed).change)
@@ -177,7 +177,6 @@ def classical_case(repeats):
 
 def system_cases(repeats):
     """(name, compile [s], run [s]) of the pair and the spindle shaft of the tests."""
-    sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
     from tests import test_pair_thermal, test_shaft_thermal
 
     found = []

@@ -251,10 +251,14 @@ def test_bad_shaft_thermal_inputs_exit_2_naming_their_key(capsys, tmp_path, over
 
 
 def test_a_bearing_without_its_width_exits_2(capsys, tmp_path):
-    """A bearing without its width (the network's conduction paths): exit 2 naming bearings[0]."""
+    """A bearing without its width (the network's conduction paths), or with one outside (0, D):
+    exit 2 naming bearings[0]."""
     path = tmp_path / "shaft.toml"
     path.write_text(THERMAL_GEARBOX.replace('width = "33 mm"\n', "", 1))
     assert_exits_2_naming(capsys, ["run", str(path)], "bearings[0]: width")
+    for width in ("-33 mm", "300 mm"):
+        path.write_text(THERMAL_GEARBOX.replace('width = "33 mm"', f'width = "{width}"', 1))
+        assert_exits_2_naming(capsys, ["run", str(path)], "bearings[0].width")
 
 
 @pytest.mark.slow

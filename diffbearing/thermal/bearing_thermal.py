@@ -100,6 +100,11 @@ def seat_node(seat: int, node: int) -> int:
     return SEAT_NODES * seat + node
 
 
+def seat_temperatures(temperatures, seats: int):
+    """The free nodes' temperatures [K] (`seats`, 5): a row per seat, its columns `NODES[:5]`."""
+    return jnp.reshape(temperatures[:SEAT_NODES * seats], (seats, SEAT_NODES))
+
+
 def bearing_network(paths: ThermalPaths) -> ThermalNetwork:
     """The paths as a `ThermalNetwork` over `node_names(paths.seats)`."""
     seats = paths.seats
@@ -145,6 +150,12 @@ class PalmgrenFactors(AbstractFrictionHeat):
     f0: jax.Array
     coefficient: jax.Array
     exponent: float = eqx.field(static=True)
+
+    @classmethod
+    def of_kind(cls, kind: str, f0) -> "PalmgrenFactors":
+        """f₀ `f0` and the f₁ factors of a bearing `kind`'s row of `friction_torque.PALMGREN_CONSTANTS`."""
+        _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[kind]
+        return cls(jnp.asarray(f0, float), coefficient, exponent)
 
     def powers(self, support: AbstractSupport, force, speed, viscosity) -> tuple:
         return palmgren_powers(support, force, speed, viscosity, self)

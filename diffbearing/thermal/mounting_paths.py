@@ -97,6 +97,11 @@ def shaft_coefficient(cooling: Cooling, shaft_diameter):
                                                      AIR_PRANDTL)
 
 
+def _shaft_section(geometry: MountingGeometry):
+    """The shaft's cross-section at a seat [m²]: π/4 (d² − d_bore²)."""
+    return 0.25 * jnp.pi * (geometry.bore ** 2 - geometry.shaft_bore ** 2)
+
+
 def _seat_paths(geometry: MountingGeometry, cooling: Cooling, ends: int) -> dict:
     """The conductances [W/K] of one seat's paths (`bearing_thermal.PATH_NAMES`), the shaft and the
     housing reaching past it on `ends` of its two sides (2: a single seat; on a shaft the outermost
@@ -105,7 +110,6 @@ def _seat_paths(geometry: MountingGeometry, cooling: Cooling, ends: int) -> dict
     pitch = 0.5 * (g.inner_raceway_diameter + g.outer_raceway_diameter)
     oil = oil_coefficient(cooling, pitch)
     air = shaft_coefficient(cooling, g.bore)
-    shaft_section = 0.25 * jnp.pi * (g.bore ** 2 - g.shaft_bore ** 2)
     housing_surface = jnp.pi * g.housing_outer_diameter * g.housing_length \
         + ends * 0.25 * jnp.pi * (g.housing_outer_diameter ** 2 - g.outer_diameter ** 2)
     return dict(
@@ -116,7 +120,7 @@ def _seat_paths(geometry: MountingGeometry, cooling: Cooling, ends: int) -> dict
                               0.5 * g.housing_outer_diameter)),
         inner_ring_lubricant=convection(oil, jnp.pi * g.inner_raceway_diameter * g.width),
         outer_ring_lubricant=convection(oil, jnp.pi * g.outer_raceway_diameter * g.width),
-        shaft_ambient=ends * fin(air, jnp.pi * g.bore, g.shaft_conductivity, shaft_section, g.shaft_length),
+        shaft_ambient=ends * fin(air, jnp.pi * g.bore, g.shaft_conductivity, _shaft_section(g), g.shaft_length),
         housing_ambient=convection(cooling.housing_coefficient, housing_surface),
         oil_flow=advection(cooling.oil_flow, OIL_HEAT_PER_FLOW),
     )
@@ -130,8 +134,8 @@ def mounting_paths(geometry: MountingGeometry, cooling: Cooling) -> ThermalPaths
 
 def shaft_paths(seats: tuple[MountingGeometry, ...], positions, cooling: Cooling) -> ThermalPaths:
     """The `ThermalPaths` of bearings at several `seats` along a shaft, at axial `positions` [m]
-    (concrete: their order sets which seats neighbour; module docstring): each seat's own paths, the shaft's ends beyond the
-    outermost seats, and conduction along the shaft and the housing between neighbouring seats —
+    (concrete: their order sets which seats neighbour; module docstring): each seat's own paths, the
+    shaft's ends beyond the outermost seats, and conduction along the shaft and the housing between neighbouring seats —
     through the mean of the two seats' shaft sections, and through the housing's wall outside the
     larger outer diameter — over the distance of their centres."""
     order = [int(seat) for seat in np.argsort(np.asarray(positions))]
@@ -142,8 +146,7 @@ def shaft_paths(seats: tuple[MountingGeometry, ...], positions, cooling: Cooling
     for near, far in pairs:
         first, second = seats[near], seats[far]
         distance = jnp.abs(jnp.asarray(positions[far]) - jnp.asarray(positions[near]))
-        sections = [0.25 * jnp.pi * (g.bore ** 2 - g.shaft_bore ** 2) for g in (first, second)]
-        shaft.append(first.shaft_conductivity * 0.5 * (sections[0] + sections[1]) / distance)
+        shaft.append(first.shaft_conductivity * 0.5 * (_shaft_section(first) + _shaft_section(second)) / distance)
         wall = 0.25 * jnp.pi * (first.housing_outer_diameter ** 2 - jnp.maximum(first.outer_diameter,
                                                                                   second.outer_diameter) ** 2)
         housing.append(first.housing_conductivity * wall / distance)

@@ -18,9 +18,8 @@ import jax
 import jax.numpy as jnp
 
 from ..film.viscosity_temperature import walther_viscosity
-from ..friction.friction_torque import PALMGREN_CONSTANTS
-from ..systems.operating_clearance import mounted_clearance_change
 from ..systems.flexible_shaft import FlexibleShaft, solve_flexible_shaft
+from ..systems.operating_clearance import mounted_clearance_change
 from ..systems.shaft_beam import BeamMesh, ShaftSections
 from ..systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
 from .bearing_thermal import (
@@ -31,12 +30,12 @@ from .bearing_thermal import (
     WaltherLine,
     mounted_at,
     ring_sources,
-    seat_node,
+    seat_temperatures,
 )
 
 
 class MountedShaft(AbstractHeatedBearing):
-    """A rigid shaft on `supports` (each an `AbstractSupport` with a `ring_section`, at its clearance
+    """A shaft on `supports` (each an `AbstractSupport` with a `ring_section`, at its clearance
     as given), bearing k in `mountings[k]` (its fits; the temperatures are the unknowns) with bore
     and outside diameter `bores[k]`, `outer_diameters[k]` [m] and friction model `friction[k]`, under
     `loads`, turning at `speed` [rad/s] (outer rings fixed), in `oil`; rigid, or with `sections`
@@ -88,25 +87,19 @@ class MountedShaft(AbstractHeatedBearing):
         `lubricant_power` and `ring_power` are per bearing (K,)."""
         warm = self.supports_at(temperatures)
         solution = self.equilibrium(warm, self.loads)
-        speed = jnp.abs(self.speed)
-        viscous, load = [], []
-        for seat, (support, force, friction) in enumerate(zip(warm, solution.bearing_forces, self.friction)):
-            viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100,
-                                          temperatures[seat_node(seat, 2)])
-            powers = friction.powers(support, force[:3], speed, viscosity)
-            viscous.append(powers[0])
-            load.append(powers[1])
-        seats = [ring_sources(v, w)[:SEAT_NODES] for v, w in zip(viscous, load)]
-        sources = jnp.concatenate([*seats, jnp.zeros(2)])
+        viscosities = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100,
+                                        seat_temperatures(temperatures, len(warm))[:, 2])
+        powers = [friction.powers(support, force[:3], jnp.abs(self.speed), viscosity)
+                  for support, force, friction, viscosity in zip(warm, solution.bearing_forces, self.friction,
+                                                                  viscosities)]
+        lubricant, rings = jnp.stack([p[0] for p in powers]), jnp.stack([p[1] for p in powers])
+        sources = jnp.concatenate([*(ring_sources(own, ring)[:SEAT_NODES] for own, ring in zip(lubricant, rings)),
+                                   jnp.zeros(2)])
         clearance = jnp.stack([support.ring_section().clearance for support in warm])
-        return BearingHeat(sources, clearance, jnp.stack(viscous), jnp.stack(load), solution, solution.converged)
+        return BearingHeat(sources, clearance, lubricant, rings, solution, solution.converged)
 
 
 def shaft_factors(supports, f0) -> tuple[PalmgrenFactors, ...]:
-    """Each bearing's `PalmgrenFactors`: f₀ `f0[k]` and its friction kind's f₁ = a (P₀/C₀)^b
-    (`friction_torque.PALMGREN_CONSTANTS` of `AbstractSupport.friction_kind`)."""
-    found = []
-    for support, own in zip(supports, f0):
-        _, _, coefficient, exponent = PALMGREN_CONSTANTS[support.friction_kind("palmgren")]
-        found.append(PalmgrenFactors(jnp.asarray(own, float), coefficient, exponent))
-    return tuple(found)
+    """Each bearing's `PalmgrenFactors`: f₀ `f0[k]` and the f₁ factors of its friction kind
+    (`AbstractSupport.friction_kind`)."""
+    return tuple(PalmgrenFactors.of_kind(support.friction_kind("palmgren"), own) for support, own in zip(supports, f0))

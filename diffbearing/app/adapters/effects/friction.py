@@ -98,14 +98,14 @@ def _seals(v, kind: str) -> tuple:
     return row, counterface, seals
 
 
-def _friction_kinds(layout, supports, model: str) -> list[str]:
+def friction_kinds(layout, supports, model: str, effect: str = "effects.friction") -> list[str]:
     """Each of the shaft's bearings' (`supports`) kind in the friction model `model`
-    (`AbstractSupport.friction_kind`); ValueError naming the bearing a model does not cover."""
+    (`AbstractSupport.friction_kind`); ValueError naming the `effect` and the bearing a model does not cover."""
     kinds = []
     for number, support in enumerate(supports):
         kind = support.friction_kind(model)
         if kind is None:
-            raise ValueError(f"effects.friction: bearings[{number}] ({layout.kinds[number]}) is not covered by the "
+            raise ValueError(f"{effect}: bearings[{number}] ({layout.kinds[number]}) is not covered by the "
                              f"{model!r} friction model" + (" (try \"skf\")" if model == "palmgren" else ""))
         kinds.append(kind)
     return kinds
@@ -123,7 +123,7 @@ def shaft_skf_bearings(v, built) -> dict:
     series = v.get("friction.series")
     bearings = []
     supports = layout_supports(layout)
-    for number, (support, kind, (bore, outside)) in enumerate(zip(supports, _friction_kinds(layout, supports, "skf"),
+    for number, (support, kind, (bore, outside)) in enumerate(zip(supports, friction_kinds(layout, supports, "skf"),
                                                                   layout.envelopes)):
         own = support.friction_series()
         if series is not None and own is None and series not in skf_friction.SERIES_CONSTANTS[kind]:
@@ -139,7 +139,7 @@ def shaft_skf_bearings(v, built) -> dict:
 
 def _shaft_constants(v, built) -> dict:
     """f₀ of each of the shaft's bearings (a tuple), the scene's f₁ or None."""
-    return {"friction_constants": {"f0": tuple(palmgren_f0(v, kind) for kind in _friction_kinds(
+    return {"friction_constants": {"f0": tuple(palmgren_f0(v, kind) for kind in friction_kinds(
         built["shaft"], layout_supports(built["shaft"]), "palmgren")),
                                    "f1": _f1(v)}}
 

@@ -19,7 +19,6 @@ import equinox as eqx
 import jax.numpy as jnp
 import numpy as np
 
-from ....friction import friction_torque
 from ....params import BALL_BEARING_KINDS, check_range, radial_clearance, with_radial_clearance
 from ....systems.bearing_set import preload_offset
 from ....systems.shaft_equilibrium import ShaftLoads
@@ -43,7 +42,7 @@ from ..systems.mounting import (
     shaft_mountings,
 )
 from ..systems.shaft_layout import layout_supports, shaft_layout
-from .friction import palmgren_f0, scene_skf_bearing, shaft_skf_bearings
+from .friction import friction_kinds, palmgren_f0, scene_skf_bearing, shaft_skf_bearings
 
 EFFECT_ON = "effects.thermal"
 SINGLE, PAIR = (EFFECT_ON, "!bearing.arrangement"), (EFFECT_ON, "bearing.arrangement")
@@ -131,11 +130,8 @@ def _common(v):
     its friction model's heat, the model options), each scene key checked."""
     line = _scene_line(v)
     bearing = catalogue_bearing(v, material(v))
-    if _skf(v):
-        heat = SkfHeat(scene_skf_bearing(v, {"bearing": bearing})["skf_bearing"])
-    else:
-        _, _, coefficient, exponent = friction_torque.PALMGREN_CONSTANTS[bearing.kind]
-        heat = bearing_thermal.PalmgrenFactors(palmgren_f0(v, bearing.kind), coefficient, exponent)
+    heat = SkfHeat(scene_skf_bearing(v, {"bearing": bearing})["skf_bearing"]) if _skf(v) else \
+        bearing_thermal.PalmgrenFactors.of_kind(bearing.kind, palmgren_f0(v, bearing.kind))
     return bearing, scene_mounting(v), line, heat, ball_model(_settings(v))
 
 
@@ -144,13 +140,8 @@ def _shaft_heat(v, layout, supports) -> tuple:
     friction kind); ValueError naming the bearing the model does not cover."""
     if _skf(v):
         return tuple(SkfHeat(bearing) for bearing in shaft_skf_bearings(v, {"shaft": layout})["skf_bearing"])
-    kinds = []
-    for number, support in enumerate(supports):
-        kind = support.friction_kind("palmgren")
-        if kind is None:
-            raise ValueError(f"effects.thermal: bearings[{number}] ({layout.kinds[number]}) has no Palmgren factors")
-        kinds.append(kind)
-    return shaft_factors(supports, [palmgren_f0(v, kind) for kind in kinds])
+    return shaft_factors(supports, [palmgren_f0(v, kind) for kind in friction_kinds(layout, supports, "palmgren",
+                                                                                     EFFECT_ON)])
 
 
 def _inputs(v, heated, paths, mounting) -> dict:
@@ -202,6 +193,8 @@ def _shaft_geometry(v, layout, supports) -> tuple[MountingGeometry, ...]:
         if width is None:
             raise ValueError(f"bearings[{number}]: width is needed by effects.thermal (the rings' and the housing's "
                              "conduction paths)")
+        check_range(f"bearings[{number}].width", width, low=0.0, high=outside, unit=" m",
+                    why="positive, below the outer diameter")
         rings = support.ring_section()
         found.append(_seat_geometry(v, bore, outside, rings.inner_raceway_diameter, rings.outer_raceway_diameter, width,
                                     largest))
@@ -228,7 +221,7 @@ def _shaft(v, built) -> dict:
     state = bearing_thermal.solve_thermal(heated, paths)
     warm = tuple(bearing_thermal.mounted_at(mounting, state.temperatures, seat) for seat, mounting in enumerate(mountings))
     moved, changes = mounted_layout(v, layout, warm)
-    lubricant = jnp.max(state.temperatures[jnp.array([bearing_thermal.seat_node(seat, 2) for seat in range(len(supports))])])
+    lubricant = jnp.max(bearing_thermal.seat_temperatures(state.temperatures, len(supports))[:, 2])
     return {"shaft": moved, "mounting": changes, "lubricant": lubricant_at(v, lubricant),
             "thermal": {"state": state, "paths": paths, "heated": heated}}
 
@@ -264,12 +257,10 @@ def _set_outputs(inputs: dict, settings: dict, results: dict) -> dict:
 def _shaft_outputs(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's seat (K,), the shaft's totals, and the identity that holds it together: each
     bearing's clearance as the shaft runs it is the state's."""
-    state, paths = inputs["thermal"]["state"], inputs["thermal"]["paths"]
-    seats = len(inputs["shaft"].kinds)
-    out = {f"bearings.thermal.{name}_temperature": state.temperatures[
-        jnp.array([bearing_thermal.seat_node(seat, number) for seat in range(seats)])]
-        for number, name in enumerate(NODE_NAMES)}
-    layout = inputs["shaft"]
+    state, paths, layout = inputs["thermal"]["state"], inputs["thermal"]["paths"], inputs["shaft"]
+    seats = len(layout.kinds)
+    temperatures = bearing_thermal.seat_temperatures(state.temperatures, seats)
+    out = {f"bearings.thermal.{name}_temperature": temperatures[:, number] for number, name in enumerate(NODE_NAMES)}
     supports = layout_supports(layout, settings)
     running = [support.ring_section().clearance for support in supports]
     loads = layout.loads  # at the same points (a flexible shaft's mesh has nodes there), none of them
