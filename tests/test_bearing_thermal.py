@@ -11,9 +11,11 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
+from diffbearing.friction.skf_friction import SkfBearing
 from diffbearing.params import BEARING_STEEL, Operating, ball_bearing, radial_clearance
 from diffbearing.systems.operating_clearance import SEAT_MATERIALS, Mounting, operating_clearance_change
 from diffbearing.thermal import bearing_thermal as bt
+from diffbearing.thermal.skf_heat import SkfHeat
 from diffbearing.thermal.thermal_network import node_temperatures
 
 from .helpers import assert_jvp_matches_central_difference
@@ -100,6 +102,31 @@ def test_derivatives_through_the_fixed_point_are_central_differences():
     for index, step in enumerate((1e-4, 1e-8, 1e-1)):
         assert_jvp_matches_central_difference(outputs, point, jnp.zeros(3).at[index].set(1.0), step, rtol=1e-5,
                                               atol=1e-4)
+
+
+@pytest.mark.slow
+def test_derivatives_through_the_fixed_point_with_skf_heat_are_central_differences():
+    """SKF's four components as the heat (64 series, an oil bath with a drag loss factor, so heat
+    goes into the lubricant as well as the rings): ∂(inner ring and lubricant temperatures,
+    clearance)/∂(shaft interference, speed, axial load) through the implicit root against central
+    differences (1e-5, and 1e-6 K absolute: SKF's moment reads the applied loads, not the clearance,
+    so the temperatures do not depend on the fit). The axial load moves SKF's M_rr and M_sl (its
+    G_rr, G_sl read F_a)."""
+    skf = SkfHeat(SkfBearing("64", "oil_bath", jnp.asarray(0.055), jnp.asarray(0.14), jnp.asarray(0.0005), None))
+
+    def outputs(x):
+        mounting = Mounting(shaft_interference=x[0] * 1e-6, housing_interference=-5e-6, reference_temperature=AMBIENT,
+                            housing=SEAT_MATERIALS["cast_iron"][0], housing_expansion=SEAT_MATERIALS["cast_iron"][1])
+        operating = Operating(inner_speed=x[1] * jnp.pi / 30, outer_speed=0.0, force=jnp.stack([8e3, 0.0, x[2] * 1e3]),
+                              moment=jnp.zeros(2), misalignment=jnp.zeros(2))
+        state = bt.solve_thermal(bt.MountedBallBearing(BEARING, mounting, operating, OIL, skf), PATHS)
+        return jnp.stack([state.temperatures[0], state.temperatures[2], state.clearance * 1e6,
+                          jnp.where(state.converged, 0.0, jnp.nan)])
+
+    point = jnp.array([15.0, 3000.0, 2.0])
+    for index, step in enumerate((1e-2, 1e-1, 1e-3)):
+        assert_jvp_matches_central_difference(outputs, point, jnp.zeros(3).at[index].set(1.0), step, rtol=1e-5,
+                                              atol=1e-6)
 
 
 @pytest.mark.slow

@@ -23,7 +23,9 @@ from diffbearing.params import BEARING_STEEL, ISO_VG_VISCOSITY_100, radial_clear
 from diffbearing.ratings.life_modification import reference_viscosity
 from diffbearing.systems import bearing_fits
 from diffbearing.systems.bearing_set import bearing_set, preload_offset
+from diffbearing.systems.flexible_shaft import shaft_mesh
 from diffbearing.systems.operating_clearance import SEAT_MATERIALS, Mounting, mounted_clearance_change, operating_clearance_change
+from diffbearing.systems.shaft_beam import ShaftSections
 from diffbearing.systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
 from diffbearing.thermal import bearing_thermal as bt
 from diffbearing.thermal.mounting_paths import CONDUCTIVITIES, Cooling, MountingGeometry, mounting_paths, shaft_paths
@@ -177,6 +179,61 @@ def test_the_warm_shaft_is_differentiable():
     point = jnp.array([OFFSET * 1e6, 6000.0])
     for direction, step in ((jnp.array([1.0, 0.0]), 0.05), (jnp.array([0.0, 1.0]), 20.0)):
         assert_jvp_matches_central_difference(outputs, point, direction, step, rtol=1e-5)
+
+
+@pytest.mark.slow
+def test_the_warm_flexible_shaft_is_differentiable():
+    """The spindle on a Timoshenko beam (70 mm at the pair, a 50/20 mm tube to the rear bearing):
+    ∂(front inner ring temperature, rear bearing's radial load, front bearing's axial load)/∂(the
+    tube's outside diameter, speed) through the fixed point and the beam's condensed equilibrium
+    against central differences (1e-5). A stiffer tube moves the loads between the bearings, and
+    with them the heat."""
+    rigid, paths = _spindle()
+    mesh = shaft_mesh(_spindle_sections(0.05), [s.position for s in rigid.supports], rigid.loads.positions)
+
+    def outputs(x):
+        shaft, paths = _spindle(speed=x[1] * np.pi / 30)
+        flexible = dataclasses.replace(shaft, sections=_spindle_sections(x[0] * 1e-3), mesh=mesh)
+        state = bt.solve_thermal(flexible, paths)
+        forces = state.mechanics.bearing_forces
+        return jnp.stack([state.temperatures[0], jnp.hypot(forces[2][0], forces[2][1]) / 1e3, forces[0][2] / 1e3,
+                          jnp.where(state.converged, 0.0, jnp.nan)])
+
+    point = jnp.array([50.0, 6000.0])
+    for direction, step in ((jnp.array([1.0, 0.0]), 1e-2), (jnp.array([0.0, 1.0]), 20.0)):
+        assert_jvp_matches_central_difference(outputs, point, direction, step, rtol=1e-5)
+
+
+def _spindle_sections(tube_diameter):
+    """70 mm solid from the nose to behind the pair, a tube of `tube_diameter` [m] with a 20 mm bore
+    to beyond the rear bearing."""
+    return ShaftSections([-0.15, 0.04], [0.04, 0.35], jnp.stack([jnp.asarray(0.07), jnp.asarray(tube_diameter)]),
+                         [0.0, 0.02], SEAT_MATERIALS["steel"][0])
+
+
+def test_a_mounted_shaft_is_differentiable():
+    """`effects.mounting` on a shaft (each bearing's clearance changed by `mounted_clearance_change`
+    at its fits and ring temperatures, then the shaft's equilibrium): ∂(each clearance change, the
+    front bearing's axial load, the rear bearing's radial load)/∂(shaft interference, inner rings'
+    temperature) against central differences (1e-6)."""
+    pair = bearing_set(BEARING, "back_to_back", spacing=0.04, offset=OFFSET)
+    supports = (*pair, _cylindrical(30e-6))
+    loads = ShaftLoads(jnp.array([-0.12]), jnp.array([[1.5e3, 0.0, 1e3]]), jnp.zeros((1, 2)))
+
+    def outputs(x):
+        mounting = dataclasses.replace(MOUNTING, shaft_interference=x[0] * 1e-6, inner_ring_temperature=x[1],
+                                       outer_ring_temperature=AMBIENT + 10.0, shaft_temperature=x[1] - 2.0,
+                                       housing_temperature=AMBIENT + 8.0)
+        changes = jnp.stack([mounted_clearance_change(support, mounting, 70e-3, 110e-3, SPEED).change
+                             for support in supports])
+        solution = solve_shaft(Shaft(tuple(s.with_clearance_change(c) for s, c in zip(supports, changes)), loads, SPEED))
+        forces = solution.bearing_forces
+        return jnp.concatenate([changes * 1e6, jnp.stack([forces[0][2] / 1e3, jnp.hypot(forces[2][0], forces[2][1]) / 1e3,
+                                                          jnp.where(solution.converged, 0.0, jnp.nan)])])
+
+    point = jnp.array([5.0, AMBIENT + 20.0])
+    for direction, step in ((jnp.array([1.0, 0.0]), 1e-2), (jnp.array([0.0, 1.0]), 1e-2)):
+        assert_jvp_matches_central_difference(outputs, point, direction, step, rtol=1e-6)
 
 
 def _run(path, overrides=()):
