@@ -250,7 +250,7 @@ def test_examples_lists_every_packaged_scene(capsys):
                                          "needle_roller_shaft", "thrust_roller_shaft",
                                          "spherical_roller_shaft", "gearbox_duty_cycle",
                                          "gearbox_shaft_duty_cycle", "designation_6205", "gearbox_6411_thermal_speed",
-                                         "spindle_pair_thermal", "spindle_shaft_thermal"}
+                                         "spindle_pair_thermal", "spindle_shaft_thermal", "motor_6205_grease"}
     for name, description in listed.items():
         assert description and f"{name}" in out and description in out
     assert "aero_angular_contact" in next(line for line in out.splitlines() if "(default)" in line)
@@ -258,7 +258,7 @@ def test_examples_lists_every_packaged_scene(capsys):
 
 @pytest.mark.parametrize("name", ["aero_angular_contact", "aero_speed_sweep", "deep_groove_6411", "cage_b7005",
                                   "tapered_roller", "tapered_roller_bearing", "cylindrical_roller_bearing",
-                                  "mounted_6411", "gearbox_6411_ratings",
+                                  "mounted_6411", "gearbox_6411_ratings", "motor_6205_grease",
                                   pytest.param("starved_roller", marks=(pytest.mark.slow, pytest.mark.extended)),
                                   pytest.param("spindle_pair", marks=pytest.mark.slow),
                                   pytest.param("gearbox_shaft", marks=pytest.mark.slow),

@@ -36,4 +36,4 @@ from .effects import life  # noqa: F401
 from .systems import shaft  # noqa: F401
 from .effects import reliability  # noqa: F401
 from .effects import film, cage, frequencies, safety, friction  # noqa: F401
-from .effects import thermal_speed, thermal  # noqa: F401
+from .effects import thermal_speed, thermal, grease_life  # noqa: F401
