@@ -166,6 +166,10 @@ class BallBearing(eqx.Module):
     # contact exists while |α| < 90°); "axial": a thrust bearing's washers, each groove on its
     # washer's side of its centre's axial plane (a contact exists while |α − 90°| < 90°), α₀ up to 90°
     groove_facing: str = eqx.field(static=True, default="radial")
+    # the contact angle the ratings read once a mounting has moved the free one (`with_radial_clearance`:
+    # the bearing as designed keeps its nominal angle); None: the free contact angle [rad]
+    rated_contact_angle: np.ndarray | None = eqx.field(converter=lambda v: None if v is None else _as_float(v),
+                                                       default=None)
 
     def __check_init__(self):
         check_range("bearing.radial_clearance", -self.interference if _is_concrete(self.interference) else None,
@@ -209,8 +213,11 @@ class BallBearing(eqx.Module):
 
     @property
     def nominal_contact_angle(self):
-        """α for the ratings [rad]: 0 for a radial-contact (deep-groove) bearing, α₀ otherwise."""
-        return 0.0 if self.radial_contact else self.free_contact_angle
+        """α for the ratings [rad]: 0 for a radial-contact (deep-groove) bearing, else its free
+        contact angle α₀ as designed (kept by `with_radial_clearance` when a mounting moves α₀)."""
+        if self.radial_contact:
+            return 0.0
+        return self.free_contact_angle if self.rated_contact_angle is None else self.rated_contact_angle
 
 
 def groove_curvature_centre_distance(bearing: BallBearing):
@@ -234,11 +241,15 @@ def _check_clearance(clearance, distance, pitch_diameter):
 
 def with_radial_clearance(bearing: BallBearing, clearance) -> BallBearing:
     """The bearing at another diametral clearance G_r [m] (`contact_angle_and_interference`: a
-    negative one an interference); differentiable. ValueError outside `ball_bearing`'s range."""
+    negative one an interference); differentiable. Its ratings stay at its nominal contact angle
+    (ISO 76 and ISO 281 rate the bearing as designed, not as mounted). ValueError outside
+    `ball_bearing`'s range."""
     distance = groove_curvature_centre_distance(bearing)
     _check_clearance(clearance, distance, bearing.pitch_diameter)
     angle, interference = contact_angle_and_interference(clearance, distance)
-    return eqx.tree_at(lambda b: (b.free_contact_angle, b.interference), bearing, (angle, interference))
+    rated = bearing.free_contact_angle if bearing.rated_contact_angle is None else bearing.rated_contact_angle
+    return eqx.tree_at(lambda b: (b.free_contact_angle, b.interference, b.rated_contact_angle), bearing,
+                       (angle, interference, rated), is_leaf=lambda x: x is None)
 
 
 def clearance_changed(bearing: BallBearing, change) -> BallBearing:

@@ -146,6 +146,7 @@ def test_the_motor_example_is_nsks_equation(tmp_path):
     assert math.log10(float(jtekt["grease_life.life"]) / HOUR) == pytest.approx(want, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_with_effects_thermal_the_life_is_at_the_networks_outer_ring(tmp_path):
     """The mounted 6411 in the thermal fixed point: the temperature the grease life reads is the
     network's outer ring's (exact), and the life is the formula's there."""

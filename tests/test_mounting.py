@@ -7,8 +7,11 @@ import pytest
 
 from diffbearing import build_model, load_scene, run_model
 from diffbearing.app import cli
+from diffbearing.params import radial_clearance, with_radial_clearance
+from diffbearing.ratings.life import ball_load_rating
+from diffbearing.ratings.static_safety import ball_bearing_static_load_rating
 
-from .helpers import BEARING_6411E, central_difference_jvp, example_scene
+from .helpers import BEARING_6411E, SPINDLE_7014C, central_difference_jvp, example_scene
 
 MOUNTED = BEARING_6411E + """bore = "55 mm"
 outer_diameter = "140 mm"
@@ -60,6 +63,22 @@ def test_mounted_bearing_is_the_bearing_at_its_operating_clearance(mounted, tmp_
     for key in ("displacement", "balls.inner.load", "stiffness"):
         scale = np.max(np.abs(reference.values[key]))
         np.testing.assert_allclose(mounted.values[key], reference.values[key], rtol=0, atol=1e-9 * scale, err_msg=key)
+
+
+def test_a_mounted_angular_contact_bearing_is_rated_as_designed():
+    """A mounting's clearance change moves a 15° bearing's free contact angle (its rings' geometry),
+    not the angle ISO 76 and ISO 281 rate it at: C₀r and C_r are the bearing's as designed (exact),
+    after one change and after a second, and do not depend on the clearance (a zero derivative)."""
+    cold = radial_clearance(SPINDLE_7014C)
+    once = with_radial_clearance(SPINDLE_7014C, cold - 8e-6)
+    twice = with_radial_clearance(once, cold + 5e-6)
+    assert float(once.free_contact_angle) < float(SPINDLE_7014C.free_contact_angle) < float(twice.free_contact_angle)
+    for running in (once, twice):
+        assert float(running.nominal_contact_angle) == float(SPINDLE_7014C.free_contact_angle)
+        assert float(ball_bearing_static_load_rating(running)) == float(ball_bearing_static_load_rating(SPINDLE_7014C))
+        assert float(ball_load_rating(running)) == float(ball_load_rating(SPINDLE_7014C))
+    slope = jax.grad(lambda g: ball_bearing_static_load_rating(with_radial_clearance(SPINDLE_7014C, g)))(cold - 8e-6)
+    assert float(slope) == 0.0
 
 
 @pytest.mark.slow

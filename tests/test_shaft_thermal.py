@@ -211,6 +211,7 @@ def _spindle_sections(tube_diameter):
                          [0.0, 0.02], SEAT_MATERIALS["steel"][0])
 
 
+@pytest.mark.slow
 def test_a_mounted_shaft_is_differentiable():
     """`effects.mounting` on a shaft (each bearing's clearance changed by `mounted_clearance_change`
     at its fits and ring temperatures, then the shaft's equilibrium): ∂(each clearance change, the
