@@ -108,9 +108,11 @@ def test_set_at_its_operating_clearance():
     """Effect `mounting` on a set at standstill: with no fit and every temperature at the reference
     it changes nothing (exact); an inner ring 10 K hotter than the outer closes the clearance and raises the
     preload, and each bearing then carries what the single bearing carries at the running contact
-    angle, pushed by the matched offset plus the moved reference (f_i + f_o − 1) D_w (sin α₀ − sin α₀')."""
+    angle, pushed by the matched offset plus the moved reference (f_i + f_o − 1) D_w (sin α₀ − sin α₀')
+    less half the inner stack's axial growth α s (T_i − T_o) over the outer's."""
     from diffbearing.bearings.ball.ball_equilibrium import BallModel, ring_force
     from diffbearing.params import Operating
+    from diffbearing.systems.operating_clearance import RING_EXPANSION
 
     at_rest = ['operating.force=["0 N", "0 N", "0 N"]', 'operating.inner_speed="0 rpm"']
     plain = run(at_rest)
@@ -128,8 +130,12 @@ def test_set_at_its_operating_clearance():
     running = model.inputs["bearing"]
     catalogue = build_model(load_scene("spindle_pair", STATIC)).inputs["bearing"]
     distance = (running.inner_groove_ratio + running.outer_groove_ratio - 1.0) * running.ball_diameter
+    # the inner rings 10 K warmer than the outer: the inner stack grows by α s · 10 K over the
+    # centre distance s, and each inner ring of the back-to-back pair moves back by half of it
+    growth = float(model.inputs["bearing_set"].spacing) * RING_EXPANSION * 10.0
+    assert float(warm.values["set.axial_growth"]) == pytest.approx(growth, rel=1e-12)
     push = float(warm.values["set.preload_offset"]) + distance * (np.sin(catalogue.free_contact_angle)
-                                                                 - np.sin(running.free_contact_angle))
+                                                                 - np.sin(running.free_contact_angle)) - 0.5 * growth
     alone = ring_force(np.array([0.0, 0.0, push, 0.0, 0.0]), running, Operating(0.0, 0.0, np.zeros(3), np.zeros(2)),
                        BallModel())
     assert carried == pytest.approx(float(alone[2]), rel=1e-9)

@@ -42,8 +42,9 @@ solve = jax.jit(bt.solve_thermal)
 def test_the_warm_pair_balances_energy_and_carries_the_preload_of_its_clearance():
     """At 4000 r/min: converged; the heat leaving equals the friction power (1e-10); the temperatures
     are the network's for their heat (1e-8 K); each bearing's axial load is the set's equilibrium at
-    the solved clearance, solved apart (1e-6 relative); the inner rings run warmer than the outer,
-    which closes the clearance and raises the preload above the cold pair's."""
+    the solved clearance and the offset its stacks' axial growth leaves, solved apart (1e-6
+    relative); the inner rings run warmer than the outer, which closes the clearance and raises the
+    preload above the cold pair's."""
     pair = _pair()
     state = solve(pair, PATHS)
     assert bool(state.converged)
@@ -53,7 +54,10 @@ def test_the_warm_pair_balances_energy_and_carries_the_preload_of_its_clearance(
     np.testing.assert_allclose(node_temperatures(bt.bearing_network(PATHS), sources)[:bt.SEAT_NODES],
                                state.temperatures[:bt.SEAT_NODES], atol=1e-8)
     running = bt.bearing_at(BEARING, MOUNTING, pair.operating, state.temperatures)[0]
-    apart = solve_shaft(Shaft(bearing_set(running, "back_to_back", spacing=SPACING, offset=OFFSET),
+    # the inner stack (rings, spacer) at the inner rings' temperature grows by α s (T_i − T_o) against
+    # the outer: a back-to-back pair's inner rings, pushed together by e, move apart by half of it each
+    grown = OFFSET - 0.5 * SPACING * MOUNTING.ring_expansion * (state.temperatures[0] - state.temperatures[1])
+    apart = solve_shaft(Shaft(bearing_set(running, "back_to_back", spacing=SPACING, offset=grown),
                               ShaftLoads(jnp.zeros(1), pair.operating.force[None], pair.operating.moment[None]),
                               pair.operating.inner_speed))
     for warm, alone in zip(state.mechanics.bearing_forces, apart.bearing_forces):

@@ -141,8 +141,9 @@ def test_the_warm_shaft_is_its_networks_and_its_mountings_state():
     """A spindle (front pair, rear cylindrical roller bearing) at 6000 r/min: converged; the heat
     leaving is the friction heat (1e-10); the temperatures are the network's for their heat (1e-8 K);
     each bearing's clearance is its cold one changed by `operating_clearance_change` at its seat's
-    temperatures (1e-15 m); the loads are the shaft's equilibrium at those clearances, solved apart
-    (1e-8); the pair's preload rises above the matched 500 N; the seats' temperatures differ."""
+    temperatures (1e-15 m); the loads are the shaft's equilibrium at those clearances and the offsets
+    the shaft's axial growth against the housing's leaves, solved apart (1e-8); the pair's preload
+    rises above the matched 500 N; the seats' temperatures differ."""
     shaft, paths = _spindle()
     state = solve(shaft, paths)
     assert bool(state.converged)
@@ -159,6 +160,20 @@ def test_the_warm_shaft_is_its_networks_and_its_mountings_state():
                                             rings.element_diameter, rings.material, SPEED).change
         assert float(state.clearance[seat]) == pytest.approx(float(rings.clearance + change), abs=1e-15)
         warm.append(support.with_clearance_change(change))
+    # the shaft's growth against the housing's along z = −20, 20, 300 mm (the trapezoid rule over each
+    # span, both of steel), about the mean; the two angular contact bearings' offsets move by o_k u_k,
+    # the floating cylindrical roller bearing's rings slide
+    shaft_side, housing_side = state.temperatures[jnp.array([3, 8, 13])], state.temperatures[jnp.array([4, 9, 14])]
+    spans = jnp.array([0.04, 0.28])
+
+    def grown(side):
+        return jnp.concatenate([jnp.zeros(1), jnp.cumsum(MOUNTING.shaft_expansion * spans
+                                                         * (0.5 * (side[1:] + side[:-1]) - AMBIENT))])
+
+    growth = grown(shaft_side) - grown(housing_side)
+    growth = growth - jnp.mean(growth)
+    warm = [dataclasses.replace(support, offset=support.offset + support.orientation * growth[k]) if k < 2 else support
+            for k, support in enumerate(warm)]
     apart = solve_shaft(Shaft(tuple(warm), shaft.loads, SPEED))
     for got, want in zip(state.mechanics.bearing_forces, apart.bearing_forces):
         np.testing.assert_allclose(got, want, rtol=1e-8, atol=1e-6)

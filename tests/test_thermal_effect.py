@@ -92,7 +92,7 @@ def test_skf_heat_is_the_skf_friction_at_the_state(tmp_path):
     """With effects.friction = "skf" the fixed point's heat is SKF's four components: the 6411 (64
     series) and the spindle pair each heat their network by the friction the friction effect reports
     at the solved loads and lubricant (1e-10); in an oil bath without a drag factor every watt goes
-    into the rings. With Palmgren's the pair's heat is the friction effect's too (1e-10)."""
+    into the rings. With Palmgren's the pair's heat is the friction effect's too (1e-9)."""
     path = tmp_path / "single.toml"
     path.write_text(SINGLE.replace("life = true", 'life = true\nfriction = "skf"').replace(
         'cleanliness = "-/17/14"', 'cleanliness = "-/17/14"\n\n[friction]\nseries = "64"'))
@@ -105,7 +105,7 @@ def test_skf_heat_is_the_skf_friction_at_the_state(tmp_path):
     assert float(pair["thermal.power"]) == pytest.approx(float(pair["set.friction.power"]), rel=1e-10)
     # Palmgren's: the mounted pair rated at its nominal 15° in both (f₁ = a (P₀/C₀)^b reads C₀)
     pair = _run(example_scene("spindle_pair_thermal"), ['effects.friction="palmgren"']).values
-    assert float(pair["thermal.power"]) == pytest.approx(float(pair["set.friction.power"]), rel=1e-10)
+    assert float(pair["thermal.power"]) == pytest.approx(float(pair["set.friction.power"]), rel=1e-9)
 
 
 @pytest.mark.parametrize("override, named", [

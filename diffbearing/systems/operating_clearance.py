@@ -131,6 +131,10 @@ class OperatingClearance(eqx.Module):
     hoop_stress_inner: jnp.ndarray
     shaft_interference: jnp.ndarray  # effective diametral interferences [m]: smoothed, at temperature
     housing_interference: jnp.ndarray
+    # the inner ring's axial thermal strain over the outer ring's, α_r (ΔT_inner ring − ΔT_outer ring)
+    # [-]: a matched pair's inner stack grows by it times its length against the outer
+    # (`thermal.axial_growth.pair_growth`)
+    axial_strain: jnp.ndarray = 0.0
 
     @property
     def change(self):
@@ -178,6 +182,7 @@ def operating_clearance_change(mounting: Mounting, bore, inner_raceway, outer_ra
         hoop_stress_inner=inner_pressure * (1.0 + ratio**2) / (1.0 - ratio**2),
         shaft_interference=shaft_interference,
         housing_interference=housing_interference,
+        axial_strain=mounting.ring_expansion * (rise["inner_ring"] - rise["outer_ring"]),
     )
 
 

@@ -1,7 +1,10 @@
 """A preloaded pair of angular contact ball bearings (`systems.bearing_set`) in the thermal–mechanical
 fixed point (`bearing_thermal`): the warmth of the rings changes each bearing's operating clearance
 (the mounting model; `bearing_thermal.bearing_at`) while the set stays clamped at its matched
-offset, so the preload the pair carries changes with the temperatures, and with it the heat.
+offset, so the preload the pair carries changes with the temperatures, and with it the heat; and
+the pair's inner rings and inner spacer, at the inner rings' temperature, grow axially against its
+outer rings and outer spacer, at the outer rings' (`axial_growth.pair_growth`, the rings' expansion
+coefficient for both stacks), which moves each bearing's offset.
 
 The two bearings share one set of nodes (inner rings, outer rings, lubricant, shaft, housing): a
 lumped pair, their heat summed, the paths those of both bearings side by side. Each bearing's
@@ -20,6 +23,7 @@ from ..params import BallBearing, Operating
 from ..systems.bearing_set import bearing_set
 from ..systems.operating_clearance import Mounting
 from ..systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
+from .axial_growth import grown_supports, pair_growth
 from .bearing_thermal import (
     AbstractFrictionHeat,
     AbstractHeatedBearing,
@@ -48,10 +52,12 @@ class MountedBallPair(AbstractHeatedBearing):
     model: ball_equilibrium.BallModel = eqx.field(static=True, default=ball_equilibrium.BallModel())
 
     def supports(self, temperatures):
-        """(the two `BallSupport`s at the clearance the node `temperatures` leave, that clearance [m])."""
+        """(the two `BallSupport`s at the clearance the node `temperatures` leave, their offsets
+        moved by the stacks' axial growth, that clearance [m])."""
         running, clearance = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
-        return bearing_set(running, self.arrangement, spacing=self.spacing, offset=self.offset, model=self.model), \
-            clearance
+        cold = bearing_set(running, self.arrangement, spacing=self.spacing, offset=self.offset, model=self.model)
+        growth = pair_growth(self.spacing, self.mounting.ring_expansion * (temperatures[0] - temperatures[1]))
+        return grown_supports(cold, growth), clearance
 
     def preload_at(self, temperatures):
         """The preload [N] the pair carries at the node `temperatures`: each bearing's axial load with

@@ -6,7 +6,8 @@ clearance (the mounting model through its type's `AbstractSupport.ring_section` 
 `with_clearance_change`), and the shaft's equilibrium with every bearing at its clearance sets the
 loads each carries, its preload included, and with the viscosity at its seat's lubricant node its
 friction heat: a warm front pair that closes its clearance shows in every bearing's load. The
-shaft's axial growth against the housing's is not modelled (the bearings' offsets stay as given).
+shaft's axial growth against the housing's between the seats moves each locating bearing's
+offset (`axial_growth`).
 
 A bearing type takes part where its support gives a `ring_section` (ball bearings, cylindrical
 roller bearings); its heat is its friction model's (`bearing_thermal.AbstractFrictionHeat`, one per
@@ -22,6 +23,7 @@ from ..systems.flexible_shaft import FlexibleShaft, solve_flexible_shaft
 from ..systems.operating_clearance import mounted_clearance_change
 from ..systems.shaft_beam import BeamMesh, ShaftSections
 from ..systems.shaft_equilibrium import Shaft, ShaftLoads, solve_shaft
+from .axial_growth import grown_supports, mounted_axial_growth
 from .bearing_thermal import (
     SEAT_NODES,
     AbstractHeatedBearing,
@@ -70,9 +72,18 @@ class MountedShaft(AbstractHeatedBearing):
                           for seat, (support, mounting) in enumerate(zip(self.supports, self.mountings))])
 
     def supports_at(self, temperatures) -> tuple:
-        """The supports at the clearances the node `temperatures` leave."""
-        return tuple(support.with_clearance_change(change)
+        """The supports at the clearances the node `temperatures` leave, the locating ones' offsets
+        moved by the shaft's and the housing's axial growth between the seats (`axial_growth`)."""
+        warm = tuple(support.with_clearance_change(change)
                      for support, change in zip(self.supports, self.clearance_changes(temperatures)))
+        return grown_supports(warm, self.axial_growth(temperatures))
+
+    def axial_growth(self, temperatures):
+        """Each bearing's inner ring's axial displacement against its outer ring [m] (K,) by the
+        shaft's and the housing's growth between the seats at the node `temperatures`
+        (`axial_growth.mounted_axial_growth`)."""
+        return mounted_axial_growth(jnp.stack([support.position for support in self.supports]),
+                                    tuple(mounted_at(m, temperatures, seat) for seat, m in enumerate(self.mountings)))
 
     def equilibrium(self, supports, loads):
         """The shaft's equilibrium on `supports` under `loads` at its speed, rigid or flexible."""

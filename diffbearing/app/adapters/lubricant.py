@@ -53,8 +53,8 @@ def lubricant_input(values, built) -> dict:
             raise ValueError("lubricant.temperature needs the oil's viscosities: lubricant.preset, or "
                              "lubricant.kinematic_viscosity_40 and lubricant.kinematic_viscosity_100")
         temperature = values.get("lubricant.temperature", REFERENCE_TEMPERATURES[0])
-        check_range("lubricant.temperature", temperature, low=TEMPERATURE_RANGE[0], high=TEMPERATURE_RANGE[1], unit=" K",
-                    why="−20 °C to 200 °C")
+        check_range("lubricant.temperature", temperature, low=TEMPERATURE_RANGE[0], high=TEMPERATURE_RANGE[1],
+                    low_open=False, high_open=False, unit=" K", why="−20 °C to 200 °C")
         viscosity = walther_viscosity(*pair, temperature) * density
     else:
         viscosity = values.get("lubricant.viscosity", base.viscosity if base else None)

@@ -17,6 +17,7 @@ from ....params import BALL_BEARING_KINDS, _as_float, _is_concrete, check_range,
 from ....systems.bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_force, preload_offset
 from ....systems.shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
 from ...formatting import format_number, stiffness_lines, swept_display
+from ....thermal.axial_growth import grown_supports, pair_growth
 from ...registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import (
@@ -119,12 +120,15 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     model = ball_model(settings)
     bearing, operating, layout = inputs["bearing"], inputs["operating"], inputs["bearing_set"]
     offset, running_offset, preload = _offsets(bearing, layout, model)
-    supports = bearing_set(bearing, layout.arrangement, spacing=layout.spacing, offset=running_offset, model=model)
+    strain = 0.0 if inputs["mounting"] is None else inputs["mounting"].axial_strain
+    supports = grown_supports(bearing_set(bearing, layout.arrangement, spacing=layout.spacing, offset=running_offset,
+                                          model=model), pair_growth(layout.spacing, strain))
     shaft = Shaft(supports, ShaftLoads(jnp.zeros(1), operating.force[None], operating.moment[None]),
                   operating.inner_speed)
     solution = solve_shaft(shaft)
     out = {"set.displacement": solution.displacement, "set.converged": solution.converged,
-           "set.residual": solution.residual, "set.preload_force": preload, "set.preload_offset": offset}
+           "set.residual": solution.residual, "set.preload_force": preload, "set.preload_offset": offset,
+           "set.axial_growth": layout.spacing * strain}
     approach, angle, lowest, every = [], [], [], []
     for number, (support, local, force, centres, table) in enumerate(zip(
             supports, solution.bearing_displacements, solution.bearing_forces, solution.elements,
@@ -253,11 +257,12 @@ SET_BLOCK = Block(
     bearing_types=BALL_BEARING_KINDS,  # a deep-groove set is refused by `_layout` with its reason
     enabled_by=None,
     requires=("raceway_contact",),
-    inputs=("bearing", "operating", "bearing_set", "shoulders"),
+    inputs=("bearing", "operating", "bearing_set", "shoulders", "mounting"),
     uses=("centrifugal", "gyroscopic", "stiffness"),
     outputs=(
         Output("set.preload_force", "N", "kN", "preload: each bearing's axial load, unloaded at standstill"),
         Output("set.preload_offset", "m", "um", "preload offset: each inner ring's axial push as matched"),
+        Output("set.axial_growth", "m", "um", "inner rings' and spacer's axial growth over the outer ones' (mounting)"),
         Output("set.displacement", "m, rad", "", "shaft displacement at the middle of the set [ux, uy, uz, θx, θy]",
                in_report=False),
         Output("set.converged", "", "", "the shaft equilibrium converged", in_report=False),

@@ -22,6 +22,7 @@ from ....systems.operating_clearance import (
     mounted_clearance_change,
     operating_clearance_change,
 )
+from ....thermal.axial_growth import mounted_axial_growth
 from ...registry import SHAFT, Adapter, Block, InputBuilder, Key, Output, quantity, register
 from ..materials import material
 from .shaft_layout import ShaftLayout, layout_supports, shaft_layout
@@ -108,9 +109,10 @@ def shaft_mountings(v, layout: ShaftLayout) -> tuple[Mounting, ...]:
 
 
 def mounted_layout(v, layout: ShaftLayout, mountings) -> tuple[ShaftLayout, tuple[OperatingClearance, ...]]:
-    """(the layout with each bearing's clearance change by its `mountings` entry at the shaft's speed,
-    those changes). ValueError names the scene key behind a clearance closed below the model's floor
-    (`operating_clearance`), prefixed by its [[bearings]] entry."""
+    """(the layout with each bearing's clearance change by its `mountings` entry at the shaft's speed
+    and the shaft's and housing's axial growth between the bearings at their temperatures
+    (`axial_growth.mounted_axial_growth`), those changes). ValueError names the scene key behind a
+    clearance closed below the model's floor (`operating_clearance`), prefixed by its [[bearings]] entry."""
     changes = []
     for number, (support, mounting, (bore, outside)) in enumerate(zip(layout_supports(layout), mountings,
                                                                       layout.envelopes)):
@@ -120,7 +122,9 @@ def mounted_layout(v, layout: ShaftLayout, mountings) -> tuple[ShaftLayout, tupl
         except ValueError as error:
             raise ValueError(f"bearings[{number}]: {error}") from None
         changes.append(change)
-    moved = eqx.tree_at(lambda shaft: shaft.clearance_changes, layout, jnp.stack([change.change for change in changes]),
+    moved = eqx.tree_at(lambda shaft: (shaft.clearance_changes, shaft.axial_growth), layout,
+                        (jnp.stack([change.change for change in changes]),
+                         mounted_axial_growth(layout.positions, tuple(mountings))),
                         is_leaf=lambda node: node is None)
     return moved, tuple(changes)
 
@@ -211,7 +215,8 @@ def _shaft_outputs(inputs: dict, settings: dict, results: dict) -> dict:
     """Each bearing's `_outputs` (K,), its operating clearance that of its support as the shaft runs it."""
     running = [support.ring_section().clearance for support in layout_supports(inputs["shaft"], settings)]
     each = [_outputs(change, clearance) for change, clearance in zip(inputs["mounting"], running)]
-    return {f"bearings.{key}": jnp.stack([own[key] for own in each]) for key in each[0]}
+    return ({f"bearings.{key}": jnp.stack([own[key] for own in each]) for key in each[0]}
+            | {"bearings.mounting.axial_growth": inputs["shaft"].axial_growth})
 
 
 def _roller_outputs(inputs: dict, settings: dict, results: dict) -> dict:
@@ -239,12 +244,17 @@ def _report(result) -> list[str]:
         return []
     lines = ["", "Operating clearance of each bearing, as mounted (diametral, µm; the [mounting] table's fits at "
                  "each bearing's d and D)",
-             f"  {'#':<4}{'as given':>10}{'shaft fit':>11}{'housing fit':>13}{'thermal':>9}{'speed':>8}{'operating':>11}"]
+             f"  {'#':<4}{'as given':>10}{'shaft fit':>11}{'housing fit':>13}{'thermal':>9}{'speed':>8}{'operating':>11}"
+             f"{'axial growth':>14}"]
     for number in range(len(values[key])):
         row = [values[f"bearings.mounting.{name}"][number] * 1e6 for name in (
-            "bearing_clearance", "shaft_fit", "housing_fit", "thermal", "centrifugal", "operating_clearance")]
-        lines.append(f"  {number:<4}" + "".join(f"{value:>{width}.2f}" for value, width in zip(row, (10, 11, 13, 9, 8, 11))))
-    return lines
+            "bearing_clearance", "shaft_fit", "housing_fit", "thermal", "centrifugal", "operating_clearance",
+            "axial_growth")]
+        lines.append(f"  {number:<4}" + "".join(f"{value:>{width}.2f}"
+                                                for value, width in zip(row, (10, 11, 13, 9, 8, 11, 14))))
+    return lines + ["  axial growth: the inner ring's axial shift against the outer ring by the shaft's and the "
+                    "housing's growth between the bearings, about their mean (each locating bearing's offset "
+                    "moves by it; a common shift is the shaft's own)"]
 
 
 OUTPUTS = (
@@ -328,7 +338,10 @@ ADAPTER = register(Adapter(
         enabled_by=("mounting", True),
         requires=(),
         inputs=("shaft", "mounting"),
-        outputs=tuple(dataclasses.replace(output, key=f"bearings.{output.key}", in_report=False) for output in OUTPUTS),
+        outputs=tuple(dataclasses.replace(output, key=f"bearings.{output.key}", in_report=False) for output in OUTPUTS)
+        + (Output("bearings.mounting.axial_growth", "m", "um", "each bearing's inner ring's axial shift against its outer "
+                  "ring by the shaft's and the housing's growth between the bearings (about their mean)",
+                  in_report=False),),
         compute=_shaft_outputs,
         checks=_shaft_checks,
     )),

@@ -13,6 +13,7 @@ from ....systems.flexible_shaft import shaft_mesh
 from ....systems.operating_clearance import SEAT_MATERIALS
 from ....systems.shaft_beam import BeamMesh, ShaftSections
 from ....systems.shaft_equilibrium import ShaftLoads
+from ....thermal.axial_growth import grown_supports
 from ...registry import Reads, mountings
 from ..designation import SCENE_LAYER_KEYS
 
@@ -27,7 +28,9 @@ class ShaftLayout(eqx.Module):
     ball bearing's shoulder depths [h_i, h_o] [m] (None where its entry gives no shoulder diameters,
     and for a roller bearing), for a flexible shaft its sections and mesh (None: rigid), and with
     `effects.mounting` each bearing's change of diametral clearance by its fits and temperatures
-    [m] (`AbstractSupport.with_clearance_change`; None: as given)."""
+    [m] (`AbstractSupport.with_clearance_change`; None: as given) and its inner ring's axial
+    displacement against its outer ring by the shaft's and the housing's growth between the
+    bearings [m] (`thermal.axial_growth`; None: none)."""
 
     bearings: tuple
     positions: jax.Array = eqx.field(converter=_as_float)
@@ -43,6 +46,7 @@ class ShaftLayout(eqx.Module):
     kinds: tuple = eqx.field(static=True, default=())
     widths: tuple = ()
     clearance_changes: jax.Array | None = None
+    axial_growth: jax.Array | None = None
 
 
 # The model options of the supports an input builder asks for their ratings and friction rows,
@@ -52,14 +56,16 @@ NO_OPTIONS = {"effects": {}, "fidelity": {}}
 
 def layout_supports(layout: ShaftLayout, settings: dict = NO_OPTIONS):
     """Each bearing as its type mounts it (`Mounting.support`), at the clearance its fits and
-    temperatures leave where the layout has them: what the shaft and its effects read."""
+    temperatures leave and its offset moved by the axial growth where the layout has them: what
+    the shaft and its effects read."""
     supports = tuple(mountings()[kind].support(bearing, position, offset, orientation, settings)
                      for kind, bearing, position, offset, orientation in zip(layout.kinds, layout.bearings,
                                                                              layout.positions, layout.offsets,
                                                                              layout.orientations))
-    if layout.clearance_changes is None:
-        return supports
-    return tuple(support.with_clearance_change(change) for support, change in zip(supports, layout.clearance_changes))
+    if layout.clearance_changes is not None:
+        supports = tuple(support.with_clearance_change(change)
+                         for support, change in zip(supports, layout.clearance_changes))
+    return supports if layout.axial_growth is None else grown_supports(supports, layout.axial_growth)
 
 
 
