@@ -304,6 +304,20 @@ def test_a_shaft_mounts_each_bearing_with_the_mounting_table(tmp_path):
                                       BEARING_STEEL, 3000.0 * np.pi / 30).change
     np.testing.assert_array_equal(values["bearings.mounting.clearance_change"], [float(want)] * 2)
     np.testing.assert_allclose(values["bearings.mounting.operating_clearance"], 28e-6 + float(want), atol=1e-15)
+    np.testing.assert_array_equal(values["bearings.mounting.axial_growth"], [0.0, 0.0])  # all at the reference
+
+
+def test_a_warm_shaft_grows_against_its_housing(tmp_path):
+    """gearbox_shaft (6411s at z = ∓100 mm) with effects.mounting, the shaft at 60 °C in a cast-iron
+    housing at 40 °C: each inner ring shifts against its outer ring by ∓(L/2)(α_s 40 K − α_h 20 K),
+    L = 200 mm (1e-18 m)."""
+    path = tmp_path / "shaft.toml"
+    path.write_text(GEARBOX.replace("[effects]", '[mounting]\nshaft_temperature = "60 degC"\nhousing_temperature = '
+                                                 '"40 degC"\nhousing_material = "cast_iron"\n\n[effects]\nmounting = true'))
+    values = _run(path).values
+    steel, cast_iron = SEAT_MATERIALS["steel"][1], SEAT_MATERIALS["cast_iron"][1]
+    half = 0.5 * 0.2 * (steel * 40.0 - cast_iron * 20.0)
+    np.testing.assert_allclose(values["bearings.mounting.axial_growth"], [-half, half], rtol=0, atol=1e-18)
 
 
 THERMAL_GEARBOX = GEARBOX.replace('radial_clearance = "0.028 mm"\n', 'radial_clearance = "0.028 mm"\nwidth = "33 mm"\n') \

@@ -16,8 +16,8 @@ from ....bearings.ball.ball_equilibrium import ball_results
 from ....params import BALL_BEARING_KINDS, _as_float, _is_concrete, check_range, radial_clearance, with_radial_clearance
 from ....systems.bearing_set import ARRANGEMENTS, bearing_set, clamped_offset, preload_force, preload_offset
 from ....systems.shaft_equilibrium import RESIDUAL_TOLERANCE, Shaft, ShaftLoads, shaft_stiffness, solve_shaft
-from ...formatting import format_number, stiffness_lines, swept_display
 from ....thermal.axial_growth import grown_supports, pair_growth
+from ...formatting import format_number, stiffness_lines, swept_display
 from ...registry import Adapter, Block, InputBuilder, Key, Output, all_keys, quantity, register
 from ..bearings.ball import ADAPTER as BALL_ADAPTER
 from ..bearings.ball import (
