@@ -6,7 +6,6 @@ relative ring speed and its operating temperature — the network's outer ring t
 else `lubricant.temperature`. Outside the method's stated range the life is an error (exit 2 for
 a temperature given, exit 3 for a solved state); NSK's load guide is a warning."""
 
-
 from ....params import check_range
 from ....ratings import life
 from ....ratings.grease_life import CELSIUS_ZERO, GREASE_LIFE_METHODS, GREASE_LIFE_SOURCES, GreaseLife, envelope_problems
