@@ -209,12 +209,12 @@ def mounted_at(mounting: Mounting, temperatures, seat: int = 0) -> Mounting:
 
 def bearing_at(bearing: BallBearing, mounting: Mounting, operating: Operating, temperatures):
     """(the bearing at the operating clearance its mounting leaves at the node `temperatures`, that
-    clearance [m]): the change ΔG as `params.clearance_changed` makes it (the free contact angle
-    kept)."""
-    change = mounted_clearance_change(BallSupport(bearing, 0.0), mounted_at(mounting, temperatures), bearing.bore,
-                                      bearing.outer_diameter, operating.inner_speed, operating.outer_speed).change
-    running = clearance_changed(bearing, change)
-    return running, radial_clearance(running)
+    clearance [m], the mounting's `OperatingClearance` there): the change ΔG as
+    `params.clearance_changed` makes it (the free contact angle kept)."""
+    mounted = mounted_clearance_change(BallSupport(bearing, 0.0), mounted_at(mounting, temperatures), bearing.bore,
+                                       bearing.outer_diameter, operating.inner_speed, operating.outer_speed)
+    running = clearance_changed(bearing, mounted.change)
+    return running, radial_clearance(running), mounted
 
 
 def palmgren_powers(support: AbstractSupport, force, speed, viscosity, factors: PalmgrenFactors):
@@ -253,7 +253,7 @@ class MountedBallBearing(AbstractHeatedBearing):
     def heat(self, temperatures) -> BearingHeat:
         """The equilibrium at the clearance the node temperatures leave, the friction model's heat at
         the lubricant node's viscosity."""
-        running, clearance = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
+        running, clearance, _ = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
         solution = ball_equilibrium.solve_equilibrium(running, self.operating, self.model)
         speed = jnp.abs(self.operating.inner_speed - self.operating.outer_speed)
         viscosity = walther_viscosity(self.oil.viscosity_40, self.oil.viscosity_100, temperatures[2])

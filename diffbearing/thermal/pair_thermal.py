@@ -3,8 +3,9 @@ fixed point (`bearing_thermal`): the warmth of the rings changes each bearing's 
 (the mounting model; `bearing_thermal.bearing_at`) while the set stays clamped at its matched
 offset, so the preload the pair carries changes with the temperatures, and with it the heat; and
 the pair's inner rings and inner spacer, at the inner rings' temperature, grow axially against its
-outer rings and outer spacer, at the outer rings' (`axial_growth.pair_growth`, the rings' expansion
-coefficient for both stacks), which moves each bearing's offset.
+outer rings and outer spacer, at the outer rings' (`axial_growth.pair_growth` of the mounting's
+`OperatingClearance.axial_strain`: the rings' expansion coefficient for both stacks), which moves
+each bearing's offset.
 
 The two bearings share one set of nodes (inner rings, outer rings, lubricant, shaft, housing): a
 lumped pair, their heat summed, the paths those of both bearings side by side. Each bearing's
@@ -54,10 +55,9 @@ class MountedBallPair(AbstractHeatedBearing):
     def supports(self, temperatures):
         """(the two `BallSupport`s at the clearance the node `temperatures` leave, their offsets
         moved by the stacks' axial growth, that clearance [m])."""
-        running, clearance = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
+        running, clearance, mounted = bearing_at(self.bearing, self.mounting, self.operating, temperatures)
         cold = bearing_set(running, self.arrangement, spacing=self.spacing, offset=self.offset, model=self.model)
-        growth = pair_growth(self.spacing, self.mounting.ring_expansion * (temperatures[0] - temperatures[1]))
-        return grown_supports(cold, growth), clearance
+        return grown_supports(cold, pair_growth(self.spacing, mounted.axial_strain)), clearance
 
     def preload_at(self, temperatures):
         """The preload [N] the pair carries at the node `temperatures`: each bearing's axial load with

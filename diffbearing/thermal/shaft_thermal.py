@@ -64,12 +64,16 @@ class MountedShaft(AbstractHeatedBearing):
                 raise ValueError(f"bearings[{number}]: its type takes no mounting (no diametral clearance the fits "
                                  "and temperatures change)")
 
+    def mountings_at(self, temperatures) -> tuple:
+        """Each bearing's mounting at its seat's node `temperatures` (`bearing_thermal.mounted_at`)."""
+        return tuple(mounted_at(mounting, temperatures, seat) for seat, mounting in enumerate(self.mountings))
+
     def clearance_changes(self, temperatures):
         """Each bearing's change of diametral clearance [m] (K,) by its fits at its seat's node
         `temperatures` and the shaft's speed (`operating_clearance.mounted_clearance_change`)."""
-        return jnp.stack([mounted_clearance_change(support, mounted_at(mounting, temperatures, seat), self.bores[seat],
-                                                   self.outer_diameters[seat], self.speed).change
-                          for seat, (support, mounting) in enumerate(zip(self.supports, self.mountings))])
+        return jnp.stack([mounted_clearance_change(support, mounting, bore, outside, self.speed).change
+                          for support, mounting, bore, outside in zip(self.supports, self.mountings_at(temperatures),
+                                                                      self.bores, self.outer_diameters)])
 
     def supports_at(self, temperatures) -> tuple:
         """The supports at the clearances the node `temperatures` leave, the locating ones' offsets
@@ -83,7 +87,7 @@ class MountedShaft(AbstractHeatedBearing):
         shaft's and the housing's growth between the seats at the node `temperatures`
         (`axial_growth.mounted_axial_growth`)."""
         return mounted_axial_growth(jnp.stack([support.position for support in self.supports]),
-                                    tuple(mounted_at(m, temperatures, seat) for seat, m in enumerate(self.mountings)))
+                                    self.mountings_at(temperatures))
 
     def equilibrium(self, supports, loads):
         """The shaft's equilibrium on `supports` under `loads` at its speed, rigid or flexible."""

@@ -219,8 +219,7 @@ def _shaft(v, built) -> dict:
                           jnp.stack([jnp.asarray(outside, float) for _, outside in layout.envelopes]),
                           heat, layout.loads, layout.speed, oil, layout.sections, layout.stiffness_at, layout.mesh)
     state = bearing_thermal.solve_thermal(heated, paths)
-    warm = tuple(bearing_thermal.mounted_at(mounting, state.temperatures, seat) for seat, mounting in enumerate(mountings))
-    moved, changes = mounted_layout(v, layout, warm)
+    moved, changes = mounted_layout(v, layout, heated.mountings_at(state.temperatures))
     lubricant = jnp.max(bearing_thermal.seat_temperatures(state.temperatures, len(supports))[:, 2])
     return {"shaft": moved, "mounting": changes, "lubricant": lubricant_at(v, lubricant),
             "thermal": {"state": state, "paths": paths, "heated": heated}}

@@ -68,8 +68,6 @@ def layout_supports(layout: ShaftLayout, settings: dict = NO_OPTIONS):
     return supports if layout.axial_growth is None else grown_supports(supports, layout.axial_growth)
 
 
-
-
 PLACEMENT = ("position", "orientation", "offset")  # a [[bearings]] entry's keys that place it on the shaft
 
 
