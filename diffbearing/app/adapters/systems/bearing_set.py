@@ -120,9 +120,10 @@ def _set(inputs: dict, settings: dict, results: dict) -> dict:
     model = ball_model(settings)
     bearing, operating, layout = inputs["bearing"], inputs["operating"], inputs["bearing_set"]
     offset, running_offset, preload = _offsets(bearing, layout, model)
+    supports = bearing_set(bearing, layout.arrangement, spacing=layout.spacing, offset=running_offset, model=model)
     strain = 0.0 if inputs["mounting"] is None else inputs["mounting"].axial_strain
-    supports = grown_supports(bearing_set(bearing, layout.arrangement, spacing=layout.spacing, offset=running_offset,
-                                          model=model), pair_growth(layout.spacing, strain))
+    if inputs["mounting"] is not None:  # the stacks' growth at the mounting's ring temperatures
+        supports = grown_supports(supports, pair_growth(layout.spacing, strain))
     shaft = Shaft(supports, ShaftLoads(jnp.zeros(1), operating.force[None], operating.moment[None]),
                   operating.inner_speed)
     solution = solve_shaft(shaft)
